@@ -1,0 +1,120 @@
+// `rollsim run` and `rollsim check`: project -> model -> analysis -> results -> writers.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "Commands.h"
+#include "VtuWriter.h"
+#include "analysis/LinearStatic.h"
+#include "io/AtomicFile.h"
+#include "io/Summary.h"
+#include "project/ModelBuilder.h"
+#include "project/Project.h"
+#include "solve/Blas.h"
+#include "solve/Stopwatch.h"
+
+namespace rollsim::app {
+
+namespace {
+
+/// Progress on stderr: stage names with the elapsed time.
+class StderrProgress final : public AnalysisObserver {
+ public:
+  explicit StderrProgress(bool quiet) : quiet_(quiet) {}
+  void on_stage(const std::string& stage) override {
+    if (!quiet_) std::fprintf(stderr, "rollsim: [%7.3f s] %s\n", clock_.seconds(), stage.c_str());
+  }
+
+ private:
+  bool quiet_;
+  Stopwatch clock_;
+};
+
+int invalid(const std::string& message) {
+  std::cerr << "rollsim: error: " << message << "\n";
+  return 2;
+}
+
+/// Applies command-line overrides to the project's solver section; returns an error or "".
+std::string apply_overrides(Project& p, const RunOptions& o) {
+  json& solver = p.data["solver"];
+  if (o.solver) {
+    try {
+      make_solver(*o.solver, {});
+    } catch (const std::invalid_argument& e) {
+      return std::string("--solver: ") + e.what();
+    }
+    solver["mode"] = *o.solver;
+  }
+  if (o.threads) {
+    if (*o.threads < 1 || *o.threads > 256) return "--threads: must be an integer in [1, 256], got " + std::to_string(*o.threads);
+    solver["threads"] = *o.threads;
+  }
+  return "";
+}
+
+std::filesystem::path output_dir(const Project& p, const RunOptions& o) {
+  if (o.out) return *o.out;
+  if (p.data.at("output").contains("dir")) return p.data["output"]["dir"].get<std::string>();
+  return std::filesystem::path("results") / p.name();
+}
+
+}  // namespace
+
+int check_command(const std::string& file) {
+  try {
+    const Project p = load_project(file);
+    const Model m = build_model(p);
+    std::cout << file << ": valid (" << m.bodies.size() << " bodies, " << m.total_nodes() << " nodes, "
+              << m.total_elements() << " elements)\n";
+    return 0;
+  } catch (const ProjectError& e) {
+    return invalid(e.what());
+  }
+}
+
+int run_command(const RunOptions& o) {
+  Stopwatch wall;
+  StderrProgress progress(o.quiet);
+  Project project;
+  Model model;
+  try {
+    project = load_project(o.project);
+    if (auto err = apply_overrides(project, o); !err.empty()) return invalid(err);
+    progress.on_stage("build model");
+    model = build_model(project);
+  } catch (const ProjectError& e) {
+    return invalid(e.what());
+  }
+  const json& js = project.data.at("solver");
+  RunInfo info{project.name(), js.at("mode").get<std::string>(), js.at("cg_tolerance").get<double>(),
+               js.at("threads").get<int>(), ""};
+  set_blas_threads(info.threads);
+  const auto dir = output_dir(project, o);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return invalid("cannot create output directory " + dir.string() + ": " + ec.message());
+  auto solver = make_solver(info.mode, {info.cg_tolerance, info.threads});
+  Results results;
+  int code = 0;
+  try {
+    results = run_linear_static(model, *solver, &progress);
+  } catch (const UnsupportedBody& e) {
+    results.status = "error";
+    info.error = e.what();
+    code = 2;
+  }
+  progress.on_stage("write results");
+  if (results.status == "converged" && project.data.at("output").at("vtu").get<bool>())
+    write_vtu(dir / "result.vtu", model, results);
+  results.timing.total_s = wall.seconds();
+  write_file_atomically(dir / "summary.json", make_summary(model, results, solver->stats(), info).dump(2) + "\n");
+  if (code) return invalid(info.error + " (summary written to " + (dir / "summary.json").string() + ")");
+  if (!o.quiet)
+    std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s, %.3f s; results in %s/\n", project.name().c_str(),
+                 results.dofs, info.mode.c_str(), results.timing.total_s, dir.string().c_str());
+  std::cout << (dir / "summary.json").string() << "\n";
+  return 0;
+}
+
+}  // namespace rollsim::app

@@ -1,0 +1,58 @@
+// rollsim: the batch command line (the desktop window joins with the GUI issue).
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "Commands.h"
+#include "project/ProjectSchema.h"
+#include "solve/Blas.h"
+#include "solve/SolverStrategy.h"
+
+namespace {
+std::string solver_help() {
+  std::string s = "solver strategy, overrides the project:";
+  for (const auto& i : rollsim::solver_registry()) s += "\n  " + i.name + ": " + i.description;
+  return s;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace rollsim::app;
+  CLI::App cli{"rollsim: finite element simulation of flat hot rolling"};
+  cli.require_subcommand(0, 1);
+  bool version = false;
+  cli.add_flag("--version", version, "print the version and the BLAS in use");
+
+  RunOptions run;
+  auto* cmd_run = cli.add_subcommand("run", "solve a project and write summary.json and result.vtu");
+  cmd_run->add_option("project", run.project, "project file (JSON)")->required();
+  cmd_run->add_option("--solver", run.solver, solver_help());
+  cmd_run->add_option("--out", run.out, "output directory (default: the project's output.dir or results/<name>)");
+  cmd_run->add_option("--threads", run.threads, "threads for factorizations");
+  cmd_run->add_flag("--quiet", run.quiet, "no progress on stderr");
+
+  std::string check_file;
+  auto* cmd_check = cli.add_subcommand("check", "validate a project without solving");
+  cmd_check->add_option("project", check_file, "project file (JSON)")->required();
+
+  auto* cmd_schema = cli.add_subcommand("schema", "print the project file reference (markdown)");
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return cli.exit(e) == 0 ? 0 : 2;
+  }
+  if (version) {
+    std::cout << "rollsim " << ROLLSIM_VERSION << "\nBLAS: " << rollsim::blas_description() << "\n";
+    return 0;
+  }
+  try {
+    if (*cmd_run) return run_command(run);
+    if (*cmd_check) return check_command(check_file);
+    if (*cmd_schema) return schema_command();
+  } catch (const std::exception& e) {
+    std::cerr << "rollsim: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  std::cout << cli.help();
+  return 0;
+}

@@ -1,0 +1,65 @@
+#include "analysis/Recovery.h"
+
+#include "fem/ElementLoop.h"
+#include "fem/Loads.h"
+
+namespace rollsim {
+
+namespace {
+template <int D>
+void recover_elements(const Body& body, BodyResults& r) {
+  using El = SolidElement<D>;
+  const Mesh& m = body.mesh;
+  const int ne = m.num_elements();
+  r.element_stress.assign(static_cast<size_t>(ne), {});
+  r.nodal_stress.assign(static_cast<size_t>(m.num_nodes()), {});
+  std::vector<int> count(static_cast<size_t>(m.num_nodes()), 0);
+  typename El::Stiffness Ke;
+  typename El::Dofs ue;
+  std::array<typename El::Stress6, El::NGP> gp;
+  for (int e = 0; e < ne; ++e) {
+    const int* conn = m.element(e);
+    for (int a = 0; a < El::NN; ++a)
+      for (int i = 0; i < D; ++i) ue(a * D + i) = r.displacement[conn[a] * D + i];
+    const auto x = element_coords<D>(m, e);
+    El::stiffness(x, body.material, body.formulation, Ke);
+    const typename El::Dofs fe = Ke * ue;
+    for (int a = 0; a < El::NN; ++a)
+      for (int i = 0; i < D; ++i) r.nodal_force[conn[a] * D + i] += fe(a * D + i);
+    El::gauss_stresses(x, body.material, body.formulation, ue, gp);
+    for (int c = 0; c < 6; ++c) {
+      std::array<double, El::NGP> v;
+      double mean = 0.0;
+      for (int p = 0; p < El::NGP; ++p) mean += (v[p] = gp[p][c]) / El::NGP;
+      r.element_stress[e][c] = mean;
+      for (int a = 0; a < El::NN; ++a) r.nodal_stress[conn[a]][c] += El::extrapolate_to_node(v, a);
+    }
+    for (int a = 0; a < El::NN; ++a) ++count[conn[a]];
+  }
+  for (size_t n = 0; n < count.size(); ++n)
+    if (count[n])
+      for (double& s : r.nodal_stress[n]) s /= count[n];
+}
+}  // namespace
+
+BodyResults recover(const Model& model, int b, Eigen::VectorXd displacement) {
+  const Body& body = model.bodies[b];
+  BodyResults r;
+  r.displacement = std::move(displacement);
+  r.nodal_force = -external_nodal_load(model, b);
+  if (body.mesh.dim == 2)
+    recover_elements<2>(body, r);
+  else
+    recover_elements<3>(body, r);
+  r.subdomain.assign(static_cast<size_t>(body.mesh.num_elements()), 0);
+  return r;
+}
+
+std::array<double, 3> set_resultant(const BodyResults& r, int dim, const std::vector<int>& nodes) {
+  std::array<double, 3> s{0.0, 0.0, 0.0};
+  for (int n : nodes)
+    for (int c = 0; c < dim; ++c) s[c] += r.nodal_force[n * dim + c];
+  return s;
+}
+
+}  // namespace rollsim

@@ -1,0 +1,14 @@
+#pragma once
+// Post-processing of one body from its full displacement vector: element and nodal stresses,
+// and nodal forces (internal minus external), whose values at supported dofs are the reactions.
+#include "analysis/Results.h"
+#include "model/Model.h"
+
+namespace rollsim {
+
+BodyResults recover(const Model& model, int body_index, Eigen::VectorXd displacement);
+
+/// Sum of nodal forces over a node set, per component.
+std::array<double, 3> set_resultant(const BodyResults& r, int dim, const std::vector<int>& nodes);
+
+}  // namespace rollsim

@@ -1,0 +1,36 @@
+#pragma once
+// Small-strain continuum elements: 4-node plane-strain quad (D = 2) and 8-node hexahedron (D = 3),
+// 2-point Gauss rule per direction, full integration or selective B-bar (mean dilatation, Hughes 1980).
+#include <Eigen/Dense>
+#include <array>
+
+#include "material/LinearElastic.h"
+
+namespace rollsim {
+
+enum class Formulation { Full, BBar };
+
+template <int D>
+struct SolidElement {
+  static constexpr int NN = D == 2 ? 4 : 8;         // nodes
+  static constexpr int NDOF = D * NN;               // dofs, node-major
+  static constexpr int NS = D == 2 ? 4 : 6;         // strain components (2D: xx, yy, zz, xy)
+  static constexpr int NGP = D == 2 ? 4 : 8;        // Gauss points
+  using Coords = Eigen::Matrix<double, D, NN>;      // column a = coordinates of node a
+  using Stiffness = Eigen::Matrix<double, NDOF, NDOF>;
+  using Dofs = Eigen::Matrix<double, NDOF, 1>;
+  using Stress6 = std::array<double, 6>;            // xx, yy, zz, xy, yz, zx
+
+  /// Element stiffness K_e = sum_gp B^T C B det J w.
+  static void stiffness(const Coords& x, const LinearElastic& mat, Formulation f, Stiffness& Ke);
+  /// Stresses at the Gauss points for element displacements ue; returns false if the element is inverted.
+  static bool gauss_stresses(const Coords& x, const LinearElastic& mat, Formulation f, const Dofs& ue,
+                             std::array<Stress6, NGP>& out);
+  /// Corner-node value from Gauss-point values (bilinear/trilinear extrapolation).
+  static double extrapolate_to_node(const std::array<double, NGP>& gp, int node);
+};
+
+extern template struct SolidElement<2>;
+extern template struct SolidElement<3>;
+
+}  // namespace rollsim

@@ -1,0 +1,19 @@
+#include "io/AtomicFile.h"
+
+#include <fstream>
+#include <stdexcept>
+
+namespace rollsim {
+
+void write_file_atomically(const std::filesystem::path& target, const std::string& content) {
+  const auto tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << content;
+    out.flush();
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  std::filesystem::rename(tmp, target);
+}
+
+}  // namespace rollsim

@@ -1,0 +1,72 @@
+#include "io/Summary.h"
+
+#include <cmath>
+#include <set>
+
+#include "analysis/Recovery.h"
+#include "solve/Blas.h"
+
+namespace rollsim {
+
+namespace {
+using json = nlohmann::json;
+
+json vec(const double* v, int n) {
+  json a = json::array();
+  for (int i = 0; i < n; ++i) a.push_back(v[i]);
+  return a;
+}
+
+json model_section(const Model& m, const Results& r) {
+  return {{"dimension", m.dim},  {"nodes", m.total_nodes()},  {"elements", m.total_elements()},
+          {"dofs", r.dofs},      {"bodies", m.bodies.size()}, {"contact_multipliers", 0},
+          {"interface_multipliers", 0}, {"subdomains", m.bodies.size()}, {"rigid_modes", 0}};
+}
+
+json results_section(const Model& m, const Results& r) {
+  json probes = json::object();
+  for (const Probe& p : m.probes) {
+    const Mesh& mesh = m.bodies[p.body].mesh;
+    probes[p.name] = {{"body", m.bodies[p.body].name},
+                      {"node", p.node},
+                      {"position", vec(mesh.nodes[p.node].data(), m.dim)},
+                      {"displacement", vec(r.bodies[p.body].displacement.data() + p.node * m.dim, m.dim)}};
+  }
+  double umax = 0;
+  for (const BodyResults& b : r.bodies) umax = std::max(umax, b.displacement.cwiseAbs().maxCoeff());
+  json reactions = json::object();
+  std::set<std::pair<int, std::string>> done;
+  for (const DisplacementBC& bc : m.displacements) {
+    if (!done.insert({bc.body, bc.set}).second) continue;
+    const auto s = set_resultant(r.bodies[bc.body], m.dim, bc.nodes);
+    reactions[m.bodies[bc.body].name][bc.set] = vec(s.data(), m.dim);
+  }
+  return {{"probes", probes}, {"max_abs_displacement", umax}, {"reactions", reactions}};
+}
+}  // namespace
+
+json make_summary(const Model& model, const Results& r, const SolveStats& st, const RunInfo& run) {
+  json factorizations = json::object();
+  for (const auto& [g, n] : st.factorizations) factorizations[g] = n;
+  json s = {{"status", r.status}, {"project", run.project}, {"units", "consistent, as in the project file"}};
+  if (!run.error.empty()) s["error"] = run.error;
+  s["model"] = model_section(model, r);
+  s["solver"] = {{"mode", run.mode},
+                 {"cg_tolerance", run.cg_tolerance},
+                 {"cg_iterations_total", st.cg_iterations},
+                 {"newton_iterations", r.status == "converged" ? 1 : 0},
+                 {"increments", 1},
+                 {"factorizations", factorizations},
+                 {"threads", run.threads},
+                 {"blas", blas_description()},
+                 {"ordering", st.factor.ordering},
+                 {"factor_nnz", st.factor.nnz_factor},
+                 {"factor_flops", st.factor.flops}};
+  s["timing"] = {{"total_s", r.timing.total_s},         {"stiffness_s", r.timing.stiffness_s},
+                 {"analyze_s", r.timing.analyze_s},     {"factorize_s", r.timing.factorize_s},
+                 {"solve_s", r.timing.solve_s},         {"recovery_s", r.timing.recovery_s}};
+  if (r.status == "converged") s["results"] = results_section(model, r);
+  return s;
+}
+
+}  // namespace rollsim

@@ -1,0 +1,22 @@
+#pragma once
+// summary.json: status, model counts, solver statistics, timings and key results of a run.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "analysis/Results.h"
+#include "model/Model.h"
+#include "solve/SolverStrategy.h"
+
+namespace rollsim {
+
+struct RunInfo {
+  std::string project;  // project name
+  std::string mode;     // solver strategy name
+  double cg_tolerance = 1e-4;
+  int threads = 1;
+  std::string error;    // message when status is "error"
+};
+
+nlohmann::json make_summary(const Model& model, const Results& results, const SolveStats& stats, const RunInfo& run);
+
+}  // namespace rollsim

@@ -1,0 +1,80 @@
+#include "mesh/StructuredBlock.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace rollsim {
+
+namespace {
+// Axis permutation: order[0] is the fastest-varying axis in the numbering (the one with fewest elements).
+std::array<int, 3> numbering_order(const BlockSpec& s) {
+  std::array<int, 3> order{0, 1, 2};
+  std::stable_sort(order.begin(), order.begin() + s.dim, [&](int a, int b) { return s.n[a] < s.n[b]; });
+  return order;
+}
+}  // namespace
+
+Mesh make_block(const BlockSpec& s) {
+  Mesh m;
+  m.dim = s.dim;
+  m.type = s.dim == 2 ? ElementType::Quad4 : ElementType::Hex8;
+  const int nz = s.dim == 3 ? s.n[2] : 0;
+  const std::array<int, 3> np{s.n[0] + 1, s.n[1] + 1, nz + 1};
+  const auto ord = numbering_order(s);
+  // stride of each axis in the node numbering
+  std::array<long, 3> stride{};
+  long st = 1;
+  for (int k = 0; k < 3; ++k) {
+    stride[ord[k]] = st;
+    st *= np[ord[k]];
+  }
+  auto node_id = [&](int i, int j, int k) { return static_cast<int>(i * stride[0] + j * stride[1] + k * stride[2]); };
+  m.nodes.resize(static_cast<size_t>(np[0]) * np[1] * np[2]);
+  for (int k = 0; k < np[2]; ++k)
+    for (int j = 0; j < np[1]; ++j)
+      for (int i = 0; i < np[0]; ++i) {
+        const double z = s.dim == 3 ? s.origin[2] + s.size[2] * k / s.n[2] : 0.0;
+        m.nodes[node_id(i, j, k)] = {s.origin[0] + s.size[0] * i / s.n[0], s.origin[1] + s.size[1] * j / s.n[1], z};
+      }
+
+  // elements, numbered with the same axis order as the nodes
+  std::array<int, 3> ne{s.n[0], s.n[1], std::max(nz, 1)};
+  std::array<int, 3> idx{};
+  const int total = ne[0] * ne[1] * ne[2];
+  auto& all = m.element_sets["all"];
+  auto add_facet = [&](const char* name, int e, int local) { m.surfaces[name].push_back({e, local}); };
+  for (int e = 0; e < total; ++e) {
+    int rem = e;
+    for (int k = 0; k < 3; ++k) {
+      idx[ord[k]] = rem % ne[ord[k]];
+      rem /= ne[ord[k]];
+    }
+    const int i = idx[0], j = idx[1], k = s.dim == 3 ? idx[2] : 0;
+    if (s.dim == 2) {
+      for (int v : {node_id(i, j, 0), node_id(i + 1, j, 0), node_id(i + 1, j + 1, 0), node_id(i, j + 1, 0)})
+        m.connectivity.push_back(v);
+      if (j == 0) add_facet("ymin", e, 0);
+      if (i == s.n[0] - 1) add_facet("xmax", e, 1);
+      if (j == s.n[1] - 1) add_facet("ymax", e, 2);
+      if (i == 0) add_facet("xmin", e, 3);
+    } else {
+      for (int kk : {k, k + 1})
+        for (int v : {node_id(i, j, kk), node_id(i + 1, j, kk), node_id(i + 1, j + 1, kk), node_id(i, j + 1, kk)})
+          m.connectivity.push_back(v);
+      if (k == 0) add_facet("zmin", e, 0);
+      if (k == nz - 1) add_facet("zmax", e, 1);
+      if (j == 0) add_facet("ymin", e, 2);
+      if (i == s.n[0] - 1) add_facet("xmax", e, 3);
+      if (j == s.n[1] - 1) add_facet("ymax", e, 4);
+      if (i == 0) add_facet("xmin", e, 5);
+    }
+    all.push_back(e);
+  }
+  add_node_sets_from_surfaces(m);
+  std::vector<int> every(m.nodes.size());
+  std::iota(every.begin(), every.end(), 0);
+  m.node_sets["all"] = std::move(every);
+  return m;
+}
+
+}  // namespace rollsim

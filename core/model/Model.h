@@ -1,0 +1,65 @@
+#pragma once
+// The model: bodies (mesh + material + element formulation), boundary conditions, loads, probes.
+// Built from a validated Project; read by the analysis; never changed by a solver.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fem/SolidElement.h"
+#include "material/LinearElastic.h"
+#include "mesh/Mesh.h"
+
+namespace rollsim {
+
+struct Body {
+  std::string name;
+  Mesh mesh;
+  LinearElastic material;
+  std::string material_name;
+  Formulation formulation = Formulation::Full;
+};
+
+/// Prescribed displacement per component (unset components stay free) on a node set.
+struct DisplacementBC {
+  int body = 0;
+  std::string set;
+  std::vector<int> nodes;
+  std::array<std::optional<double>, 3> value;
+};
+
+/// Force applied at every node of a set [force].
+struct NodalForce {
+  int body = 0;
+  std::string set;
+  std::vector<int> nodes;
+  std::array<double, 3> value{0.0, 0.0, 0.0};
+};
+
+/// Uniform pressure on a surface [force / length^2], positive pushing into the body.
+struct Pressure {
+  int body = 0;
+  std::string surface;
+  double value = 0.0;
+};
+
+struct Probe {
+  std::string name;
+  std::array<double, 3> at{};
+  int body = 0;
+  int node = 0;
+};
+
+struct Model {
+  int dim = 2;
+  std::vector<Body> bodies;
+  std::vector<DisplacementBC> displacements;
+  std::vector<NodalForce> forces;
+  std::vector<Pressure> pressures;
+  std::vector<Probe> probes;
+
+  long total_nodes() const;
+  long total_elements() const;
+};
+
+}  // namespace rollsim

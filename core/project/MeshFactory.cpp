@@ -1,0 +1,75 @@
+#include "project/MeshFactory.h"
+
+#include <cmath>
+
+#include "mesh/StructuredBlock.h"
+
+namespace rollsim {
+
+namespace {
+double num(const json& j, const char* k) { return j.at(k).get<double>(); }
+bool full_ring(const json& m) { return std::fabs(num(m, "end_angle") - num(m, "start_angle") - 360.0) < 1e-9; }
+}  // namespace
+
+void check_mesh_spec(const json& m, const std::string& path, int dim, std::vector<Issue>& issues) {
+  const auto type = m.at("type").get<std::string>();
+  auto need_dim = [&](int d) {
+    if (dim != d) issues.push_back({path + ".type", "'" + type + "' meshes are " + std::to_string(d) + "D only"});
+  };
+  if (type == "block") {
+    for (const char* k : {"nz", "lz"}) {
+      if (dim == 3 && !m.contains(k)) issues.push_back({path + "." + k, "is required in a 3D model"});
+      if (dim == 2 && m.contains(k)) issues.push_back({path + "." + k, "not allowed in a 2D model"});
+    }
+  } else if (type == "plate_with_hole") {
+    need_dim(2);
+    if (num(m, "radius") >= std::min(num(m, "width"), num(m, "height")))
+      issues.push_back({path + ".radius", "must be smaller than width and height"});
+    if (m.at("n_around").get<long long>() % 2) issues.push_back({path + ".n_around", "must be even"});
+  } else {
+    need_dim(type == "annulus" ? 2 : 3);
+    if (num(m, "inner_radius") >= num(m, "outer_radius"))
+      issues.push_back({path + ".inner_radius", "must be smaller than outer_radius"});
+    const double span = num(m, "end_angle") - num(m, "start_angle");
+    if (!(span > 0.0 && span <= 360.0))
+      issues.push_back({path + ".end_angle", "must be greater than start_angle by at most 360"});
+  }
+}
+
+double estimated_elements(const json& m, int dim) {
+  const auto type = m.at("type").get<std::string>();
+  auto n = [&](const char* k) { return m.contains(k) ? m.at(k).get<double>() : 1.0; };
+  if (type == "block") return n("nx") * n("ny") * (dim == 3 ? n("nz") : 1.0);
+  if (type == "plate_with_hole" || type == "annulus") return n("n_around") * n("n_radial");
+  return n("n_around") * n("n_radial") * n("n_axial");
+}
+
+std::set<std::string> generator_set_names(const json& m, int dim) {
+  const auto type = m.at("type").get<std::string>();
+  if (type == "block") {
+    std::set<std::string> s{"xmin", "xmax", "ymin", "ymax"};
+    if (dim == 3) s.insert({"zmin", "zmax"});
+    return s;
+  }
+  if (type == "plate_with_hole") return {"left", "bottom", "right", "top", "hole"};
+  std::set<std::string> s{"inner", "outer"};
+  if (type == "cylinder") s.insert({"ymin", "ymax"});
+  if (!full_ring(m)) s.insert({"start", "end"});
+  return s;
+}
+
+Mesh make_mesh(const json& m, int dim) {
+  const auto type = m.at("type").get<std::string>();
+  if (type == "block") {
+    BlockSpec s;
+    s.dim = dim;
+    s.n = {m.at("nx").get<int>(), m.at("ny").get<int>(), dim == 3 ? m.at("nz").get<int>() : 1};
+    s.size = {num(m, "lx"), num(m, "ly"), dim == 3 ? num(m, "lz") : 1.0};
+    if (m.contains("origin"))
+      for (int k = 0; k < dim; ++k) s.origin[k] = m["origin"][static_cast<size_t>(k)].get<double>();
+    return make_block(s);
+  }
+  throw std::logic_error("mesh type '" + type + "' not available yet");
+}
+
+}  // namespace rollsim

@@ -1,0 +1,19 @@
+#pragma once
+// Mesh generators as seen from the project file: parameter checks that need more than one
+// field, size estimates (before allocating), the set names each generator provides, and generation.
+#include <set>
+#include <string>
+#include <vector>
+
+#include "mesh/Mesh.h"
+#include "project/Schema.h"
+
+namespace rollsim {
+
+void check_mesh_spec(const json& mesh, const std::string& path, int dim, std::vector<Issue>& issues);
+double estimated_elements(const json& mesh, int dim);
+/// Names of the surfaces (and node sets of the same name) the generator creates.
+std::set<std::string> generator_set_names(const json& mesh, int dim);
+Mesh make_mesh(const json& mesh, int dim);
+
+}  // namespace rollsim

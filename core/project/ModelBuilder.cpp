@@ -1,0 +1,249 @@
+#include "project/ModelBuilder.h"
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "project/MeshFactory.h"
+#include "project/ProjectSchema.h"
+
+namespace rollsim {
+
+namespace {
+
+std::string at(const std::string& list, size_t i) { return list + "[" + std::to_string(i) + "]"; }
+
+std::string join(const std::set<std::string>& s) {
+  std::string r;
+  for (const auto& x : s) r += (r.empty() ? "" : ", ") + x;
+  return r;
+}
+
+int find_named(const json& list, const std::string& name) {
+  for (size_t i = 0; i < list.size(); ++i)
+    if (list[i].at("name").get<std::string>() == name) return static_cast<int>(i);
+  return -1;
+}
+
+void check_unique(const json& list, const std::string& path, std::vector<Issue>& issues) {
+  std::set<std::string> seen;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const auto name = list[i].at("name").get<std::string>();
+    if (!seen.insert(name).second) issues.push_back({at(path, i) + ".name", "duplicate name '" + name + "'"});
+  }
+}
+
+std::set<std::string> node_set_names(const json& body, int dim) {
+  std::set<std::string> names = generator_set_names(body.at("mesh"), dim);
+  names.insert("all");
+  for (const auto& s : body.at("node_sets")) names.insert(s.at("name").get<std::string>());
+  return names;
+}
+
+void check_node_sets(const json& body, const std::string& path, std::vector<Issue>& issues) {
+  check_unique(body.at("node_sets"), path + ".node_sets", issues);
+  for (size_t i = 0; i < body.at("node_sets").size(); ++i) {
+    const json& s = body["node_sets"][i];
+    const bool nearest = s.contains("nearest"), box = s.contains("box_min") || s.contains("box_max");
+    if (nearest == box || (box && !(s.contains("box_min") && s.contains("box_max"))))
+      issues.push_back({at(path + ".node_sets", i), "give either `nearest` or both `box_min` and `box_max`"});
+  }
+}
+
+void check_condition(const json& bc, const std::string& path, const json& bodies, int dim,
+                     std::vector<Issue>& issues) {
+  const auto body_name = bc.at("body").get<std::string>();
+  const int b = find_named(bodies, body_name);
+  if (b < 0) {
+    issues.push_back({path + ".body", "no body named '" + body_name + "'"});
+    return;
+  }
+  const json& body = bodies[static_cast<size_t>(b)];
+  const auto type = bc.at("type").get<std::string>();
+  if (type == "pressure") {
+    const auto names = generator_set_names(body.at("mesh"), dim);
+    const auto s = bc.at("surface").get<std::string>();
+    if (!names.count(s))
+      issues.push_back({path + ".surface", "no surface '" + s + "' in body '" + body_name + "' (available: " +
+                                               join(names) + ")"});
+    return;
+  }
+  const auto names = node_set_names(body, dim);
+  const auto s = bc.at("set").get<std::string>();
+  if (!names.count(s))
+    issues.push_back({path + ".set", "no node set '" + s + "' in body '" + body_name + "' (available: " +
+                                         join(names) + ")"});
+  if (type == "symmetry" && dim == 2 && bc.at("normal") == "z")
+    issues.push_back({path + ".normal", "must be x or y in a 2D model"});
+  if (type == "displacement" || type == "force") {
+    const std::string p = type == "force" ? "f" : "u";
+    if (dim == 2 && bc.contains(p + "z")) issues.push_back({path + "." + p + "z", "not allowed in a 2D model"});
+    if (!bc.contains(p + "x") && !bc.contains(p + "y") && !bc.contains(p + "z"))
+      issues.push_back({path, "sets no component (give " + p + "x, " + p + "y" + (dim == 3 ? ", " + p + "z" : "") + ")"});
+  }
+}
+
+void check_supports(const json& project, std::vector<Issue>& issues) {
+  const json& bodies = project.at("bodies");
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    bool held = false;
+    for (const auto& bc : project.at("boundary_conditions"))
+      held = held || ((bc.at("type") == "displacement" || bc.at("type") == "symmetry") && bc.at("body") == bodies[b].at("name"));
+    if (!held)
+      issues.push_back({at("bodies", b), "body '" + bodies[b].at("name").get<std::string>() +
+                                             "' has no displacement or symmetry condition: it is free to move as a "
+                                             "rigid body"});
+  }
+}
+
+}  // namespace
+
+void check_references(const Project& project, std::vector<Issue>& issues) {
+  const json& d = project.data;
+  const int dim = project.dimension();
+  check_unique(d.at("materials"), "materials", issues);
+  check_unique(d.at("bodies"), "bodies", issues);
+  check_unique(d.at("probes"), "probes", issues);
+  double elements = 0;
+  for (size_t b = 0; b < d.at("bodies").size(); ++b) {
+    const json& body = d["bodies"][b];
+    const std::string path = at("bodies", b);
+    const auto mat = body.at("material").get<std::string>();
+    if (find_named(d.at("materials"), mat) < 0) issues.push_back({path + ".material", "no material named '" + mat + "'"});
+    check_mesh_spec(body.at("mesh"), path + ".mesh", dim, issues);
+    elements += estimated_elements(body.at("mesh"), dim);
+    check_node_sets(body, path, issues);
+  }
+  if (elements > kMaxElements)
+    issues.push_back({"bodies", "the meshes would have " + std::to_string(static_cast<long long>(elements)) +
+                                    " elements, more than this build accepts (" +
+                                    std::to_string(static_cast<long long>(kMaxElements)) + ")"});
+  if (!issues.empty()) return;
+  for (size_t i = 0; i < d.at("boundary_conditions").size(); ++i)
+    check_condition(d["boundary_conditions"][i], at("boundary_conditions", i), d.at("bodies"), dim, issues);
+  for (size_t i = 0; i < d.at("probes").size(); ++i) {
+    const json& p = d["probes"][i];
+    if (p.contains("body") && find_named(d.at("bodies"), p.at("body").get<std::string>()) < 0)
+      issues.push_back({at("probes", i) + ".body", "no body named '" + p.at("body").get<std::string>() + "'"});
+  }
+  if (issues.empty()) check_supports(d, issues);
+}
+
+namespace {
+
+std::array<double, 3> point(const json& v) {
+  std::array<double, 3> p{0.0, 0.0, 0.0};
+  for (size_t i = 0; i < v.size() && i < 3; ++i) p[i] = v[i].get<double>();
+  return p;
+}
+
+int nearest_node(const Mesh& m, const std::array<double, 3>& x, double* distance = nullptr) {
+  int best = 0;
+  double bd = std::numeric_limits<double>::infinity();
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) d2 += (m.nodes[n][k] - x[k]) * (m.nodes[n][k] - x[k]);
+    if (d2 < bd) bd = d2, best = n;
+  }
+  if (distance) *distance = std::sqrt(bd);
+  return best;
+}
+
+double mesh_size(const Mesh& m) {
+  double s = 0;
+  for (int k = 0; k < m.dim; ++k) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& x : m.nodes) lo = std::min(lo, x[k]), hi = std::max(hi, x[k]);
+    s = std::max(s, hi - lo);
+  }
+  return s;
+}
+
+void add_user_sets(Mesh& m, const json& sets, const std::string& path, std::vector<Issue>& issues) {
+  for (size_t i = 0; i < sets.size(); ++i) {
+    const json& s = sets[i];
+    std::vector<int> nodes;
+    if (s.contains("nearest")) {
+      nodes.push_back(nearest_node(m, point(s["nearest"])));
+    } else {
+      const auto lo = point(s["box_min"]), hi = point(s["box_max"]);
+      const double tol = s.contains("tolerance") ? s["tolerance"].get<double>() : 1e-6 * mesh_size(m);
+      for (int n = 0; n < m.num_nodes(); ++n) {
+        bool in = true;
+        for (int k = 0; k < m.dim; ++k) in = in && m.nodes[n][k] >= lo[k] - tol && m.nodes[n][k] <= hi[k] + tol;
+        if (in) nodes.push_back(n);
+      }
+      if (nodes.empty()) issues.push_back({at(path, i), "the box contains no node"});
+    }
+    m.node_sets[s.at("name").get<std::string>()] = std::move(nodes);
+  }
+}
+
+void add_condition(Model& model, const json& bc, const json& bodies) {
+  const int b = find_named(bodies, bc.at("body").get<std::string>());
+  const Mesh& m = model.bodies[static_cast<size_t>(b)].mesh;
+  const auto type = bc.at("type").get<std::string>();
+  if (type == "pressure") {
+    model.pressures.push_back({b, bc.at("surface").get<std::string>(), bc.at("value").get<double>()});
+    return;
+  }
+  const auto set = bc.at("set").get<std::string>();
+  const std::vector<int>& nodes = m.node_sets.at(set);
+  const char* axes = "xyz";
+  if (type == "force") {
+    NodalForce f{b, set, nodes, {0.0, 0.0, 0.0}};
+    for (int c = 0; c < 3; ++c) f.value[c] = bc.value(std::string("f") + axes[c], 0.0);
+    model.forces.push_back(std::move(f));
+    return;
+  }
+  DisplacementBC d{b, set, nodes, {}};
+  if (type == "symmetry") {
+    d.value[bc.at("normal").get<std::string>()[0] - 'x'] = 0.0;
+  } else {
+    for (int c = 0; c < 3; ++c)
+      if (bc.contains(std::string("u") + axes[c])) d.value[c] = bc[std::string("u") + axes[c]].get<double>();
+  }
+  model.displacements.push_back(std::move(d));
+}
+
+}  // namespace
+
+Model build_model(const Project& project) {
+  const json& d = project.data;
+  Model model;
+  model.dim = project.dimension();
+  std::vector<Issue> issues;
+  for (size_t b = 0; b < d.at("bodies").size(); ++b) {
+    const json& jb = d["bodies"][b];
+    Body body;
+    body.name = jb.at("name").get<std::string>();
+    body.material_name = jb.at("material").get<std::string>();
+    const json& mat = d.at("materials")[static_cast<size_t>(find_named(d.at("materials"), body.material_name))];
+    body.material = {mat.at("E").get<double>(), mat.at("nu").get<double>()};
+    body.formulation = jb.at("formulation") == "bbar" ? Formulation::BBar : Formulation::Full;
+    body.mesh = make_mesh(jb.at("mesh"), model.dim);
+    try {
+      check_element_orientation(body.mesh);
+    } catch (const std::exception& e) {
+      issues.push_back({at("bodies", b) + ".mesh", e.what()});
+    }
+    add_user_sets(body.mesh, jb.at("node_sets"), at("bodies", b) + ".node_sets", issues);
+    model.bodies.push_back(std::move(body));
+  }
+  if (!issues.empty()) throw ProjectError(project.source, issues);
+  for (const auto& bc : d.at("boundary_conditions")) add_condition(model, bc, d.at("bodies"));
+  for (const auto& p : d.at("probes")) {
+    Probe probe{p.at("name").get<std::string>(), point(p.at("at")), 0, 0};
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t b = 0; b < model.bodies.size(); ++b) {
+      if (p.contains("body") && p["body"] != model.bodies[b].name) continue;
+      double dist = 0;
+      const int n = nearest_node(model.bodies[b].mesh, probe.at, &dist);
+      if (dist < best) best = dist, probe.body = static_cast<int>(b), probe.node = n;
+    }
+    model.probes.push_back(std::move(probe));
+  }
+  return model;
+}
+
+}  // namespace rollsim

@@ -1,0 +1,12 @@
+#pragma once
+// The declared schema of a rollsim project file (see docs/project-format.md, generated from it).
+#include "project/Schema.h"
+
+namespace rollsim {
+
+const ObjectSchema& project_schema();
+
+/// Upper bound on elements of one model; larger requests are refused before any allocation.
+constexpr double kMaxElements = 2.0e7;
+
+}  // namespace rollsim

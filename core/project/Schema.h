@@ -1,0 +1,70 @@
+#pragma once
+// One parameter schema (name, type, range, default, unit, doc) that drives project validation,
+// the generated docs/project-format.md, and (later) the GUI's property editor.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollsim {
+
+using json = nlohmann::json;
+
+enum class Kind {
+  Integer,      // whole number within [min, max]
+  Number,       // finite real within [min, max]
+  String,       // non-empty string
+  Boolean,
+  Choice,       // one of `choices` (strings), or of `int_choices`
+  Vector,       // array of `dimension` finite numbers (a point or direction)
+  Object,       // nested object described by `object`
+  ObjectArray,  // array of objects described by `object`
+};
+
+struct ObjectSchema;
+
+struct Field {
+  std::string name;
+  Kind kind = Kind::Number;
+  bool required = false;
+  json default_value = nullptr;  // filled in when absent (null: no default)
+  std::optional<double> min, max;
+  bool min_exclusive = false, max_exclusive = false;
+  std::string unit;  // "length", "force", "stress", "-", ...
+  std::string doc;
+  std::vector<std::string> choices;
+  std::vector<int> int_choices;
+  const ObjectSchema* object = nullptr;
+  int vector_size = 0;  // 0: the model dimension
+  size_t min_items = 0;
+};
+
+/// An object type. If `discriminator` is set, the value of that field selects one of `variants`,
+/// whose fields are added to the common ones.
+struct ObjectSchema {
+  std::string name;
+  std::string doc;
+  std::vector<Field> fields;
+  std::string discriminator;
+  std::map<std::string, const ObjectSchema*> variants;
+};
+
+/// One problem found in a project: the JSON path (e.g. "bodies[1].mesh.nx") and the reason.
+struct Issue {
+  std::string path;
+  std::string message;
+  std::string str() const { return path.empty() ? message : path + ": " + message; }
+};
+
+/// Checks `value` against `schema` (recursively) and fills defaults; appends problems to `issues`.
+void validate_object(json& value, const ObjectSchema& schema, const std::string& path, int dimension,
+                     std::vector<Issue>& issues);
+
+/// Markdown reference of a schema and all object types it reaches.
+std::string schema_markdown(const ObjectSchema& root);
+
+/// Short human description of a JSON value for messages: `-3`, `"abc"`, `an array`.
+std::string describe(const json& v);
+
+}  // namespace rollsim

@@ -1,0 +1,85 @@
+#include "solve/CholmodFactorization.h"
+
+#include "solve/Stopwatch.h"
+
+namespace rollsim {
+
+CholmodFactorization::CholmodFactorization() {
+  cholmod_start(&common_);
+  common_.supernodal = CHOLMOD_SUPERNODAL;
+  common_.final_ll = 1;
+  common_.print = 0;
+  common_.error_handler = nullptr;
+}
+
+CholmodFactorization::~CholmodFactorization() {
+  if (factor_) cholmod_free_factor(&factor_, &common_);
+  cholmod_finish(&common_);
+}
+
+cholmod_sparse CholmodFactorization::view(const SparseMatrix& A) const {
+  cholmod_sparse s{};
+  s.nrow = static_cast<size_t>(A.rows());
+  s.ncol = static_cast<size_t>(A.cols());
+  s.nzmax = static_cast<size_t>(A.nonZeros());
+  s.p = const_cast<int*>(A.outerIndexPtr());
+  s.i = const_cast<int*>(A.innerIndexPtr());
+  s.x = const_cast<double*>(A.valuePtr());
+  s.stype = -1;  // use the lower triangle; the upper one is ignored
+  s.itype = CHOLMOD_INT;
+  s.xtype = CHOLMOD_REAL;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 1;
+  s.packed = 1;
+  return s;
+}
+
+void CholmodFactorization::analyze(const SparseMatrix& A) {
+  Stopwatch t;
+  if (factor_) cholmod_free_factor(&factor_, &common_);
+  cholmod_sparse s = view(A);
+  factor_ = cholmod_analyze(&s, &common_);
+  if (!factor_) throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(common_.status) + ")");
+  const int ord = common_.method[common_.selected].ordering;
+  stats_.ordering = ord == CHOLMOD_METIS ? "METIS" : ord == CHOLMOD_NESDIS ? "NESDIS" : ord == CHOLMOD_AMD ? "AMD"
+                    : ord == CHOLMOD_COLAMD ? "COLAMD" : ord == CHOLMOD_NATURAL ? "natural" : "other";
+  stats_.flops = common_.fl;
+  stats_.nnz_factor = common_.lnz;
+  stats_.analyze_s += t.seconds();
+}
+
+void CholmodFactorization::factorize(const SparseMatrix& A) {
+  if (!factor_) analyze(A);
+  Stopwatch t;
+  cholmod_sparse s = view(A);
+  cholmod_factorize(&s, factor_, &common_);
+  stats_.factorize_s += t.seconds();
+  ++stats_.factorizations;
+  if (common_.status == CHOLMOD_NOT_POSDEF) {
+    // factor_->minor is the column (in CHOLMOD's permuted order) where it failed
+    const int* perm = static_cast<const int*>(factor_->Perm);
+    const int col = (perm && factor_->minor < factor_->n) ? perm[factor_->minor] : -1;
+    throw SingularMatrix("matrix is not positive definite", col);
+  }
+  if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorization failed");
+}
+
+Eigen::VectorXd CholmodFactorization::solve(const Eigen::VectorXd& b) {
+  Stopwatch t;
+  cholmod_dense rhs{};
+  rhs.nrow = static_cast<size_t>(b.size());
+  rhs.ncol = 1;
+  rhs.nzmax = rhs.nrow;
+  rhs.d = rhs.nrow;
+  rhs.x = const_cast<double*>(b.data());
+  rhs.xtype = CHOLMOD_REAL;
+  rhs.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense* x = cholmod_solve(CHOLMOD_A, factor_, &rhs, &common_);
+  if (!x) throw std::runtime_error("CHOLMOD solve failed");
+  Eigen::VectorXd out = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(x->x), b.size());
+  cholmod_free_dense(&x, &common_);
+  stats_.solve_s += t.seconds();
+  return out;
+}
+
+}  // namespace rollsim

@@ -1,0 +1,28 @@
+#pragma once
+// CHOLMOD supernodal Cholesky with CHOLMOD's choice of AMD / METIS ordering (the modern baseline).
+#include <cholmod.h>
+
+#include "solve/Factorization.h"
+
+namespace rollsim {
+
+class CholmodFactorization final : public Factorization {
+ public:
+  CholmodFactorization();
+  ~CholmodFactorization() override;
+  CholmodFactorization(const CholmodFactorization&) = delete;
+  CholmodFactorization& operator=(const CholmodFactorization&) = delete;
+
+  void analyze(const SparseMatrix& A) override;
+  void factorize(const SparseMatrix& A) override;
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
+  const FactorStats& stats() const override { return stats_; }
+
+ private:
+  cholmod_sparse view(const SparseMatrix& A) const;
+  cholmod_common common_;
+  cholmod_factor* factor_ = nullptr;
+  FactorStats stats_;
+};
+
+}  // namespace rollsim

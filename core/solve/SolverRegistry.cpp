@@ -1,0 +1,33 @@
+// The registry of solver strategies (names feed validation, CLI help and the GUI).
+#include <stdexcept>
+
+#include "solve/GlobalDirect.h"
+#include "solve/SolverStrategy.h"
+
+namespace rollsim {
+
+const std::vector<StrategyInfo>& solver_registry() {
+  static const std::vector<StrategyInfo> registry = {
+      {"skyline", "global matrix, active-column LDL^T with reverse Cuthill-McKee ordering (the paper's ACTCOL)",
+       [](const SolverOptions&) { return std::make_unique<GlobalDirect>("skyline"); }},
+      {"direct", "global matrix, CHOLMOD supernodal Cholesky with AMD/METIS ordering (modern baseline)",
+       [](const SolverOptions&) { return std::make_unique<GlobalDirect>("cholmod"); }},
+  };
+  return registry;
+}
+
+std::vector<std::string> solver_names() {
+  std::vector<std::string> names;
+  for (const auto& s : solver_registry()) names.push_back(s.name);
+  return names;
+}
+
+std::unique_ptr<SolverStrategy> make_solver(const std::string& name, const SolverOptions& options) {
+  for (const auto& s : solver_registry())
+    if (s.name == name) return s.make(options);
+  std::string valid;
+  for (const auto& n : solver_names()) valid += (valid.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown solver '" + name + "' (valid: " + valid + ")");
+}
+
+}  // namespace rollsim

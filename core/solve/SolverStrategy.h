@@ -1,0 +1,46 @@
+#pragma once
+// A solver strategy solves the block system; strategies are chosen by name from a registry
+// whose names also feed validation, the CLI help and (later) the GUI.
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "solve/BlockSystem.h"
+
+namespace rollsim {
+
+struct SolverOptions {
+  double cg_tolerance = 1e-4;
+  int threads = 1;
+};
+
+struct SolveStats {
+  std::map<std::string, long> factorizations;  // per group name
+  long cg_iterations = 0;
+  FactorStats factor;  // of the global factor (direct strategies)
+  double analyze_s = 0, factorize_s = 0, solve_s = 0;
+};
+
+class SolverStrategy {
+ public:
+  virtual ~SolverStrategy() = default;
+  /// Solves K_g u_g = f_g (with the constraints, once they exist); one vector per group.
+  virtual std::vector<Eigen::VectorXd> solve(const BlockSystem& system) = 0;
+  virtual const SolveStats& stats() const = 0;
+};
+
+struct StrategyInfo {
+  std::string name;
+  std::string description;
+  std::function<std::unique_ptr<SolverStrategy>(const SolverOptions&)> make;
+};
+
+/// All strategies, in the order shown to users.
+const std::vector<StrategyInfo>& solver_registry();
+std::vector<std::string> solver_names();
+/// Throws std::invalid_argument listing the valid names for an unknown name.
+std::unique_ptr<SolverStrategy> make_solver(const std::string& name, const SolverOptions& options);
+
+}  // namespace rollsim

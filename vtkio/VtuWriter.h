@@ -1,0 +1,18 @@
+#pragma once
+// The one adapter between core results and VTK: writes a model and its results as a VTK XML
+// unstructured grid (.vtu) that ParaView opens. No VTK header appears here.
+#include <filesystem>
+
+#include "analysis/Results.h"
+#include "model/Model.h"
+
+namespace rollsim {
+
+/// Point data: displacement, stress (nodal average), von_mises, body_id;
+/// cell data: stress (element mean), von_mises, body_id, subdomain_id. Written atomically.
+void write_vtu(const std::filesystem::path& file, const Model& model, const Results& results);
+
+/// Mesh only (no results): body_id per cell.
+void write_mesh_vtu(const std::filesystem::path& file, const Model& model);
+
+}  // namespace rollsim
