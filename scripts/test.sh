@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# README command 2 (and CI): install what is missing, build with tests, run the whole suite.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+scripts/build.sh -DROLLSIM_BUILD_TESTS=ON
+cd "${ROLLSIM_BUILD_DIR:-build}"
+ctest --output-on-failure -j"$(nproc)" --timeout 900
