@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "mesh/Annulus.h"
+#include "mesh/Cylinder.h"
+#include "mesh/PlateWithHole.h"
 #include "mesh/StructuredBlock.h"
 
 namespace rollsim {
@@ -33,6 +36,8 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
     const double span = num(m, "end_angle") - num(m, "start_angle");
     if (!(span > 0.0 && span <= 360.0))
       issues.push_back({path + ".end_angle", "must be greater than start_angle by at most 360"});
+    else if (span / m.at("n_around").get<double>() >= 180.0)
+      issues.push_back({path + ".n_around", "too few elements: each must span less than 180 degrees"});
   }
 }
 
@@ -69,7 +74,17 @@ Mesh make_mesh(const json& m, int dim) {
       for (int k = 0; k < dim; ++k) s.origin[k] = m["origin"][static_cast<size_t>(k)].get<double>();
     return make_block(s);
   }
-  throw std::logic_error("mesh type '" + type + "' not available yet");
+  auto count = [&](const char* k) { return m.at(k).get<int>(); };
+  if (type == "plate_with_hole")
+    return make_plate_with_hole({num(m, "width"), num(m, "height"), num(m, "radius"), count("n_around"),
+                                 count("n_radial"), num(m, "grading")});
+  const double c0 = m.at("center")[0].get<double>(), c1 = m.at("center")[1].get<double>();
+  if (type == "annulus")
+    return make_annulus({c0, c1, num(m, "inner_radius"), num(m, "outer_radius"), count("n_radial"),
+                         count("n_around"), num(m, "start_angle"), num(m, "end_angle")});
+  return make_cylinder({c0, c1, num(m, "y0"), num(m, "length"), num(m, "inner_radius"), num(m, "outer_radius"),
+                        count("n_radial"), count("n_around"), count("n_axial"), num(m, "start_angle"),
+                        num(m, "end_angle")});
 }
 
 }  // namespace rollsim

@@ -221,11 +221,12 @@ Model build_model(const Project& project) {
     const json& mat = d.at("materials")[static_cast<size_t>(find_named(d.at("materials"), body.material_name))];
     body.material = {mat.at("E").get<double>(), mat.at("nu").get<double>()};
     body.formulation = jb.at("formulation") == "bbar" ? Formulation::BBar : Formulation::Full;
-    body.mesh = make_mesh(jb.at("mesh"), model.dim);
     try {
+      body.mesh = make_mesh(jb.at("mesh"), model.dim);
       check_element_orientation(body.mesh);
     } catch (const std::exception& e) {
       issues.push_back({at("bodies", b) + ".mesh", e.what()});
+      continue;
     }
     add_user_sets(body.mesh, jb.at("node_sets"), at("bodies", b) + ".node_sets", issues);
     model.bodies.push_back(std::move(body));

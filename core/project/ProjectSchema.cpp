@@ -88,9 +88,10 @@ const ObjectSchema kBlock{"block mesh", "Structured rectangle (Q4) or box (H8) o
    vec("origin", "length", "corner with the smallest coordinates (default: the origin)")}, "", {}};
 
 Field grading() {
-  Field f = def(num("grading", "-", "ratio of the outermost to the innermost radial element size (1: uniform)"), 1.0);
+  Field f = def(num("grading", "-", "radial size ratio of each element to its neighbour nearer the hole (1: uniform)"),
+                1.0);
   f.min = 1.0;
-  f.max = 1000.0;
+  f.max = 2.0;
   return f;
 }
 
