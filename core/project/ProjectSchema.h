@@ -6,6 +6,9 @@ namespace rollsim {
 
 const ObjectSchema& project_schema();
 
+/// docs/project-format.md: the field reference generated from project_schema().
+std::string project_format_markdown();
+
 /// Upper bound on elements of one model; larger requests are refused before any allocation.
 constexpr double kMaxElements = 2.0e7;
 

@@ -180,6 +180,12 @@ void validate_object(json& value, const ObjectSchema& schema, const std::string&
 
 namespace {
 
+std::string anchor(const std::string& title) {
+  std::string a;
+  for (char c : title) a += c == ' ' ? '-' : c;
+  return "[" + title + "](#" + a + ")";
+}
+
 std::string type_text(const Field& f) {
   switch (f.kind) {
     case Kind::Integer: return "integer";
@@ -194,8 +200,8 @@ std::string type_text(const Field& f) {
     }
     case Kind::Vector:
       return f.vector_size ? "array of " + std::to_string(f.vector_size) + " numbers" : "array of `dimension` numbers";
-    case Kind::Object: return "[" + f.object->name + "](#" + f.object->name + ")";
-    case Kind::ObjectArray: return "array of [" + f.object->name + "](#" + f.object->name + ")";
+    case Kind::Object: return anchor(f.object->name);
+    case Kind::ObjectArray: return "array of " + anchor(f.object->name);
   }
   return "";
 }
