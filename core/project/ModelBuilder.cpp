@@ -4,6 +4,7 @@
 #include <limits>
 #include <set>
 
+#include "model/RigidModes.h"
 #include "project/MeshFactory.h"
 #include "project/ProjectSchema.h"
 
@@ -233,6 +234,16 @@ Model build_model(const Project& project) {
   }
   if (!issues.empty()) throw ProjectError(project.source, issues);
   for (const auto& bc : d.at("boundary_conditions")) add_condition(model, bc, d.at("bodies"));
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const auto modes = free_rigid_modes(model, static_cast<int>(b));
+    std::string list;
+    for (const auto& m : modes) list += (list.empty() ? "" : ", ") + m;
+    if (!modes.empty())
+      issues.push_back({at("bodies", b), "body '" + model.bodies[b].name + "' is not held against " +
+                                             std::to_string(modes.size()) + " rigid-body mode(s) (" + list +
+                                             "): add displacement or symmetry conditions"});
+  }
+  if (!issues.empty()) throw ProjectError(project.source, issues);
   for (const auto& p : d.at("probes")) {
     Probe probe{p.at("name").get<std::string>(), point(p.at("at")), 0, 0};
     double best = std::numeric_limits<double>::infinity();

@@ -49,7 +49,7 @@ std::string expectation(const Field& f) {
   std::string r = range_text(f);
   switch (f.kind) {
     case Kind::Integer:
-      if (f.min && *f.min == 1 && !f.max) return "must be a positive integer";
+      if (f.min && *f.min == 1) return "must be a positive integer";
       return "must be an integer" + (r.empty() ? "" : " " + r);
     case Kind::Number: return "must be a finite number" + (r.empty() ? "" : " " + r);
     case Kind::String: return "must be a non-empty string";
@@ -65,8 +65,15 @@ void check_scalar(json& v, const Field& f, const std::string& path, std::vector<
       const bool integral = v.is_number_integer() || (v.is_number_float() && std::isfinite(v.get<double>()) &&
                                                        std::floor(v.get<double>()) == v.get<double>() &&
                                                        std::fabs(v.get<double>()) < 9e15);
-      if (!integral || !in_range(f, v.get<double>())) out.push_back({path, expectation(f) + got});
-      else v = v.get<long long>();
+      if (!integral || (f.min && v.get<double>() < *f.min)) {
+        out.push_back({path, expectation(f) + got});
+      } else if (f.max && v.get<double>() > *f.max) {
+        std::ostringstream m;
+        m << "must be at most " << *f.max << got;
+        out.push_back({path, m.str()});
+      } else {
+        v = v.get<long long>();
+      }
       return;
     }
     case Kind::Number:

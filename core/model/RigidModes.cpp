@@ -1,0 +1,61 @@
+#include "model/RigidModes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/DofMap.h"
+
+namespace rollsim {
+
+Eigen::MatrixXd rigid_modes(const Mesh& m) {
+  const int d = m.dim, nmodes = d == 2 ? 3 : 6;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& x : m.nodes) c += Eigen::Vector3d(x[0], x[1], x[2]);
+  c /= std::max(1, m.num_nodes());
+  double size = 0;
+  for (const auto& x : m.nodes) size = std::max(size, (Eigen::Vector3d(x[0], x[1], x[2]) - c).norm());
+  if (size == 0) size = 1;
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m.num_nodes()) * d, nmodes);
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    const Eigen::Vector3d x = (Eigen::Vector3d(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]) - c) / size;
+    for (int k = 0; k < d; ++k) R(n * d + k, k) = 1.0;
+    if (d == 2) {
+      R(n * 2, 2) = -x.y();
+      R(n * 2 + 1, 2) = x.x();
+      continue;
+    }
+    for (int axis = 0; axis < 3; ++axis) {  // u = e_axis x x
+      const Eigen::Vector3d u = Eigen::Vector3d::Unit(axis).cross(x);
+      for (int k = 0; k < 3; ++k) R(n * 3 + k, 3 + axis) = u[k];
+    }
+  }
+  return R;
+}
+
+std::vector<std::string> free_rigid_modes(const Model& model, int b) {
+  const Body& body = model.bodies[b];
+  const DofMap dofs(body, b, model.displacements);
+  const Eigen::MatrixXd R = rigid_modes(body.mesh);
+  Eigen::MatrixXd Rc(dofs.num_prescribed(), R.cols());
+  for (Eigen::Index i = 0, row = 0; i < R.rows(); ++i)
+    if (dofs.equation(static_cast<int>(i) / body.mesh.dim, static_cast<int>(i) % body.mesh.dim) < 0)
+      Rc.row(row++) = R.row(i);
+  // a rigid motion is prevented iff it moves some prescribed dof: the null space of Rc is what stays free
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Rc.transpose() * Rc, Eigen::ComputeFullV);
+  const Eigen::VectorXd sv = svd.singularValues();
+  const char* axes = "xyz";
+  std::vector<std::string> names;
+  for (Eigen::Index k = 0; k < sv.size(); ++k) {
+    if (sv[k] > 1e-10 * std::max(1.0, sv[0])) continue;
+    Eigen::Index dominant = 0;
+    svd.matrixV().col(k).cwiseAbs().maxCoeff(&dominant);
+    const int dim = body.mesh.dim;
+    if (dominant < dim)
+      names.push_back(std::string("translation along ") + axes[dominant]);
+    else
+      names.push_back(std::string("rotation about ") + (dim == 2 ? 'z' : axes[dominant - 3]));
+  }
+  return names;
+}
+
+}  // namespace rollsim
