@@ -3,6 +3,7 @@
 // (0 success, 1 internal failure, 2 invalid input).
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rollsim::app {
 
@@ -14,7 +15,16 @@ struct RunOptions {
   bool quiet = false;
 };
 
+struct BenchOptions {
+  std::vector<std::string> samples;
+  int repeat = 3;
+  int threads = 1;
+  std::string csv;
+};
+
 int run_command(const RunOptions& options);
+int bench_command(const BenchOptions& options);
+int export_ccx_command(const std::string& project, const std::string& out);
 int check_command(const std::string& project);
 int schema_command();
 

@@ -34,6 +34,18 @@ int main(int argc, char** argv) {
   auto* cmd_check = cli.add_subcommand("check", "validate a project without solving");
   cmd_check->add_option("project", check_file, "project file (JSON)")->required();
 
+  BenchOptions bench;
+  auto* cmd_bench = cli.add_subcommand("bench", "time assembly, ordering, factorization and solve: skyline vs CHOLMOD");
+  cmd_bench->add_option("samples", bench.samples, "project files")->required();
+  cmd_bench->add_option("--repeat", bench.repeat, "repetitions (the median is reported)")->check(CLI::Range(1, 100));
+  cmd_bench->add_option("--threads", bench.threads, "BLAS threads")->check(CLI::Range(1, 256));
+  cmd_bench->add_option("--csv", bench.csv, "also write the table as CSV");
+
+  std::string export_project, export_out;
+  auto* cmd_export = cli.add_subcommand("export-ccx", "write the model as CalculiX input (.inp)");
+  cmd_export->add_option("project", export_project, "project file (JSON)")->required();
+  cmd_export->add_option("out", export_out, "output .inp file")->required();
+
   auto* cmd_schema = cli.add_subcommand("schema", "print the project file reference (markdown)");
 
   try {
@@ -49,6 +61,8 @@ int main(int argc, char** argv) {
     if (*cmd_run) return run_command(run);
     if (*cmd_check) return check_command(check_file);
     if (*cmd_schema) return schema_command();
+    if (*cmd_bench) return bench_command(bench);
+    if (*cmd_export) return export_ccx_command(export_project, export_out);
   } catch (const std::exception& e) {
     std::cerr << "rollsim: internal error: " << e.what() << "\n";
     return 1;

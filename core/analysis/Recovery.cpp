@@ -14,19 +14,16 @@ void recover_elements(const Body& body, BodyResults& r) {
   r.element_stress.assign(static_cast<size_t>(ne), {});
   r.nodal_stress.assign(static_cast<size_t>(m.num_nodes()), {});
   std::vector<int> count(static_cast<size_t>(m.num_nodes()), 0);
-  typename El::Stiffness Ke;
-  typename El::Dofs ue;
+  typename El::Dofs ue, fe;
   std::array<typename El::Stress6, El::NGP> gp;
   for (int e = 0; e < ne; ++e) {
     const int* conn = m.element(e);
     for (int a = 0; a < El::NN; ++a)
       for (int i = 0; i < D; ++i) ue(a * D + i) = r.displacement[conn[a] * D + i];
     const auto x = element_coords<D>(m, e);
-    El::stiffness(x, body.material, body.formulation, Ke);
-    const typename El::Dofs fe = Ke * ue;
+    El::stresses_and_force(x, body.material, body.formulation, ue, gp, fe);
     for (int a = 0; a < El::NN; ++a)
       for (int i = 0; i < D; ++i) r.nodal_force[conn[a] * D + i] += fe(a * D + i);
-    El::gauss_stresses(x, body.material, body.formulation, ue, gp);
     for (int c = 0; c < 6; ++c) {
       std::array<double, El::NGP> v;
       double mean = 0.0;

@@ -113,13 +113,15 @@ void SolidElement<D>::stiffness(const Coords& x, const LinearElastic& mat, Formu
 }
 
 template <int D>
-bool SolidElement<D>::gauss_stresses(const Coords& x, const LinearElastic& mat, Formulation f, const Dofs& ue,
-                                     std::array<Stress6, NGP>& out) {
+bool SolidElement<D>::stresses_and_force(const Coords& x, const LinearElastic& mat, Formulation f, const Dofs& ue,
+                                         std::array<Stress6, NGP>& out, Dofs& fe) {
   std::array<GaussData<D>, NGP> g;
+  fe.setZero();
   if (!gauss_B<D>(x, f, g)) return false;
   const auto C = tangent<D>(mat);
   for (int p = 0; p < NGP; ++p) {
     const Eigen::Matrix<double, NS, 1> s = C * (g[p].B * ue);
+    fe.noalias() += g[p].B.transpose() * (s * g[p].dv);
     if constexpr (D == 2)
       out[p] = {s(0), s(1), s(2), s(3), 0.0, 0.0};
     else

@@ -23,9 +23,10 @@ struct SolidElement {
 
   /// Element stiffness K_e = sum_gp B^T C B det J w.
   static void stiffness(const Coords& x, const LinearElastic& mat, Formulation f, Stiffness& Ke);
-  /// Stresses at the Gauss points for element displacements ue; returns false if the element is inverted.
-  static bool gauss_stresses(const Coords& x, const LinearElastic& mat, Formulation f, const Dofs& ue,
-                             std::array<Stress6, NGP>& out);
+  /// Stresses at the Gauss points for element displacements ue, and the internal force
+  /// f_e = sum_gp B^T sigma det J w; returns false if the element is inverted.
+  static bool stresses_and_force(const Coords& x, const LinearElastic& mat, Formulation f, const Dofs& ue,
+                                 std::array<Stress6, NGP>& out, Dofs& fe);
   /// Corner-node value from Gauss-point values (bilinear/trilinear extrapolation).
   static double extrapolate_to_node(const std::array<double, NGP>& gp, int node);
 };

@@ -1,0 +1,124 @@
+// `rollsim bench`: per-stage times (pattern, values, analyze, factorize, solve) of `skyline` vs
+// CHOLMOD on the same assembled systems, medians of repeated runs, factor size and flops.
+#include <algorithm>
+#include <filesystem>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "Commands.h"
+#include "fem/Assembler.h"
+#include "fem/Loads.h"
+#include "project/ModelBuilder.h"
+#include "project/Project.h"
+#include "solve/Blas.h"
+#include "solve/Factorization.h"
+#include "solve/Stopwatch.h"
+
+namespace rollsim::app {
+
+namespace {
+
+struct StageTimes {
+  double pattern = 0, values = 0, analyze = 0, factorize = 0, solve = 0;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+struct Row {
+  std::string sample, solver, ordering;
+  long dofs = 0;
+  double nnz = 0, flops = 0;
+  StageTimes t;
+  double max_rel_diff = 0;
+};
+
+/// One repetition: assemble body 0 and factor/solve with `kind`; returns the solution.
+Eigen::VectorXd run_once(const Model& model, const std::string& kind, StageTimes& t, Row& row) {
+  const Body& body = model.bodies[0];
+  DofMap dofs(body, 0, model.displacements);
+  Stopwatch sp;
+  Assembler assembler(body, dofs);
+  t.pattern = sp.seconds();
+  SparseMatrix K;
+  Eigen::VectorXd f;
+  Stopwatch sv;
+  assembler.assemble(K, f);
+  t.values = sv.seconds();
+  f += dofs.restrict_to_free(external_nodal_load(model, 0));
+  auto factor = make_factorization(kind);
+  factor->analyze(K);
+  factor->factorize(K);
+  const Eigen::VectorXd u = factor->solve(f);
+  const FactorStats& st = factor->stats();
+  t.analyze = st.analyze_s;
+  t.factorize = st.factorize_s;
+  t.solve = st.solve_s;
+  row.ordering = st.ordering;
+  row.nnz = st.nnz_factor;
+  row.flops = st.flops;
+  row.dofs = K.rows();
+  return u;
+}
+
+Row bench(const std::string& file, const Model& model, const std::string& kind, int repeat, Eigen::VectorXd& u) {
+  Row row;
+  row.sample = std::filesystem::path(file).stem().string();
+  row.solver = kind;
+  std::vector<StageTimes> runs(static_cast<size_t>(repeat));
+  for (auto& t : runs) u = run_once(model, kind, t, row);
+  auto med = [&](double StageTimes::*m) {
+    std::vector<double> v;
+    for (const auto& t : runs) v.push_back(t.*m);
+    return median(v);
+  };
+  row.t = {med(&StageTimes::pattern), med(&StageTimes::values), med(&StageTimes::analyze),
+           med(&StageTimes::factorize), med(&StageTimes::solve)};
+  return row;
+}
+
+}  // namespace
+
+int bench_command(const BenchOptions& o) {
+  set_blas_threads(o.threads);
+  std::vector<Row> rows;
+  for (const auto& file : o.samples) {
+    Model model;
+    try {
+      model = build_model(load_project(file));
+    } catch (const ProjectError& e) {
+      std::fprintf(stderr, "rollsim: error: %s\n", e.what());
+      return 2;
+    }
+    Eigen::VectorXd u_sky, u_chol;
+    rows.push_back(bench(file, model, "skyline", o.repeat, u_sky));
+    rows.push_back(bench(file, model, "cholmod", o.repeat, u_chol));
+    const double diff = (u_sky - u_chol).cwiseAbs().maxCoeff() / u_chol.cwiseAbs().maxCoeff();
+    rows[rows.size() - 1].max_rel_diff = rows[rows.size() - 2].max_rel_diff = diff;
+    std::fprintf(stderr, "rollsim: bench %s done\n", file.c_str());
+  }
+  std::printf("%-26s %-8s %7s %-8s %11s %11s %8s %8s %8s %9s %8s %9s\n", "sample", "solver", "dofs", "ordering",
+              "nnz(L)", "flops", "pattern", "values", "analyze", "factorize", "solve", "max diff");
+  std::ofstream csv;
+  if (!o.csv.empty()) {
+    csv.open(o.csv);
+    csv << "sample,solver,dofs,ordering,nnz_factor,flops,pattern_s,values_s,analyze_s,factorize_s,solve_s,"
+           "max_rel_diff\n";
+  }
+  for (const Row& r : rows) {
+    const std::string ord = r.ordering.substr(0, r.ordering.find(' '));
+    std::printf("%-26s %-8s %7ld %-8s %11.4g %11.4g %8.4f %8.4f %8.4f %9.4f %8.4f %9.2e\n", r.sample.c_str(),
+                r.solver.c_str(), r.dofs, ord.c_str(), r.nnz, r.flops, r.t.pattern, r.t.values, r.t.analyze,
+                r.t.factorize, r.t.solve, r.max_rel_diff);
+    if (csv)
+      csv << r.sample << "," << r.solver << "," << r.dofs << "," << ord << "," << r.nnz << "," << r.flops << ","
+          << r.t.pattern << "," << r.t.values << "," << r.t.analyze << "," << r.t.factorize << "," << r.t.solve << ","
+          << r.max_rel_diff << "\n";
+  }
+  return 0;
+}
+
+}  // namespace rollsim::app
