@@ -13,33 +13,44 @@ void element_equations(const Mesh& mesh, const DofMap& dofs, int e, int* eq) {
     for (int c = 0; c < d; ++c) eq[a * d + c] = dofs.equation(conn[a], c);
 }
 
+namespace {
+/// Sorted neighbour lists of the node graph (nodes sharing an element, itself included).
+std::vector<std::vector<int>> node_adjacency(const Mesh& m) {
+  std::vector<std::vector<int>> adj(static_cast<size_t>(m.num_nodes()));
+  const int nn = m.nodes_per_elem();
+  for (int e = 0; e < m.num_elements(); ++e)
+    for (int a = 0; a < nn; ++a)
+      for (int b = 0; b < nn; ++b) adj[m.element(e)[a]].push_back(m.element(e)[b]);
+  for (auto& list : adj) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return adj;
+}
+}  // namespace
+
 Assembler::Assembler(const Body& body, const DofMap& dofs) : body_(body), dofs_(dofs) {
   const Mesh& m = body.mesh;
-  const int nd = m.nodes_per_elem() * m.dim;
-  const int n = dofs.num_free();
-  // column lists of the pattern, built once
-  std::vector<std::vector<int>> cols(static_cast<size_t>(n));
-  std::vector<int> eq(static_cast<size_t>(nd));
-  for (int e = 0; e < m.num_elements(); ++e) {
-    element_equations(m, dofs, e, eq.data());
-    for (int j : eq)
-      if (j >= 0)
-        for (int i : eq)
-          if (i >= 0) cols[j].push_back(i);
-  }
-  std::vector<int> outer(static_cast<size_t>(n) + 1, 0);
-  for (int j = 0; j < n; ++j) {
-    auto& c = cols[j];
-    std::sort(c.begin(), c.end());
-    c.erase(std::unique(c.begin(), c.end()), c.end());
-    outer[j + 1] = outer[j] + static_cast<int>(c.size());
-  }
+  const int d = m.dim, nd = m.nodes_per_elem() * d, n = dofs.num_free();
+  // pattern from the node graph: equations are node-major, so rows come out sorted
+  const auto adj = node_adjacency(m);
+  std::vector<int> outer(static_cast<size_t>(n) + 1, 0), inner;
+  for (int node = 0; node < m.num_nodes(); ++node)
+    for (int c = 0; c < d; ++c) {
+      const int j = dofs.equation(node, c);
+      if (j < 0) continue;
+      for (int other : adj[node])
+        for (int k = 0; k < d; ++k)
+          if (dofs.equation(other, k) >= 0) inner.push_back(dofs.equation(other, k));
+      outer[j + 1] = static_cast<int>(inner.size());
+    }
   pattern_.resize(n, n);
-  pattern_.resizeNonZeros(outer[n]);
+  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
   std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
-  for (int j = 0; j < n; ++j) std::copy(cols[j].begin(), cols[j].end(), pattern_.innerIndexPtr() + outer[j]);
-  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + outer[n], 0.0);
+  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
+  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + inner.size(), 0.0);
   // scatter map: slot of each element-matrix entry in the value array
+  std::vector<int> eq(static_cast<size_t>(nd));
   slot_.resize(static_cast<size_t>(m.num_elements()) * nd * nd);
   for (int e = 0; e < m.num_elements(); ++e) {
     element_equations(m, dofs, e, eq.data());
