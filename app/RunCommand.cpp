@@ -1,4 +1,5 @@
 // `rollsim run` and `rollsim check`: project -> model -> analysis -> results -> writers.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -47,8 +48,29 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
     solver["mode"] = *o.solver;
   }
   if (o.threads) {
-    if (*o.threads < 1 || *o.threads > 256) return "--threads: must be an integer in [1, 256], got " + std::to_string(*o.threads);
+    if (*o.threads < 1 || *o.threads > 256)
+      return "--threads: must be an integer in [1, 256], got " + std::to_string(*o.threads);
     solver["threads"] = *o.threads;
+  }
+  return "";
+}
+
+/// Names the first body whose results hold a NaN or an infinity (input magnitudes beyond double precision); "" if none.
+std::string non_finite_results(const Model& model, const Results& r) {
+  auto finite = [](const auto& values) {
+    for (const double v : values)
+      if (!std::isfinite(v)) return false;
+    return true;
+  };
+  for (size_t b = 0; b < r.bodies.size(); ++b) {
+    const BodyResults& br = r.bodies[b];
+    bool ok = br.displacement.allFinite() && br.nodal_force.allFinite();
+    for (const auto& s : br.element_stress) ok = ok && finite(s);
+    for (const auto& s : br.nodal_stress) ok = ok && finite(s);
+    if (!ok)
+      return "bodies[" + std::to_string(b) + "]: the results of body '" + model.bodies[b].name +
+             "' are not finite numbers (overflow or underflow): the loads, prescribed displacements, material "
+             "constants or dimensions are out of the range double precision can handle";
   }
   return "";
 }
@@ -99,16 +121,23 @@ int run_command(const RunOptions& o) {
   int code = 0;
   try {
     results = run_linear_static(model, *solver, &progress);
+    info.error = non_finite_results(model, results);
   } catch (const UnsupportedBody& e) {
-    results.status = "error";
     info.error = e.what();
+  }
+  if (!info.error.empty()) {
+    results.status = "error";
     code = 2;
   }
   progress.on_stage("write results");
-  if (results.status == "converged" && project.data.at("output").at("vtu").get<bool>())
-    write_vtu(dir / "result.vtu", model, results);
-  results.timing.total_s = wall.seconds();
-  write_file_atomically(dir / "summary.json", make_summary(model, results, solver->stats(), info).dump(2) + "\n");
+  try {
+    if (results.status == "converged" && project.data.at("output").at("vtu").get<bool>())
+      write_vtu(dir / "result.vtu", model, results);
+    results.timing.total_s = wall.seconds();
+    write_file_atomically(dir / "summary.json", make_summary(model, results, solver->stats(), info).dump(2) + "\n");
+  } catch (const std::exception& e) {
+    return invalid("cannot write the results into " + dir.string() + ": " + e.what());
+  }
   if (code) return invalid(info.error + " (summary written to " + (dir / "summary.json").string() + ")");
   if (!o.quiet)
     std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s, %.3f s; results in %s/\n", project.name().c_str(),

@@ -9,11 +9,11 @@
 namespace rollsim {
 
 struct BodyResults {
-  Eigen::VectorXd displacement;   // node-major, dim components per node [length]
-  Eigen::VectorXd nodal_force;    // internal minus external force at every dof: reactions at supports [force]
+  Eigen::VectorXd displacement;  // node-major, dim components per node [length]
+  Eigen::VectorXd nodal_force;   // internal minus external force at every dof: reactions at supports [force]
   std::vector<std::array<double, 6>> element_stress;  // element mean (xx, yy, zz, xy, yz, zx) [stress]
   std::vector<std::array<double, 6>> nodal_stress;    // extrapolated from Gauss points, averaged at nodes
-  std::vector<int> subdomain;     // per element (0 while bodies are not partitioned)
+  std::vector<int> subdomain;                         // per element (0 while bodies are not partitioned)
 };
 
 struct Timing {

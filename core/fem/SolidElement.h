@@ -12,14 +12,14 @@ enum class Formulation { Full, BBar };
 
 template <int D>
 struct SolidElement {
-  static constexpr int NN = D == 2 ? 4 : 8;         // nodes
-  static constexpr int NDOF = D * NN;               // dofs, node-major
-  static constexpr int NS = D == 2 ? 4 : 6;         // strain components (2D: xx, yy, zz, xy)
-  static constexpr int NGP = D == 2 ? 4 : 8;        // Gauss points
-  using Coords = Eigen::Matrix<double, D, NN>;      // column a = coordinates of node a
+  static constexpr int NN = D == 2 ? 4 : 8;     // nodes
+  static constexpr int NDOF = D * NN;           // dofs, node-major
+  static constexpr int NS = D == 2 ? 4 : 6;     // strain components (2D: xx, yy, zz, xy)
+  static constexpr int NGP = D == 2 ? 4 : 8;    // Gauss points
+  using Coords = Eigen::Matrix<double, D, NN>;  // column a = coordinates of node a
   using Stiffness = Eigen::Matrix<double, NDOF, NDOF>;
   using Dofs = Eigen::Matrix<double, NDOF, 1>;
-  using Stress6 = std::array<double, 6>;            // xx, yy, zz, xy, yz, zx
+  using Stress6 = std::array<double, 6>;  // xx, yy, zz, xy, yz, zx
 
   /// Element stiffness K_e = sum_gp B^T C B det J w.
   static void stiffness(const Coords& x, const LinearElastic& mat, Formulation f, Stiffness& Ke);

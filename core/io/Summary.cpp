@@ -18,9 +18,15 @@ json vec(const double* v, int n) {
 }
 
 json model_section(const Model& m, const Results& r) {
-  return {{"dimension", m.dim},  {"nodes", m.total_nodes()},  {"elements", m.total_elements()},
-          {"dofs", r.dofs},      {"bodies", m.bodies.size()}, {"contact_multipliers", 0},
-          {"interface_multipliers", 0}, {"subdomains", m.bodies.size()}, {"rigid_modes", 0}};
+  return {{"dimension", m.dim},
+          {"nodes", m.total_nodes()},
+          {"elements", m.total_elements()},
+          {"dofs", r.dofs},
+          {"bodies", m.bodies.size()},
+          {"contact_multipliers", 0},
+          {"interface_multipliers", 0},
+          {"subdomains", m.bodies.size()},
+          {"rigid_modes", 0}};
 }
 
 json results_section(const Model& m, const Results& r) {
@@ -62,9 +68,9 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
                  {"ordering", st.factor.ordering},
                  {"factor_nnz", st.factor.nnz_factor},
                  {"factor_flops", st.factor.flops}};
-  s["timing"] = {{"total_s", r.timing.total_s},         {"stiffness_s", r.timing.stiffness_s},
-                 {"analyze_s", r.timing.analyze_s},     {"factorize_s", r.timing.factorize_s},
-                 {"solve_s", r.timing.solve_s},         {"recovery_s", r.timing.recovery_s}};
+  s["timing"] = {{"total_s", r.timing.total_s},     {"stiffness_s", r.timing.stiffness_s},
+                 {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
+                 {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};
   if (r.status == "converged") s["results"] = results_section(model, r);
   return s;
 }

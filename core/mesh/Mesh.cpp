@@ -12,8 +12,7 @@ std::vector<int> facet_local_nodes(ElementType t, int local) {
     return {edges[local][0], edges[local][1]};
   }
   // H8 with bottom 0-1-2-3 (counter-clockwise seen from +z) and top 4-5-6-7; outward normals
-  static const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                  {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  static const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   return {faces[local][0], faces[local][1], faces[local][2], faces[local][3]};
 }
 
@@ -40,8 +39,7 @@ double corner_jacobian(const Mesh& m, const int* conn, int corner) {
     const int next = (corner + 1) % 4, prev = (corner + 3) % 4;
     return d(corner, next, 0) * d(corner, prev, 1) - d(corner, next, 1) * d(corner, prev, 0);
   }
-  static const int nb[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
-                               {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+  static const int nb[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
   const int a = nb[corner][0], b = nb[corner][1], c = nb[corner][2];
   const double ax = d(corner, a, 0), ay = d(corner, a, 1), az = d(corner, a, 2);
   const double bx = d(corner, b, 0), by = d(corner, b, 1), bz = d(corner, b, 2);

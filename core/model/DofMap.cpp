@@ -3,8 +3,7 @@
 namespace rollsim {
 
 DofMap::DofMap(const Body& body, int body_index, const std::vector<DisplacementBC>& bcs)
-    : dim_(body.mesh.dim), eq_(static_cast<size_t>(body.mesh.num_nodes()) * dim_, 0),
-      up_(eq_.size(), 0.0) {
+    : dim_(body.mesh.dim), eq_(static_cast<size_t>(body.mesh.num_nodes()) * dim_, 0), up_(eq_.size(), 0.0) {
   for (const DisplacementBC& bc : bcs) {
     if (bc.body != body_index) continue;
     for (int n : bc.nodes)

@@ -76,12 +76,12 @@ Mesh make_mesh(const json& m, int dim) {
   }
   auto count = [&](const char* k) { return m.at(k).get<int>(); };
   if (type == "plate_with_hole")
-    return make_plate_with_hole({num(m, "width"), num(m, "height"), num(m, "radius"), count("n_around"),
-                                 count("n_radial"), num(m, "grading")});
+    return make_plate_with_hole(
+        {num(m, "width"), num(m, "height"), num(m, "radius"), count("n_around"), count("n_radial"), num(m, "grading")});
   const double c0 = m.at("center")[0].get<double>(), c1 = m.at("center")[1].get<double>();
   if (type == "annulus")
-    return make_annulus({c0, c1, num(m, "inner_radius"), num(m, "outer_radius"), count("n_radial"),
-                         count("n_around"), num(m, "start_angle"), num(m, "end_angle")});
+    return make_annulus({c0, c1, num(m, "inner_radius"), num(m, "outer_radius"), count("n_radial"), count("n_around"),
+                         num(m, "start_angle"), num(m, "end_angle")});
   return make_cylinder({c0, c1, num(m, "y0"), num(m, "length"), num(m, "inner_radius"), num(m, "outer_radius"),
                         count("n_radial"), count("n_around"), count("n_axial"), num(m, "start_angle"),
                         num(m, "end_angle")});

@@ -41,18 +41,22 @@ std::set<std::string> node_set_names(const json& body, int dim) {
   return names;
 }
 
-void check_node_sets(const json& body, const std::string& path, std::vector<Issue>& issues) {
+void check_node_sets(const json& body, const std::string& path, int dim, std::vector<Issue>& issues) {
   check_unique(body.at("node_sets"), path + ".node_sets", issues);
+  std::set<std::string> generated = generator_set_names(body.at("mesh"), dim);
+  generated.insert("all");
   for (size_t i = 0; i < body.at("node_sets").size(); ++i) {
     const json& s = body["node_sets"][i];
+    if (const auto name = s.at("name").get<std::string>(); generated.count(name))
+      issues.push_back({at(path + ".node_sets", i) + ".name",
+                        "duplicate name '" + name + "': the mesh generator already defines this set"});
     const bool nearest = s.contains("nearest"), box = s.contains("box_min") || s.contains("box_max");
     if (nearest == box || (box && !(s.contains("box_min") && s.contains("box_max"))))
       issues.push_back({at(path + ".node_sets", i), "give either `nearest` or both `box_min` and `box_max`"});
   }
 }
 
-void check_condition(const json& bc, const std::string& path, const json& bodies, int dim,
-                     std::vector<Issue>& issues) {
+void check_condition(const json& bc, const std::string& path, const json& bodies, int dim, std::vector<Issue>& issues) {
   const auto body_name = bc.at("body").get<std::string>();
   const int b = find_named(bodies, body_name);
   if (b < 0) {
@@ -65,22 +69,23 @@ void check_condition(const json& bc, const std::string& path, const json& bodies
     const auto names = generator_set_names(body.at("mesh"), dim);
     const auto s = bc.at("surface").get<std::string>();
     if (!names.count(s))
-      issues.push_back({path + ".surface", "no surface '" + s + "' in body '" + body_name + "' (available: " +
-                                               join(names) + ")"});
+      issues.push_back(
+          {path + ".surface", "no surface '" + s + "' in body '" + body_name + "' (available: " + join(names) + ")"});
     return;
   }
   const auto names = node_set_names(body, dim);
   const auto s = bc.at("set").get<std::string>();
   if (!names.count(s))
-    issues.push_back({path + ".set", "no node set '" + s + "' in body '" + body_name + "' (available: " +
-                                         join(names) + ")"});
+    issues.push_back(
+        {path + ".set", "no node set '" + s + "' in body '" + body_name + "' (available: " + join(names) + ")"});
   if (type == "symmetry" && dim == 2 && bc.at("normal") == "z")
     issues.push_back({path + ".normal", "must be x or y in a 2D model"});
   if (type == "displacement" || type == "force") {
     const std::string p = type == "force" ? "f" : "u";
     if (dim == 2 && bc.contains(p + "z")) issues.push_back({path + "." + p + "z", "not allowed in a 2D model"});
     if (!bc.contains(p + "x") && !bc.contains(p + "y") && !bc.contains(p + "z"))
-      issues.push_back({path, "sets no component (give " + p + "x, " + p + "y" + (dim == 3 ? ", " + p + "z" : "") + ")"});
+      issues.push_back(
+          {path, "sets no component (give " + p + "x, " + p + "y" + (dim == 3 ? ", " + p + "z" : "") + ")"});
   }
 }
 
@@ -89,7 +94,8 @@ void check_supports(const json& project, std::vector<Issue>& issues) {
   for (size_t b = 0; b < bodies.size(); ++b) {
     bool held = false;
     for (const auto& bc : project.at("boundary_conditions"))
-      held = held || ((bc.at("type") == "displacement" || bc.at("type") == "symmetry") && bc.at("body") == bodies[b].at("name"));
+      held = held || ((bc.at("type") == "displacement" || bc.at("type") == "symmetry") &&
+                      bc.at("body") == bodies[b].at("name"));
     if (!held)
       issues.push_back({at("bodies", b), "body '" + bodies[b].at("name").get<std::string>() +
                                              "' has no displacement or symmetry condition: it is free to move as a "
@@ -110,10 +116,11 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
     const json& body = d["bodies"][b];
     const std::string path = at("bodies", b);
     const auto mat = body.at("material").get<std::string>();
-    if (find_named(d.at("materials"), mat) < 0) issues.push_back({path + ".material", "no material named '" + mat + "'"});
+    if (find_named(d.at("materials"), mat) < 0)
+      issues.push_back({path + ".material", "no material named '" + mat + "'"});
     check_mesh_spec(body.at("mesh"), path + ".mesh", dim, issues);
     elements += estimated_elements(body.at("mesh"), dim);
-    check_node_sets(body, path, issues);
+    check_node_sets(body, path, dim, issues);
   }
   if (elements > kMaxElements)
     issues.push_back({"bodies", "the meshes would have " + std::to_string(static_cast<long long>(elements)) +

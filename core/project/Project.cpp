@@ -35,6 +35,31 @@ std::string parse_reason(const std::string& what) {
   if (r.rfind("syntax error while parsing value - ", 0) == 0) r = r.substr(35);
   return r;
 }
+
+// nlohmann::json parses iteratively but dumps recursively: refuse deep nesting before parsing (no stack overflow).
+constexpr int kMaxNesting = 64;
+
+void check_nesting(const std::string& text, const std::string& source) {
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxNesting)
+        throw ProjectError(source, {{"", "arrays and objects nested deeper than " + std::to_string(kMaxNesting) +
+                                             " levels at " + line_column(text, i)}});
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
 }  // namespace
 
 ProjectError::ProjectError(std::string source, std::vector<Issue> issues)
@@ -43,6 +68,7 @@ ProjectError::ProjectError(std::string source, std::vector<Issue> issues)
 Project parse_project(const std::string& text, const std::string& source) {
   Project p;
   p.source = source;
+  check_nesting(text, source);
   try {
     p.data = json::parse(text);
   } catch (const json::parse_error& e) {

@@ -81,26 +81,35 @@ Field object(std::string name, const ObjectSchema& o, std::string doc) {
   return f;
 }
 
-const ObjectSchema kBlock{"block mesh", "Structured rectangle (Q4) or box (H8) of nx × ny (× nz) elements.",
-  {req(count("nx", "elements along x", 1e5)), req(count("ny", "elements along y", 1e5)),
-   count("nz", "elements along z (3D only, required there)", 1e5), req(positive("lx", "length", "extent along x")),
-   req(positive("ly", "length", "extent along y")), positive("lz", "length", "extent along z (3D only, required there)"),
-   vec("origin", "length", "corner with the smallest coordinates (default: the origin)")}, "", {}};
+const ObjectSchema kBlock{
+    "block mesh",
+    "Structured rectangle (Q4) or box (H8) of nx × ny (× nz) elements.",
+    {req(count("nx", "elements along x", 1e5)), req(count("ny", "elements along y", 1e5)),
+     count("nz", "elements along z (3D only, required there)", 1e5), req(positive("lx", "length", "extent along x")),
+     req(positive("ly", "length", "extent along y")),
+     positive("lz", "length", "extent along z (3D only, required there)"),
+     vec("origin", "length", "corner with the smallest coordinates (default: the origin)")},
+    "",
+    {}};
 
 Field grading() {
-  Field f = def(num("grading", "-", "radial size ratio of each element to its neighbour nearer the hole (1: uniform)"),
-                1.0);
+  Field f =
+      def(num("grading", "-", "radial size ratio of each element to its neighbour nearer the hole (1: uniform)"), 1.0);
   f.min = 1.0;
   f.max = 2.0;
   return f;
 }
 
-const ObjectSchema kPlate{"plate_with_hole mesh",
-  "Quarter of a rectangular plate with a central circular hole (2D); symmetry lines x = 0 and y = 0.",
-  {req(positive("width", "length", "half-width W of the plate (x extent)")),
-   req(positive("height", "length", "half-height H of the plate (y extent)")),
-   req(positive("radius", "length", "hole radius a")), req(count("n_around", "elements around the quarter hole (even)", 1e5)),
-   req(count("n_radial", "elements from the hole to the outer edges", 1e5)), grading()}, "", {}};
+const ObjectSchema kPlate{
+    "plate_with_hole mesh",
+    "Quarter of a rectangular plate with a central circular hole (2D); symmetry lines x = 0 and y = 0.",
+    {req(positive("width", "length", "half-width W of the plate (x extent)")),
+     req(positive("height", "length", "half-height H of the plate (y extent)")),
+     req(positive("radius", "length", "hole radius a")),
+     req(count("n_around", "elements around the quarter hole (even)", 1e5)),
+     req(count("n_radial", "elements from the hole to the outer edges", 1e5)), grading()},
+    "",
+    {}};
 
 Field angle(std::string name, double d, std::string doc) {
   Field f = def(num(std::move(name), "degree", std::move(doc)), d);
@@ -109,25 +118,36 @@ Field angle(std::string name, double d, std::string doc) {
   return f;
 }
 
-const ObjectSchema kAnnulus{"annulus mesh", "Disk / annulus (2D roll), optionally a sector.",
-  {req(vec("center", "length", "centre of the disk", 2)), req(positive("inner_radius", "length", "hub radius")),
-   req(positive("outer_radius", "length", "outer radius")), req(count("n_radial", "elements across the ring", 1e5)),
-   req(count("n_around", "elements around the span", 1e5)),
-   angle("start_angle", 0.0, "start of the angular span, from +x towards +y"),
-   angle("end_angle", 360.0, "end of the angular span (360 after 0: a closed ring)")}, "", {}};
+const ObjectSchema kAnnulus{
+    "annulus mesh",
+    "Disk / annulus (2D roll), optionally a sector.",
+    {req(vec("center", "length", "centre of the disk", 2)), req(positive("inner_radius", "length", "hub radius")),
+     req(positive("outer_radius", "length", "outer radius")), req(count("n_radial", "elements across the ring", 1e5)),
+     req(count("n_around", "elements around the span", 1e5)),
+     angle("start_angle", 0.0, "start of the angular span, from +x towards +y"),
+     angle("end_angle", 360.0, "end of the angular span (360 after 0: a closed ring)")},
+    "",
+    {}};
 
-const ObjectSchema kCylinder{"cylinder mesh", "Hollow cylinder with its axis along y (3D roll), optionally a sector.",
-  {req(vec("center", "length", "axis position in the x-z plane [x, z]", 2)),
-   def(num("y0", "length", "axial start"), 0.0), req(positive("length", "length", "axial length")),
-   req(positive("inner_radius", "length", "hub radius")), req(positive("outer_radius", "length", "outer radius")),
-   req(count("n_radial", "elements across the ring", 1e5)), req(count("n_around", "elements around the span", 1e5)),
-   req(count("n_axial", "elements along the axis", 1e5)),
-   angle("start_angle", 0.0, "start of the angular span in the x-z plane, from +x towards +z"),
-   angle("end_angle", 360.0, "end of the angular span")}, "", {}};
+const ObjectSchema kCylinder{
+    "cylinder mesh",
+    "Hollow cylinder with its axis along y (3D roll), optionally a sector.",
+    {req(vec("center", "length", "axis position in the x-z plane [x, z]", 2)),
+     def(num("y0", "length", "axial start"), 0.0), req(positive("length", "length", "axial length")),
+     req(positive("inner_radius", "length", "hub radius")), req(positive("outer_radius", "length", "outer radius")),
+     req(count("n_radial", "elements across the ring", 1e5)), req(count("n_around", "elements around the span", 1e5)),
+     req(count("n_axial", "elements along the axis", 1e5)),
+     angle("start_angle", 0.0, "start of the angular span in the x-z plane, from +x towards +z"),
+     angle("end_angle", 360.0, "end of the angular span")},
+    "",
+    {}};
 
-const ObjectSchema kMesh{"mesh", "Mesh generator of a body, selected by `type`.",
-  {}, "type",
-  {{"block", &kBlock}, {"plate_with_hole", &kPlate}, {"annulus", &kAnnulus}, {"cylinder", &kCylinder}}};
+const ObjectSchema kMesh{
+    "mesh",
+    "Mesh generator of a body, selected by `type`.",
+    {},
+    "type",
+    {{"block", &kBlock}, {"plate_with_hole", &kPlate}, {"annulus", &kAnnulus}, {"cylinder", &kCylinder}}};
 
 Field tolerance() {
   Field f = num("tolerance", "length", "distance tolerance of `box` (default: 1e-6 of the body size)");
@@ -135,26 +155,32 @@ Field tolerance() {
   return f;
 }
 
-const ObjectSchema kNodeSet{"node set",
-  "A named node set defined geometrically: the node nearest to a point, or all nodes inside a box.",
-  {req(str("name", "set name, unique within the body")), vec("nearest", "length", "point: the nearest node"),
-   vec("box_min", "length", "lower corner of a box"), vec("box_max", "length", "upper corner of a box"), tolerance()},
-  "", {}};
+const ObjectSchema kNodeSet{
+    "node set",
+    "A named node set defined geometrically: the node nearest to a point, or all nodes inside a box.",
+    {req(str("name", "set name, unique within the body")), vec("nearest", "length", "point: the nearest node"),
+     vec("box_min", "length", "lower corner of a box"), vec("box_max", "length", "upper corner of a box"), tolerance()},
+    "",
+    {}};
 
-const ObjectSchema kBody{"body", "A deformable body: mesh, material, element formulation, extra node sets.",
-  {req(str("name", "body name, unique")), req(str("material", "name of an entry of `materials`")),
-   choice("formulation", {"full", "bbar"}, "full",
-          "full: 2×2(×2) Gauss integration; bbar: selective B-bar, for near-incompressibility"),
-   [] {
-     Field f;
-     f.name = "mesh";
-     f.kind = Kind::Object;
-     f.object = &kMesh;
-     f.required = true;
-     f.doc = "mesh generator";
-     return f;
-   }(),
-   objects("node_sets", kNodeSet, "extra named node sets")}, "", {}};
+const ObjectSchema kBody{
+    "body",
+    "A deformable body: mesh, material, element formulation, extra node sets.",
+    {req(str("name", "body name, unique")), req(str("material", "name of an entry of `materials`")),
+     choice("formulation", {"full", "bbar"}, "full",
+            "full: 2×2(×2) Gauss integration; bbar: selective B-bar, for near-incompressibility"),
+     [] {
+       Field f;
+       f.name = "mesh";
+       f.kind = Kind::Object;
+       f.object = &kMesh;
+       f.required = true;
+       f.doc = "mesh generator";
+       return f;
+     }(),
+     objects("node_sets", kNodeSet, "extra named node sets")},
+    "",
+    {}};
 
 Field poisson() {
   Field f = req(num("nu", "-", "Poisson's ratio"));
@@ -164,83 +190,118 @@ Field poisson() {
   return f;
 }
 
-const ObjectSchema kMaterial{"material", "Linear isotropic elastic material.",
-  {req(str("name", "material name, unique")), choice("model", {"linear_elastic"}, "linear_elastic", "constitutive model"),
-   req(positive("E", "stress", "Young's modulus")), poisson()}, "", {}};
+const ObjectSchema kMaterial{"material",
+                             "Linear isotropic elastic material.",
+                             {req(str("name", "material name, unique")),
+                              choice("model", {"linear_elastic"}, "linear_elastic", "constitutive model"),
+                              req(positive("E", "stress", "Young's modulus")), poisson()},
+                             "",
+                             {}};
 
 Field where(std::string what) { return req(str("set", "name of a " + what + " of the body")); }
 
-const ObjectSchema kDisp{"displacement condition", "Prescribed displacement per component on a node set (unset: free).",
-  {req(str("body", "body name")), where("node set"), num("ux", "length", "prescribed x displacement"),
-   num("uy", "length", "prescribed y displacement"), num("uz", "length", "prescribed z displacement (3D)")}, "", {}};
-const ObjectSchema kSym{"symmetry condition", "Symmetry plane: zero normal displacement on a node set.",
-  {req(str("body", "body name")), where("node set"),
-   [] {
-     Field f = choice("normal", {"x", "y", "z"}, "", "normal of the symmetry plane");
-     f.default_value = nullptr;
-     f.required = true;
-     return f;
-   }()}, "", {}};
-const ObjectSchema kForce{"force condition", "Force applied at every node of a set (per node, not shared).",
-  {req(str("body", "body name")), where("node set"), num("fx", "force", "x component"),
-   num("fy", "force", "y component"), num("fz", "force", "z component (3D)")}, "", {}};
-const ObjectSchema kPressure{"pressure condition",
-  "Uniform pressure on a surface, positive into the body (negative: tension). 2D: force per unit length and "
-  "unit thickness.",
-  {req(str("body", "body name")), req(str("surface", "name of a surface of the body")),
-   req(num("value", "stress", "pressure"))}, "", {}};
+const ObjectSchema kDisp{
+    "displacement condition",
+    "Prescribed displacement per component on a node set (unset: free).",
+    {req(str("body", "body name")), where("node set"), num("ux", "length", "prescribed x displacement"),
+     num("uy", "length", "prescribed y displacement"), num("uz", "length", "prescribed z displacement (3D)")},
+    "",
+    {}};
+const ObjectSchema kSym{"symmetry condition",
+                        "Symmetry plane: zero normal displacement on a node set.",
+                        {req(str("body", "body name")), where("node set"),
+                         [] {
+                           Field f = choice("normal", {"x", "y", "z"}, "", "normal of the symmetry plane");
+                           f.default_value = nullptr;
+                           f.required = true;
+                           return f;
+                         }()},
+                        "",
+                        {}};
+const ObjectSchema kForce{"force condition",
+                          "Force applied at every node of a set (per node, not shared).",
+                          {req(str("body", "body name")), where("node set"), num("fx", "force", "x component"),
+                           num("fy", "force", "y component"), num("fz", "force", "z component (3D)")},
+                          "",
+                          {}};
+const ObjectSchema kPressure{
+    "pressure condition",
+    "Uniform pressure on a surface, positive into the body (negative: tension). 2D: force per unit length and "
+    "unit thickness.",
+    {req(str("body", "body name")), req(str("surface", "name of a surface of the body")),
+     req(num("value", "stress", "pressure"))},
+    "",
+    {}};
 
-const ObjectSchema kBC{"boundary condition", "Boundary condition or load, selected by `type`.", {}, "type",
-  {{"displacement", &kDisp}, {"symmetry", &kSym}, {"force", &kForce}, {"pressure", &kPressure}}};
+const ObjectSchema kBC{"boundary condition",
+                       "Boundary condition or load, selected by `type`.",
+                       {},
+                       "type",
+                       {{"displacement", &kDisp}, {"symmetry", &kSym}, {"force", &kForce}, {"pressure", &kPressure}}};
 
 const ObjectSchema& solver_schema() {
-  static const ObjectSchema s{"solver", "Linear solver settings.",
-    {choice("mode", solver_names(), "direct", "solver strategy (see docs/ARCHITECTURE.md)"),
-     def(count("threads", "threads for the factorization (BLAS) and parallel groups", 256), 1),
-     [] {
-       Field f = def(positive("cg_tolerance", "-", "relative residual tolerance of the interface CG (mixed/feti)"), 1e-4);
-       f.max = 1.0;
-       f.max_exclusive = true;
-       return f;
-     }()}, "", {}};
+  static const ObjectSchema s{
+      "solver",
+      "Linear solver settings.",
+      {choice("mode", solver_names(), "direct", "solver strategy (see docs/ARCHITECTURE.md)"),
+       def(count("threads", "threads for the factorization (BLAS) and parallel groups", 256), 1),
+       [] {
+         Field f =
+             def(positive("cg_tolerance", "-", "relative residual tolerance of the interface CG (mixed/feti)"), 1e-4);
+         f.max = 1.0;
+         f.max_exclusive = true;
+         return f;
+       }()},
+      "",
+      {}};
   return s;
 }
 
-const ObjectSchema kProbe{"probe", "A named point whose nearest node's displacement is reported in summary.json.",
-  {req(str("name", "probe name, unique")), req(vec("at", "length", "position")),
-   str("body", "restrict the search to this body (default: all bodies)")}, "", {}};
+const ObjectSchema kProbe{"probe",
+                          "A named point whose nearest node's displacement is reported in summary.json.",
+                          {req(str("name", "probe name, unique")), req(vec("at", "length", "position")),
+                           str("body", "restrict the search to this body (default: all bodies)")},
+                          "",
+                          {}};
 
-const ObjectSchema kOutput{"output", "What is written and where (relative paths: to the working directory).",
-  {str("dir", "output directory (default: results/<project name>; --out overrides)"),
-   def([] {
-     Field f;
-     f.name = "vtu";
-     f.kind = Kind::Boolean;
-     f.doc = "write result.vtu";
-     return f;
-   }(), true)}, "", {}};
+const ObjectSchema kOutput{"output",
+                           "What is written and where (relative paths: to the working directory).",
+                           {str("dir", "output directory (default: results/<project name>; --out overrides)"),
+                            def(
+                                [] {
+                                  Field f;
+                                  f.name = "vtu";
+                                  f.kind = Kind::Boolean;
+                                  f.doc = "write result.vtu";
+                                  return f;
+                                }(),
+                                true)},
+                           "",
+                           {}};
 
 }  // namespace
 
 const ObjectSchema& project_schema() {
-  static const ObjectSchema root{"project",
-    "A rollsim project. Units are consistent and chosen by the user (e.g. mm, N, MPa); the unit column says "
-    "which quantity a field carries. 2D models are plane strain of unit thickness.",
-    {str("name", "project name (default: the file name without extension)"),
-     [] {
-       Field f;
-       f.name = "dimension";
-       f.kind = Kind::Choice;
-       f.int_choices = {2, 3};
-       f.required = true;
-       f.doc = "2 (plane strain) or 3";
-       return f;
-     }(),
-     str("description", "free text"), objects("materials", kMaterial, "materials", 1),
-     objects("bodies", kBody, "bodies", 1), objects("boundary_conditions", kBC, "supports and loads"),
-     object("solver", solver_schema(), "solver settings"), objects("probes", kProbe, "reported points"),
-     object("output", kOutput, "outputs")},
-    "", {}};
+  static const ObjectSchema root{
+      "project",
+      "A rollsim project. Units are consistent and chosen by the user (e.g. mm, N, MPa); the unit column says "
+      "which quantity a field carries. 2D models are plane strain of unit thickness.",
+      {str("name", "project name (default: the file name without extension)"),
+       [] {
+         Field f;
+         f.name = "dimension";
+         f.kind = Kind::Choice;
+         f.int_choices = {2, 3};
+         f.required = true;
+         f.doc = "2 (plane strain) or 3";
+         return f;
+       }(),
+       str("description", "free text"), objects("materials", kMaterial, "materials", 1),
+       objects("bodies", kBody, "bodies", 1), objects("boundary_conditions", kBC, "supports and loads"),
+       object("solver", solver_schema(), "solver settings"), objects("probes", kProbe, "reported points"),
+       object("output", kOutput, "outputs")},
+      "",
+      {}};
   return root;
 }
 

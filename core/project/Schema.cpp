@@ -8,16 +8,21 @@ namespace rollsim {
 
 std::string describe(const json& v) {
   switch (v.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return v.get<bool>() ? "true" : "false";
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return v.get<bool>() ? "true" : "false";
     case json::value_t::string: {
       std::string s = v.get<std::string>();
       if (s.size() > 40) s = s.substr(0, 40) + "...";
       return "\"" + s + "\"";
     }
-    case json::value_t::array: return "an array of " + std::to_string(v.size());
-    case json::value_t::object: return "an object";
-    default: return v.dump();
+    case json::value_t::array:
+      return "an array of " + std::to_string(v.size());
+    case json::value_t::object:
+      return "an object";
+    default:
+      return v.dump();
   }
 }
 
@@ -51,10 +56,14 @@ std::string expectation(const Field& f) {
     case Kind::Integer:
       if (f.min && *f.min == 1) return "must be a positive integer";
       return "must be an integer" + (r.empty() ? "" : " " + r);
-    case Kind::Number: return "must be a finite number" + (r.empty() ? "" : " " + r);
-    case Kind::String: return "must be a non-empty string";
-    case Kind::Boolean: return "must be true or false";
-    default: return "";
+    case Kind::Number:
+      return "must be a finite number" + (r.empty() ? "" : " " + r);
+    case Kind::String:
+      return "must be a non-empty string";
+    case Kind::Boolean:
+      return "must be true or false";
+    default:
+      return "";
   }
 }
 
@@ -62,9 +71,9 @@ void check_scalar(json& v, const Field& f, const std::string& path, std::vector<
   const auto got = ", got " + describe(v);
   switch (f.kind) {
     case Kind::Integer: {
-      const bool integral = v.is_number_integer() || (v.is_number_float() && std::isfinite(v.get<double>()) &&
-                                                       std::floor(v.get<double>()) == v.get<double>() &&
-                                                       std::fabs(v.get<double>()) < 9e15);
+      const bool integral = v.is_number_integer() ||
+                            (v.is_number_float() && std::isfinite(v.get<double>()) &&
+                             std::floor(v.get<double>()) == v.get<double>() && std::fabs(v.get<double>()) < 9e15);
       if (!integral || (f.min && v.get<double>() < *f.min)) {
         out.push_back({path, expectation(f) + got});
       } else if (f.max && v.get<double>() > *f.max) {
@@ -86,7 +95,8 @@ void check_scalar(json& v, const Field& f, const std::string& path, std::vector<
     case Kind::Boolean:
       if (!v.is_boolean()) out.push_back({path, expectation(f) + got});
       return;
-    default: return;
+    default:
+      return;
   }
 }
 
@@ -120,8 +130,12 @@ void check_vector(const json& v, const Field& f, const std::string& path, int di
 
 void check_field(json& v, const Field& f, const std::string& path, int dim, std::vector<Issue>& out) {
   switch (f.kind) {
-    case Kind::Choice: check_choice(v, f, path, out); return;
-    case Kind::Vector: check_vector(v, f, path, dim, out); return;
+    case Kind::Choice:
+      check_choice(v, f, path, out);
+      return;
+    case Kind::Vector:
+      check_vector(v, f, path, dim, out);
+      return;
     case Kind::Object:
       validate_object(v, *f.object, path, dim, out);
       return;
@@ -134,7 +148,8 @@ void check_field(json& v, const Field& f, const std::string& path, int dim, std:
       for (size_t i = 0; i < v.size(); ++i)
         validate_object(v[i], *f.object, path + "[" + std::to_string(i) + "]", dim, out);
       return;
-    default: check_scalar(v, f, path, out);
+    default:
+      check_scalar(v, f, path, out);
   }
 }
 
@@ -174,7 +189,8 @@ void validate_object(json& value, const ObjectSchema& schema, const std::string&
     const std::string p = path + (path.empty() ? "" : ".") + f->name;
     auto it = value.find(f->name);
     if (it == value.end()) {
-      if (f->required) out.push_back({p, "is required (" + f->doc + ")"});
+      if (f->required)
+        out.push_back({p, "is required (" + f->doc + ")"});
       else if (!f->default_value.is_null()) {
         value[f->name] = f->default_value;
         if (f->kind == Kind::Object) validate_object(value[f->name], *f->object, p, dim, out);  // nested defaults
@@ -195,10 +211,14 @@ std::string anchor(const std::string& title) {
 
 std::string type_text(const Field& f) {
   switch (f.kind) {
-    case Kind::Integer: return "integer";
-    case Kind::Number: return "number";
-    case Kind::String: return "string";
-    case Kind::Boolean: return "boolean";
+    case Kind::Integer:
+      return "integer";
+    case Kind::Number:
+      return "number";
+    case Kind::String:
+      return "string";
+    case Kind::Boolean:
+      return "boolean";
     case Kind::Choice: {
       std::string s;
       for (const auto& c : f.choices) s += (s.empty() ? "" : " \\| ") + ("`" + c + "`");
@@ -207,8 +227,10 @@ std::string type_text(const Field& f) {
     }
     case Kind::Vector:
       return f.vector_size ? "array of " + std::to_string(f.vector_size) + " numbers" : "array of `dimension` numbers";
-    case Kind::Object: return anchor(f.object->name);
-    case Kind::ObjectArray: return "array of " + anchor(f.object->name);
+    case Kind::Object:
+      return anchor(f.object->name);
+    case Kind::ObjectArray:
+      return "array of " + anchor(f.object->name);
   }
   return "";
 }

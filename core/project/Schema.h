@@ -12,9 +12,9 @@ namespace rollsim {
 using json = nlohmann::json;
 
 enum class Kind {
-  Integer,      // whole number within [min, max]
-  Number,       // finite real within [min, max]
-  String,       // non-empty string
+  Integer,  // whole number within [min, max]
+  Number,   // finite real within [min, max]
+  String,   // non-empty string
   Boolean,
   Choice,       // one of `choices` (strings), or of `int_choices`
   Vector,       // array of `dimension` finite numbers (a point or direction)

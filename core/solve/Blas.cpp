@@ -10,7 +10,8 @@ std::string blas_description() {
   auto config = reinterpret_cast<Config>(dlsym(RTLD_DEFAULT, "openblas_get_config"));
   if (!config) return "reference BLAS (not OpenBLAS: expect slow factorizations)";
   std::string s = std::string("OpenBLAS ") + config();
-  if (auto core = reinterpret_cast<Core>(dlsym(RTLD_DEFAULT, "openblas_get_corename"))) s += " core=" + std::string(core());
+  if (auto core = reinterpret_cast<Core>(dlsym(RTLD_DEFAULT, "openblas_get_corename")))
+    s += " core=" + std::string(core());
   return s;
 }
 

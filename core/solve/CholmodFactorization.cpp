@@ -41,8 +41,12 @@ void CholmodFactorization::analyze(const SparseMatrix& A) {
   factor_ = cholmod_analyze(&s, &common_);
   if (!factor_) throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(common_.status) + ")");
   const int ord = common_.method[common_.selected].ordering;
-  stats_.ordering = ord == CHOLMOD_METIS ? "METIS" : ord == CHOLMOD_NESDIS ? "NESDIS" : ord == CHOLMOD_AMD ? "AMD"
-                    : ord == CHOLMOD_COLAMD ? "COLAMD" : ord == CHOLMOD_NATURAL ? "natural" : "other";
+  stats_.ordering = ord == CHOLMOD_METIS     ? "METIS"
+                    : ord == CHOLMOD_NESDIS  ? "NESDIS"
+                    : ord == CHOLMOD_AMD     ? "AMD"
+                    : ord == CHOLMOD_COLAMD  ? "COLAMD"
+                    : ord == CHOLMOD_NATURAL ? "natural"
+                                             : "other";
   stats_.flops = common_.fl;
   stats_.nnz_factor = common_.lnz;
   stats_.analyze_s += t.seconds();

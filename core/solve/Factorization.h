@@ -11,9 +11,9 @@ namespace rollsim {
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 struct FactorStats {
-  std::string ordering;      // e.g. "RCM", "AMD", "METIS"
-  double nnz_factor = 0;     // stored entries of L (skyline: profile incl. diagonal)
-  double flops = 0;          // floating-point operations of one numeric factorization
+  std::string ordering;                                // e.g. "RCM", "AMD", "METIS"
+  double nnz_factor = 0;                               // stored entries of L (skyline: profile incl. diagonal)
+  double flops = 0;                                    // floating-point operations of one numeric factorization
   double analyze_s = 0, factorize_s = 0, solve_s = 0;  // accumulated wall times
   long factorizations = 0;
 };

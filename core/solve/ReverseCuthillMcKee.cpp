@@ -142,8 +142,10 @@ std::vector<int> skyline_first_rows(const SparseMatrix& A, const std::vector<int
   for (int c = 0; c < n; ++c)
     for (SparseMatrix::InnerIterator it(A, c); it; ++it) {
       const int i = inverse[it.row()], j = inverse[c];
-      if (i < j) first[j] = std::min(first[j], i);
-      else first[i] = std::min(first[i], j);  // mirror: tolerate a pattern that is not exactly symmetric
+      if (i < j)
+        first[j] = std::min(first[j], i);
+      else
+        first[i] = std::min(first[i], j);  // mirror: tolerate a pattern that is not exactly symmetric
     }
   return first;
 }

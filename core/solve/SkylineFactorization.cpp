@@ -2,9 +2,9 @@
 #include "solve/SkylineFactorization.h"
 
 #include <algorithm>
-#include <numeric>
 #include <array>
 #include <cmath>
+#include <numeric>
 
 #include "solve/ReverseCuthillMcKee.h"
 #include "solve/Stopwatch.h"
@@ -99,7 +99,7 @@ long SkylineFactorization::reduce_block_rows(int j0, int nb) {
       shared = std::max(shared, first_[j]);
       ++active;
     }
-    if (active < kBlock) shared = i;  // no fused part: each active column does its own dot product below
+    if (active < kBlock) shared = i;      // no fused part: each active column does its own dot product below
     for (int j = j0; j < j0 + nb; ++j) {  // the parts of the overlaps before `shared`
       const int k0 = std::max(first_[i], first_[j]);
       if (first_[j] > i || k0 >= shared) continue;
@@ -167,8 +167,8 @@ void SkylineFactorization::factorize(const SparseMatrix& A) {
   stats_.factorize_s += t.seconds();
   ++stats_.factorizations;
   if (failed >= 0)
-    throw SingularMatrix("zero pivot in skyline LDL^T at column " + std::to_string(perm_[failed]) + " (pivot "
-                             + std::to_string(failed) + " of " + std::to_string(n_) + ")",
+    throw SingularMatrix("zero pivot in skyline LDL^T at column " + std::to_string(perm_[failed]) + " (pivot " +
+                             std::to_string(failed) + " of " + std::to_string(n_) + ")",
                          perm_[failed]);
   factored_ = true;
 }

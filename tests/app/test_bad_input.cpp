@@ -33,7 +33,8 @@ struct Case {
 };
 
 Case edit(std::string name, std::function<void(json&)> f, std::vector<std::string> expected) {
-  return {std::move(name), [f] {
+  return {std::move(name),
+          [f] {
             json j = json::parse(kValid);
             f(j);
             return j.dump(1);
@@ -71,14 +72,15 @@ std::vector<Case> cases() {
       edit("object for array", [](json& j) { j["bodies"] = json::object(); }, {"bodies", "array"}),
       edit("array for object", [](json& j) { j["bodies"][0]["mesh"] = json::array(); }, {"bodies[0].mesh"}),
       edit("bool for integer", [](json& j) { j["bodies"][0]["mesh"]["nx"] = true; }, {"bodies[0].mesh.nx"}),
-      edit("huge 2D counts", [](json& j) { j["bodies"][0]["mesh"]["nx"] = 100000, j["bodies"][0]["mesh"]["ny"] = 100000; },
+      edit("huge 2D counts",
+           [](json& j) { j["bodies"][0]["mesh"]["nx"] = 100000, j["bodies"][0]["mesh"]["ny"] = 100000; },
            {"bodies", "elements, more than this build accepts"}),
       edit("count beyond range", [](json& j) { j["bodies"][0]["mesh"]["nx"] = 1e12; }, {"bodies[0].mesh.nx"}),
       edit("huge 3D counts",
            [](json& j) {
              j["dimension"] = 3;
              j["bodies"][0]["mesh"] = {{"type", "block"}, {"nx", 10000}, {"ny", 10000}, {"nz", 10000},
-                                       {"lx", 1}, {"ly", 1}, {"lz", 1}};
+                                       {"lx", 1},         {"ly", 1},     {"lz", 1}};
              j["bodies"][0]["node_sets"] = json::array();
              j["boundary_conditions"] = json::array();
              j["probes"] = json::array();
@@ -95,7 +97,8 @@ std::vector<Case> cases() {
            },
            {"more than this build accepts"}),
       edit("missing required", [](json& j) { j["materials"][0].erase("E"); }, {"materials[0].E", "required"}),
-      edit("unknown field", [](json& j) { j["bodies"][0]["mesh"]["nxx"] = 3; }, {"bodies[0].mesh.nxx", "unknown field"}),
+      edit("unknown field", [](json& j) { j["bodies"][0]["mesh"]["nxx"] = 3; },
+           {"bodies[0].mesh.nxx", "unknown field"}),
       edit("unknown mesh type", [](json& j) { j["bodies"][0]["mesh"]["type"] = "sphere"; },
            {"bodies[0].mesh.type", "block", "sphere"}),
       edit("unknown bc type", [](json& j) { j["boundary_conditions"][0]["type"] = "glue"; },
@@ -110,22 +113,33 @@ std::vector<Case> cases() {
              j["probes"] = json::array();
            },
            {"bodies[0].mesh.nz", "required in a 3D model"}),
-      edit("probe of wrong length", [](json& j) { j["probes"][0]["at"] = {1, 2, 3}; },
+      edit("probe of wrong length",
+           [](json& j) {
+             j["probes"][0]["at"] = {1, 2, 3};
+           },
            {"probes[0].at", "array of 2 finite numbers"}),
       edit("no such set", [](json& j) { j["boundary_conditions"][1]["set"] = "tipp"; },
            {"boundary_conditions[1].set", "no node set 'tipp'", "available"}),
-      edit("no such surface",
-           [](json& j) { j["boundary_conditions"].push_back({{"type", "pressure"}, {"body", "b"}, {"surface", "top"}, {"value", 1}}); },
-           {"boundary_conditions[2].surface", "no surface 'top'"}),
+      edit(
+          "no such surface",
+          [](json& j) {
+            j["boundary_conditions"].push_back({{"type", "pressure"}, {"body", "b"}, {"surface", "top"}, {"value", 1}});
+          },
+          {"boundary_conditions[2].surface", "no surface 'top'"}),
       edit("no such body", [](json& j) { j["boundary_conditions"][0]["body"] = "roll"; },
            {"boundary_conditions[0].body", "no body named 'roll'"}),
       edit("no such material", [](json& j) { j["bodies"][0]["material"] = "steel"; },
            {"bodies[0].material", "no material named 'steel'"}),
       edit("duplicate body", [](json& j) { j["bodies"].push_back(j["bodies"][0]); }, {"bodies[1].name", "duplicate"}),
-      edit("set with nearest and box", [](json& j) { j["bodies"][0]["node_sets"][0]["box_min"] = {0, 0}; },
+      edit("set with nearest and box",
+           [](json& j) {
+             j["bodies"][0]["node_sets"][0]["box_min"] = {0, 0};
+           },
            {"bodies[0].node_sets[0]", "either"}),
       edit("empty box",
-           [](json& j) { j["bodies"][0]["node_sets"][0] = {{"name", "tip"}, {"box_min", {10, 10}}, {"box_max", {11, 11}}}; },
+           [](json& j) {
+             j["bodies"][0]["node_sets"][0] = {{"name", "tip"}, {"box_min", {10, 10}}, {"box_max", {11, 11}}};
+           },
            {"bodies[0].node_sets[0]", "no node"}),
       edit("nu = 0.5", [](json& j) { j["materials"][0]["nu"] = 0.5; }, {"materials[0].nu", "(-1, 0.5)"}),
       edit("E = 0", [](json& j) { j["materials"][0]["E"] = 0; }, {"materials[0].E", "> 0"}),
@@ -135,8 +149,12 @@ std::vector<Case> cases() {
            {"bodies[0]", "body 'b'", "rigid body"}),
       edit("plate radius too big",
            [](json& j) {
-             j["bodies"][0]["mesh"] = {{"type", "plate_with_hole"}, {"width", 1}, {"height", 1}, {"radius", 2},
-                                       {"n_around", 4}, {"n_radial", 2}};
+             j["bodies"][0]["mesh"] = {{"type", "plate_with_hole"},
+                                       {"width", 1},
+                                       {"height", 1},
+                                       {"radius", 2},
+                                       {"n_around", 4},
+                                       {"n_radial", 2}};
              j["bodies"][0]["node_sets"] = json::array();
              j["boundary_conditions"] = {{{"type", "symmetry"}, {"body", "b"}, {"set", "left"}, {"normal", "x"}}};
            },
@@ -163,7 +181,8 @@ TEST_P(BadInput, ExitTwoWithPathAndNoOutput) {
     EXPECT_EQ(r.signal, 0) << cmd;
     EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.err;
     EXPECT_EQ(r.out, "") << cmd;
-    for (const auto& fragment : c.expected) EXPECT_NE(r.err.find(fragment), std::string::npos) << fragment << "\n" << r.err;
+    for (const auto& fragment : c.expected)
+      EXPECT_NE(r.err.find(fragment), std::string::npos) << fragment << "\n" << r.err;
   }
   EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out)) << "output written for invalid input";
   fs::remove_all(dir);
@@ -214,8 +233,8 @@ TEST(BadInputSingular, MechanismNamesTheBodyAndItsFreeModes) {
   std::ofstream(dir + "/p.json") << j.dump();
   const RunResult r = run_rollsim({"run", dir + "/p.json", "--out", dir + "/out", "--quiet"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  for (const char* f : {"bodies[0]", "body 'b' is not held against 2 rigid-body mode(s)", "translation along y",
-                        "rotation about z"})
+  for (const char* f :
+       {"bodies[0]", "body 'b' is not held against 2 rigid-body mode(s)", "translation along y", "rotation about z"})
     EXPECT_NE(r.err.find(f), std::string::npos) << f << "\n" << r.err;
   EXPECT_FALSE(fs::exists(dir + "/out/summary.json"));
   fs::remove_all(dir);

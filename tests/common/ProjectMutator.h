@@ -18,8 +18,9 @@ inline const char* kSeed = R"({"dimension": 2, "materials": [{"name": "m", "E": 
  "solver": {"mode": "skyline", "threads": 1}, "probes": [{"name": "A", "at": [4, 3], "body": "b"}],
  "output": {"vtu": false}})";
 
-inline const char* kTokens[] = {"-1", "0", "1e308", "-1e308", "1e-308", "2147483648", "4294967297", "\"\"", "\"x\"", "null",
-                         "true", "[]", "{}", "[1,2,3]", "0.5", "-0", "1e6", "\"all\"", "\"block\"", "3"};
+inline const char* kTokens[] = {"-1",   "0",     "1e308", "-1e308",  "1e-308",    "2147483648", "4294967297",
+                                "\"\"", "\"x\"", "null",  "true",    "[]",        "{}",         "[1,2,3]",
+                                "0.5",  "-0",    "1e6",   "\"all\"", "\"block\"", "3"};
 
 inline std::string mutate(std::string s, std::mt19937& rng) {
   auto pick = [&](size_t n) { return static_cast<size_t>(std::uniform_int_distribution<size_t>(0, n - 1)(rng)); };
@@ -27,11 +28,19 @@ inline std::string mutate(std::string s, std::mt19937& rng) {
   for (int e = 0; e < edits && !s.empty(); ++e) {
     const size_t at = pick(s.size());
     switch (pick(6)) {
-      case 0: s[at] = static_cast<char>(pick(128)); break;                      // byte flip
-      case 1: s.erase(at, 1 + pick(20)); break;                                 // deletion
-      case 2: s.insert(at, s.substr(pick(s.size()), 1 + pick(30))); break;      // duplication
-      case 3: s.resize(at); break;                                              // truncation
-      case 4: {                                                                 // a number -> an extreme token
+      case 0:
+        s[at] = static_cast<char>(pick(128));
+        break;  // byte flip
+      case 1:
+        s.erase(at, 1 + pick(20));
+        break;  // deletion
+      case 2:
+        s.insert(at, s.substr(pick(s.size()), 1 + pick(30)));
+        break;  // duplication
+      case 3:
+        s.resize(at);
+        break;   // truncation
+      case 4: {  // a number -> an extreme token
         const size_t d = s.find_first_of("0123456789", at);
         if (d != std::string::npos) {
           const size_t end = s.find_first_not_of("0123456789.e-", d);
@@ -39,7 +48,7 @@ inline std::string mutate(std::string s, std::mt19937& rng) {
         }
         break;
       }
-      default: {                                                                // a string value -> a token
+      default: {  // a string value -> a token
         const size_t q = s.find("\": ", at);
         if (q != std::string::npos) {
           const size_t end = s.find_first_of(",}]", q + 3);

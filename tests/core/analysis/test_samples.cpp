@@ -74,7 +74,8 @@ TEST_P(SampleTest, SkylineEqualsDirectAndMatchesGolden) {
     const auto& us = skyline.results.bodies[b].displacement;
     EXPECT_LE((us - ud).cwiseAbs().maxCoeff(), 1e-10 * ud.cwiseAbs().maxCoeff()) << model.bodies[b].name;
   }
-  const json got = golden_view(make_summary(model, direct.results, direct.stats, {project.name(), "direct", 1e-4, 1, ""}));
+  const json got =
+      golden_view(make_summary(model, direct.results, direct.stats, {project.name(), "direct", 1e-4, 1, ""}));
   const fs::path golden = fs::path(ROLLSIM_SOURCE_DIR) / "tests" / "golden" / (project.name() + ".json");
   if (std::getenv("ROLLSIM_UPDATE_GOLDEN")) {
     std::ofstream(golden) << got.dump(2) << "\n";

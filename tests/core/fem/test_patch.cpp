@@ -20,7 +20,9 @@ bool on_boundary(const std::array<double, 3>& x, int dim) {
 
 // Linear field u_i = sum_j G_ij x_j + c_i
 const double G[3][3] = {{1e-3, 2e-3, -1e-3}, {-3e-3, 0.5e-3, 2e-3}, {1.5e-3, -1e-3, 2.5e-3}};
-double field(const std::array<double, 3>& x, int i) { return G[i][0] * x[0] + G[i][1] * x[1] + G[i][2] * x[2] + 0.01 * i; }
+double field(const std::array<double, 3>& x, int i) {
+  return G[i][0] * x[0] + G[i][1] * x[1] + G[i][2] * x[2] + 0.01 * i;
+}
 
 Model distorted_patch(int dim, Formulation f) {
   Model m;

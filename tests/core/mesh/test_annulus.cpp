@@ -145,10 +145,12 @@ TEST(Annulus, PartialSpanHasRadialEdges) {
 }
 
 TEST(Annulus, PositiveOrientationForVariousSpans) {
-  const std::vector<AnnulusSpec> specs = {
-      {}, {1.0, 2.0, 1e-3, 0.3, 6, 40, 0.0, 360.0}, {0.0, 0.0, 1.0, 1.5, 2, 3, 10.0, 350.0},
-      {0.0, 0.0, 0.2, 1.0, 4, 8, -45.0, 45.0}, {5.0, 5.0, 0.9, 1.0, 1, 3, -180.0, 180.0},
-      {0.0, 0.0, 0.5, 1.0, 3, 1, 200.0, 300.0}};
+  const std::vector<AnnulusSpec> specs = {{},
+                                          {1.0, 2.0, 1e-3, 0.3, 6, 40, 0.0, 360.0},
+                                          {0.0, 0.0, 1.0, 1.5, 2, 3, 10.0, 350.0},
+                                          {0.0, 0.0, 0.2, 1.0, 4, 8, -45.0, 45.0},
+                                          {5.0, 5.0, 0.9, 1.0, 1, 3, -180.0, 180.0},
+                                          {0.0, 0.0, 0.5, 1.0, 3, 1, 200.0, 300.0}};
   for (const auto& s : specs) {
     const Mesh m = make_annulus(s);
     EXPECT_NO_THROW(check_element_orientation(m)) << s.theta0 << ".." << s.theta1;
@@ -163,12 +165,14 @@ TEST(Annulus, AreaConvergesSecondOrder) {
     for (int level = 0; level < 5; ++level) {
       const double area = mesh_area(make_annulus(s));
       const double delta = (t1 - t0) / s.n_around * std::numbers::pi / 180.0;  // the exact polygon area:
-      const double polygon = 0.5 * s.n_around * std::sin(delta) *
-                             (s.outer_radius * s.outer_radius - s.inner_radius * s.inner_radius);
+      const double polygon =
+          0.5 * s.n_around * std::sin(delta) * (s.outer_radius * s.outer_radius - s.inner_radius * s.inner_radius);
       EXPECT_NEAR(area, polygon, 1e-13);
       const double err = exact_area(s) - area;
       EXPECT_GT(err, 0.0);  // outer polygon inscribed: too little area
-      if (level > 0) { EXPECT_NEAR(previous / err, 4.0, 0.1) << t0 << ".." << t1 << " level " << level; }
+      if (level > 0) {
+        EXPECT_NEAR(previous / err, 4.0, 0.1) << t0 << ".." << t1 << " level " << level;
+      }
       previous = err;
       s.n_around *= 2;
       s.n_radial *= 2;
@@ -209,7 +213,9 @@ TEST(Annulus, FacetNormalsPointOutOfTheMaterial) {
         if (name == "inner") {
           EXPECT_GT(-radial, 0.99);  // towards the centre
         }
-        if (name == "outer") { EXPECT_GT(radial, 0.99); }
+        if (name == "outer") {
+          EXPECT_GT(radial, 0.99);
+        }
         if (name == "start") {
           EXPECT_NEAR(n[0] * std::sin(t0) - n[1] * std::cos(t0), len, 1e-12);  // -e_theta
         }

@@ -169,7 +169,9 @@ TEST(Cylinder, VolumeConvergesSecondOrder) {
     for (int level = 0; level < 4; ++level) {
       const double err = exact_volume(s) - mesh_volume(make_cylinder(s));
       EXPECT_GT(err, 0.0);
-      if (level > 0) { EXPECT_NEAR(previous / err, 4.0, 0.1) << t0 << ".." << t1 << " level " << level; }
+      if (level > 0) {
+        EXPECT_NEAR(previous / err, 4.0, 0.1) << t0 << ".." << t1 << " level " << level;
+      }
       previous = err;
       s.n_around *= 2;
       s.n_radial *= 2;
@@ -214,8 +216,12 @@ TEST(Cylinder, FaceNormalsPointOutOfTheMaterial) {
         if (name == "inner") {
           EXPECT_GT(-dot(unit, radial) / norm(radial), 0.99);  // towards the axis
         }
-        if (name == "outer") { EXPECT_GT(dot(unit, radial) / norm(radial), 0.99); }
-        if (axis_and_ends.count(name)) { EXPECT_NEAR(dot(unit, axis_and_ends.at(name)), 1.0, 1e-12) << name; }
+        if (name == "outer") {
+          EXPECT_GT(dot(unit, radial) / norm(radial), 0.99);
+        }
+        if (axis_and_ends.count(name)) {
+          EXPECT_NEAR(dot(unit, axis_and_ends.at(name)), 1.0, 1e-12) << name;
+        }
       }
   }
 }
@@ -223,8 +229,8 @@ TEST(Cylinder, FaceNormalsPointOutOfTheMaterial) {
 TEST(Cylinder, EndSectionMatchesTheAnnulusInTheXZPlane) {
   const CylinderSpec c{0.3, -0.2, 0.0, 1.0, 0.5, 1.0, 3, 10, 2, -60.0, 120.0};
   const Mesh cyl = make_cylinder(c);
-  const Mesh ann = make_annulus({c.cx, c.cz, c.inner_radius, c.outer_radius, c.n_radial, c.n_around, c.theta0,
-                                 c.theta1});
+  const Mesh ann =
+      make_annulus({c.cx, c.cz, c.inner_radius, c.outer_radius, c.n_radial, c.n_around, c.theta0, c.theta1});
   std::vector<std::array<double, 2>> a, b;
   for (int n : cyl.node_sets.at("ymin")) a.push_back({cyl.nodes[n][0], cyl.nodes[n][2]});
   for (const auto& p : ann.nodes) b.push_back({p[0], p[1]});

@@ -115,9 +115,12 @@ TEST(PlateWithHole, CountsAndSets) {
 }
 
 TEST(PlateWithHole, PositiveOrientationForVariousShapes) {
-  const std::vector<PlateWithHoleSpec> specs = {
-      {}, {10.0, 1.0, 0.9, 8, 4, 1.0}, {1.0, 5.0, 0.5, 6, 10, 1.3}, {2.0, 2.0, 1.9, 2, 1, 1.0},
-      {3.0, 1.0, 0.2, 40, 3, 2.0}, {1.0, 1.0, 0.01, 16, 20, 1.25}};
+  const std::vector<PlateWithHoleSpec> specs = {{},
+                                                {10.0, 1.0, 0.9, 8, 4, 1.0},
+                                                {1.0, 5.0, 0.5, 6, 10, 1.3},
+                                                {2.0, 2.0, 1.9, 2, 1, 1.0},
+                                                {3.0, 1.0, 0.2, 40, 3, 2.0},
+                                                {1.0, 1.0, 0.01, 16, 20, 1.25}};
   for (const auto& s : specs) {
     const Mesh m = make_plate_with_hole(s);
     EXPECT_NO_THROW(check_element_orientation(m)) << s.half_width << " " << s.half_height << " " << s.hole_radius;
@@ -132,7 +135,9 @@ TEST(PlateWithHole, AreaConvergesSecondOrder) {
   for (int level = 0; level < 5; ++level) {
     const double err = mesh_area(make_plate_with_hole(s)) - exact;
     EXPECT_GT(err, 0.0);  // the inscribed polygon misses the circular segments of the hole
-    if (level > 0) { EXPECT_NEAR(previous / err, 4.0, 0.1) << "level " << level; }
+    if (level > 0) {
+      EXPECT_NEAR(previous / err, 4.0, 0.1) << "level " << level;
+    }
     previous = err;
     s.n_around *= 2;
     s.n_radial *= 2;
@@ -214,8 +219,8 @@ TEST(PlateWithHole, GradingGrowsRadialSizesGeometrically) {
 }
 
 TEST(PlateWithHole, NumberingKeepsBandwidthSmall) {
-  EXPECT_LE(bandwidth(make_plate_with_hole({1.0, 1.0, 0.3, 40, 4, 1.0})), 4 + 2);   // radial fastest
-  EXPECT_LE(bandwidth(make_plate_with_hole({1.0, 1.0, 0.3, 4, 30, 1.0})), 4 + 2);   // around fastest
+  EXPECT_LE(bandwidth(make_plate_with_hole({1.0, 1.0, 0.3, 40, 4, 1.0})), 4 + 2);  // radial fastest
+  EXPECT_LE(bandwidth(make_plate_with_hole({1.0, 1.0, 0.3, 4, 30, 1.0})), 4 + 2);  // around fastest
   EXPECT_LE(bandwidth(make_plate_with_hole({1.0, 1.0, 0.3, 6, 6, 1.0})), 6 + 2);
 }
 

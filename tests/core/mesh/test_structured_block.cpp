@@ -159,8 +159,8 @@ TEST(StructuredBlock, NamedNodesLieOnTheirFaces) {
         const auto& set = m.node_sets.at(names[d][side]);
         EXPECT_EQ(set.size(), on_face) << names[d][side];
         for (int n : set) EXPECT_NEAR(m.nodes[n][d], x, 1e-12) << names[d][side];
-        const auto count = std::count_if(m.nodes.begin(), m.nodes.end(),
-                                         [&](const Vec& p) { return std::abs(p[d] - x) < 1e-12; });
+        const auto count =
+            std::count_if(m.nodes.begin(), m.nodes.end(), [&](const Vec& p) { return std::abs(p[d] - x) < 1e-12; });
         EXPECT_EQ(static_cast<size_t>(count), on_face) << names[d][side];
       }
     }
@@ -168,7 +168,7 @@ TEST(StructuredBlock, NamedNodesLieOnTheirFaces) {
 }
 
 TEST(StructuredBlock, FacetNormalsPointOutward) {
-  const std::map<std::string, Vec> expected = {{"xmin", {-1, 0, 0}}, {"xmax", {1, 0, 0}}, {"ymin", {0, -1, 0}},
+  const std::map<std::string, Vec> expected = {{"xmin", {-1, 0, 0}}, {"xmax", {1, 0, 0}},  {"ymin", {0, -1, 0}},
                                                {"ymax", {0, 1, 0}},  {"zmin", {0, 0, -1}}, {"zmax", {0, 0, 1}}};
   for (const BlockSpec& s : {block2(4, 3), block3(3, 2, 2)}) {
     const Mesh m = make_block(s);

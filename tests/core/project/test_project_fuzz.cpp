@@ -6,15 +6,13 @@
 #include <random>
 #include <sstream>
 
+#include "../../common/ProjectMutator.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
-#include "../../common/ProjectMutator.h"
 
 using namespace rollsim;
 using fuzz::kSeed;
 using fuzz::mutate;
-
-
 
 TEST(ProjectFuzz, SeedIsValid) { EXPECT_NO_THROW(build_model(parse_project(kSeed, "seed"))); }
 

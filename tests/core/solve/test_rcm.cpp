@@ -108,10 +108,10 @@ TEST(RcmTest, TrailingRowsStayLastInOrder) {
 
 TEST(RcmTest, DisconnectedComponentsAreEachContiguous) {
   Triplets t;
-  add_grid(t, 7, 5, 0);    // nodes 0..34
-  add_grid(t, 4, 6, 35);   // nodes 35..58
+  add_grid(t, 7, 5, 0);         // nodes 0..34
+  add_grid(t, 4, 6, 35);        // nodes 35..58
   t.emplace_back(59, 59, 1.0);  // an isolated node
-  add_grid(t, 3, 3, 60);   // nodes 60..68
+  add_grid(t, 3, 3, 60);        // nodes 60..68
   const std::vector<int> map = random_map(69, 11);
   const SparseMatrix A = relabelled(from_triplets(69, t), map);
   const std::vector<int> perm = reverse_cuthill_mckee(A);
