@@ -17,7 +17,6 @@ class Assembler {
 
   /// K_ff (both triangles stored) and the load from prescribed dofs, f_D = -K_fp u_p.
   void assemble(SparseMatrix& K, Eigen::VectorXd& f_dirichlet) const;
-  const SparseMatrix& pattern() const { return pattern_; }
 
  private:
   const Body& body_;
