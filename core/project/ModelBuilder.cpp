@@ -1,5 +1,6 @@
 #include "project/ModelBuilder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -89,6 +90,18 @@ void check_condition(const json& bc, const std::string& path, const json& bodies
   }
 }
 
+// The name is the default output directory results/<name>: it must stay one plain directory name.
+void check_project_name(const json& project, std::vector<Issue>& issues) {
+  const auto name = project.at("name").get<std::string>();
+  const bool plain = name != "." && name != ".." && std::none_of(name.begin(), name.end(), [](char c) {
+                       return c == '/' || c == '\\' || static_cast<unsigned char>(c) < 0x20;
+                     });
+  if (!plain)
+    issues.push_back(
+        {"name", "must be usable as a directory name (no '/', '\\', control characters, '.' or '..'), got " +
+                     describe(project.at("name"))});
+}
+
 void check_supports(const json& project, std::vector<Issue>& issues) {
   const json& bodies = project.at("bodies");
   for (size_t b = 0; b < bodies.size(); ++b) {
@@ -108,6 +121,7 @@ void check_supports(const json& project, std::vector<Issue>& issues) {
 void check_references(const Project& project, std::vector<Issue>& issues) {
   const json& d = project.data;
   const int dim = project.dimension();
+  check_project_name(d, issues);
   check_unique(d.at("materials"), "materials", issues);
   check_unique(d.at("bodies"), "bodies", issues);
   check_unique(d.at("probes"), "probes", issues);

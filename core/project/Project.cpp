@@ -60,6 +60,16 @@ void check_nesting(const std::string& text, const std::string& source) {
     }
   }
 }
+
+// nlohmann reports "number overflow parsing '1e400'" without a position: locate the literal in the text.
+std::string number_overflow(const std::string& text, const std::string& what) {
+  const auto open = what.find('\''), close = what.rfind('\'');
+  if (open == std::string::npos || close <= open) return "not valid JSON: " + what;
+  const std::string literal = what.substr(open + 1, close - open - 1);
+  const auto at = text.find(literal);
+  return "not valid JSON" + (at == std::string::npos ? std::string() : " at " + line_column(text, at)) + ": number " +
+         literal + " is beyond the range of a double";
+}
 }  // namespace
 
 ProjectError::ProjectError(std::string source, std::vector<Issue> issues)
@@ -74,6 +84,8 @@ Project parse_project(const std::string& text, const std::string& source) {
   } catch (const json::parse_error& e) {
     throw ProjectError(source, {{"", "not valid JSON at " + line_column(text, e.byte ? e.byte - 1 : 0) + ": " +
                                          parse_reason(e.what())}});
+  } catch (const json::out_of_range& e) {
+    throw ProjectError(source, {{"", number_overflow(text, e.what())}});
   } catch (const json::exception& e) {
     throw ProjectError(source, {{"", std::string("not valid JSON: ") + e.what()}});
   }

@@ -1,16 +1,27 @@
 #pragma once
-// Runs the real rollsim binary with arguments, capturing exit status and output; kills it after a timeout.
+// Runs the real rollsim binary with arguments, capturing exit status, output and time; kills it after a timeout.
 #include <string>
 #include <vector>
 
 struct RunResult {
   int exit_code = -1;  // -1: killed by a signal or timed out
-  int signal = 0;
+  int signal = 0;      // the terminating signal, 0 if it exited
   bool timed_out = false;
+  double seconds = 0;  // wall time
   std::string out, err;
 };
 
+/// Spawns ROLLSIM_BINARY with `args` (stdin: /dev/null), waits at most `timeout_s` seconds (then SIGKILL).
 RunResult run_rollsim(const std::vector<std::string>& args, int timeout_s = 60);
 
 /// A fresh empty directory under the system temp dir.
 std::string make_temp_dir(const std::string& tag);
+
+/// The whole content of a file ("" if it cannot be read).
+std::string read_text(const std::string& path);
+
+/// Writes `text` to `path` (binary, truncating).
+void write_text(const std::string& path, const std::string& text);
+
+/// The names of the entries of a directory, hidden ones included (empty if it does not exist).
+std::vector<std::string> list_dir(const std::string& dir);
