@@ -1,8 +1,8 @@
 // `rollsim bench`: per-stage times (pattern, values, analyze, factorize, solve) of `skyline` vs
 // CHOLMOD on the same assembled systems, medians of repeated runs, factor size and flops.
 #include <algorithm>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 
@@ -13,6 +13,7 @@
 #include "project/Project.h"
 #include "solve/Blas.h"
 #include "solve/Factorization.h"
+#include "solve/SkylineFactorization.h"
 #include "solve/Stopwatch.h"
 
 namespace rollsim::app {
@@ -31,7 +32,7 @@ double median(std::vector<double> v) {
 struct Row {
   std::string sample, solver, ordering;
   long dofs = 0;
-  double nnz = 0, flops = 0;
+  double nnz = 0, flops = 0, counted_flops = -1;  // counted: skyline only
   StageTimes t;
   double max_rel_diff = 0;
 };
@@ -60,6 +61,8 @@ Eigen::VectorXd run_once(const Model& model, const std::string& kind, StageTimes
   row.ordering = st.ordering;
   row.nnz = st.nnz_factor;
   row.flops = st.flops;
+  if (const auto* sky = dynamic_cast<const SkylineFactorization*>(factor.get()))
+    row.counted_flops = sky->counted_flops();
   row.dofs = K.rows();
   return u;
 }
@@ -75,9 +78,59 @@ Row bench(const std::string& file, const Model& model, const std::string& kind, 
     for (const auto& t : runs) v.push_back(t.*m);
     return median(v);
   };
-  row.t = {med(&StageTimes::pattern), med(&StageTimes::values), med(&StageTimes::analyze),
-           med(&StageTimes::factorize), med(&StageTimes::solve)};
+  row.t = {med(&StageTimes::pattern), med(&StageTimes::values), med(&StageTimes::analyze), med(&StageTimes::factorize),
+           med(&StageTimes::solve)};
   return row;
+}
+
+std::string short_ordering(const Row& r) { return r.ordering.substr(0, r.ordering.find(' ')); }
+
+std::string counted(const Row& r) {
+  char buf[32];
+  if (r.counted_flops < 0) return "-";
+  std::snprintf(buf, sizeof buf, "%.17g", r.counted_flops);
+  return buf;
+}
+
+void print_table(const std::vector<Row>& rows) {
+  std::printf("%-24s %-8s %6s %-8s %10s %10s %10s %8s %8s %8s %9s %8s %9s\n", "sample", "solver", "dofs", "ordering",
+              "nnz(L)", "flops", "counted", "pattern", "values", "analyze", "factorize", "solve", "max diff");
+  for (const Row& r : rows) {
+    char count[32] = "-";
+    if (r.counted_flops >= 0) std::snprintf(count, sizeof count, "%.4g", r.counted_flops);
+    std::printf("%-24s %-8s %6ld %-8s %10.4g %10.4g %10s %8.4f %8.4f %8.4f %9.4f %8.4f %9.2e\n", r.sample.c_str(),
+                r.solver.c_str(), r.dofs, short_ordering(r).c_str(), r.nnz, r.flops, count, r.t.pattern, r.t.values,
+                r.t.analyze, r.t.factorize, r.t.solve, r.max_rel_diff);
+  }
+}
+
+bool write_csv(const std::string& file, const std::vector<Row>& rows) {
+  std::ofstream csv(file);
+  csv << "sample,solver,dofs,ordering,nnz_factor,flops,counted_flops,pattern_s,values_s,analyze_s,factorize_s,"
+         "solve_s,max_rel_diff\n";
+  csv.precision(17);
+  for (const Row& r : rows)
+    csv << r.sample << "," << r.solver << "," << r.dofs << "," << short_ordering(r) << "," << r.nnz << "," << r.flops
+        << "," << counted(r) << "," << r.t.pattern << "," << r.t.values << "," << r.t.analyze << "," << r.t.factorize
+        << "," << r.t.solve << "," << r.max_rel_diff << "\n";
+  return static_cast<bool>(csv);
+}
+
+/// The two invariants of the comparison: skyline counted flops == predicted, solutions equal to 1e-10.
+bool consistent(const std::vector<Row>& rows) {
+  bool ok = true;
+  for (const Row& r : rows) {
+    if (r.counted_flops >= 0 && r.counted_flops != r.flops) {
+      std::fprintf(stderr, "rollsim: bench %s: counted flops %.17g != predicted %.17g\n", r.sample.c_str(),
+                   r.counted_flops, r.flops);
+      ok = false;
+    }
+    if (!(r.max_rel_diff < 1e-10)) {
+      std::fprintf(stderr, "rollsim: bench %s: skyline and CHOLMOD differ by %.3e\n", r.sample.c_str(), r.max_rel_diff);
+      ok = false;
+    }
+  }
+  return ok;
 }
 
 }  // namespace
@@ -100,25 +153,12 @@ int bench_command(const BenchOptions& o) {
     rows[rows.size() - 1].max_rel_diff = rows[rows.size() - 2].max_rel_diff = diff;
     std::fprintf(stderr, "rollsim: bench %s done\n", file.c_str());
   }
-  std::printf("%-26s %-8s %7s %-8s %11s %11s %8s %8s %8s %9s %8s %9s\n", "sample", "solver", "dofs", "ordering",
-              "nnz(L)", "flops", "pattern", "values", "analyze", "factorize", "solve", "max diff");
-  std::ofstream csv;
-  if (!o.csv.empty()) {
-    csv.open(o.csv);
-    csv << "sample,solver,dofs,ordering,nnz_factor,flops,pattern_s,values_s,analyze_s,factorize_s,solve_s,"
-           "max_rel_diff\n";
+  print_table(rows);
+  if (!o.csv.empty() && !write_csv(o.csv, rows)) {
+    std::fprintf(stderr, "rollsim: error: cannot write %s\n", o.csv.c_str());
+    return 2;
   }
-  for (const Row& r : rows) {
-    const std::string ord = r.ordering.substr(0, r.ordering.find(' '));
-    std::printf("%-26s %-8s %7ld %-8s %11.4g %11.4g %8.4f %8.4f %8.4f %9.4f %8.4f %9.2e\n", r.sample.c_str(),
-                r.solver.c_str(), r.dofs, ord.c_str(), r.nnz, r.flops, r.t.pattern, r.t.values, r.t.analyze,
-                r.t.factorize, r.t.solve, r.max_rel_diff);
-    if (csv)
-      csv << r.sample << "," << r.solver << "," << r.dofs << "," << ord << "," << r.nnz << "," << r.flops << ","
-          << r.t.pattern << "," << r.t.values << "," << r.t.analyze << "," << r.t.factorize << "," << r.t.solve << ","
-          << r.max_rel_diff << "\n";
-  }
-  return 0;
+  return consistent(rows) ? 0 : 1;
 }
 
 }  // namespace rollsim::app

@@ -1,5 +1,6 @@
 // `rollsim export-ccx PROJECT OUT.inp`: the same model as CalculiX input.
 #include <iostream>
+#include <stdexcept>
 
 #include "Commands.h"
 #include "io/AtomicFile.h"
@@ -18,6 +19,9 @@ int export_ccx_command(const std::string& project, const std::string& out) {
     return 2;
   } catch (const std::invalid_argument& e) {
     std::cerr << "rollsim: error: " << project << ": " << e.what() << "\n";
+    return 2;
+  } catch (const std::runtime_error& e) {  // the output file cannot be written
+    std::cerr << "rollsim: error: " << e.what() << "\n";
     return 2;
   }
   std::cout << out << "\n";

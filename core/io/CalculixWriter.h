@@ -1,13 +1,17 @@
 #pragma once
 // CalculiX (.inp) input for the same model — same mesh, elements (CPE4 / C3D8), materials,
-// supports and nodal forces — so results and run time can be compared with a peer FE code.
+// supports, nodal forces and pressures — so results and run time can be compared with a peer FE code.
 #include <string>
 
 #include "model/Model.h"
 
 namespace rollsim {
 
-/// Throws std::invalid_argument for what has no translation yet (pressure loads).
+/// Name CalculiX gives (upper case, as printed in its .dat file) to the node set of `set` on `body`.
+std::string calculix_set_name(const Model& model, int body, const std::string& set);
+
+/// The whole .inp: node ids are our node index + 1 (bodies numbered one after the other), element ids likewise.
+/// Throws std::invalid_argument for what has no CalculiX equivalent (the B-bar formulation).
 std::string calculix_input(const Model& model);
 
 }  // namespace rollsim
