@@ -62,9 +62,9 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
     return res;
   }
   obs.on_stage("solve");
-  std::vector<Eigen::VectorXd> u;
+  BlockSolution sol;
   try {
-    u = solver.solve(sys);
+    sol = solver.solve(sys, &obs);
   } catch (const SingularMatrix& e) {
     throw UnsupportedBody(describe_singular(model, dofs, e.column));
   }
@@ -75,7 +75,7 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   obs.on_stage("recover");
   Stopwatch tr;
   for (size_t b = 0; b < model.bodies.size(); ++b)
-    res.bodies.push_back(recover(model, static_cast<int>(b), dofs[b]->expand(u[b])));
+    res.bodies.push_back(recover(model, static_cast<int>(b), dofs[b]->expand(sol.u[b])));
   res.timing.recovery_s = tr.seconds();
   res.timing.total_s = total.seconds();
   return res;

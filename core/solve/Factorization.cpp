@@ -3,11 +3,13 @@
 
 #include "solve/CholmodFactorization.h"
 #include "solve/SkylineFactorization.h"
+#include "solve/UmfpackFactorization.h"
 
 namespace rollsim {
 
-std::unique_ptr<Factorization> make_factorization(const std::string& kind) {
-  if (kind == "skyline") return std::make_unique<SkylineFactorization>();
+std::unique_ptr<Factorization> make_factorization(const std::string& kind, int trailing) {
+  if (kind == "skyline") return std::make_unique<SkylineFactorization>(trailing);
+  if (kind == "cholmod" && trailing > 0) return std::make_unique<UmfpackFactorization>();
   if (kind == "cholmod") return std::make_unique<CholmodFactorization>();
   throw std::invalid_argument("unknown factorization '" + kind + "' (valid: skyline, cholmod)");
 }

@@ -35,6 +35,9 @@ class Factorization {
 };
 
 /// "skyline" (active-column LDL^T with reverse Cuthill-McKee) or "cholmod" (supernodal Cholesky).
-std::unique_ptr<Factorization> make_factorization(const std::string& kind);
+/// `trailing` > 0: the last rows are Lagrange multipliers (a symmetric indefinite saddle-point matrix):
+/// the skyline keeps them last; "cholmod" then hands the matrix to UMFPACK's LU with partial pivoting,
+/// which is safe for it even when a body's stiffness block is singular (a floating body).
+std::unique_ptr<Factorization> make_factorization(const std::string& kind, int trailing = 0);
 
 }  // namespace rollsim

@@ -5,17 +5,30 @@
 namespace rollsim {
 
 namespace {
-SparseMatrix block_diagonal(const BlockSystem& sys) {
-  const long n = sys.num_dofs();
-  std::vector<Eigen::Triplet<double, int>> t;
+using Triplets = std::vector<Eigen::Triplet<double, int>>;
+
+void add_block(Triplets& t, const SparseMatrix& A, long row0, long col0, bool transpose) {
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+      const long r = row0 + (transpose ? j : it.row()), c = col0 + (transpose ? it.row() : j);
+      t.emplace_back(static_cast<int>(r), static_cast<int>(c), it.value());
+    }
+}
+
+/// Paper eq. (1): the groups' K on the diagonal, C and Cᵀ in the border, multipliers last.
+SparseMatrix global_matrix(const BlockSystem& sys) {
+  const long n = sys.num_dofs(), m = sys.num_multipliers();
+  Triplets t;
   long offset = 0;
   for (const Group& g : sys.groups) {
-    for (int j = 0; j < g.K.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(g.K, j); it; ++it)
-        t.emplace_back(static_cast<int>(offset + it.row()), static_cast<int>(offset + j), it.value());
+    add_block(t, g.K, offset, offset, false);
+    if (m > 0) {
+      add_block(t, g.C, n, offset, false);
+      add_block(t, g.C, offset, n, true);
+    }
     offset += g.K.rows();
   }
-  SparseMatrix A(n, n);
+  SparseMatrix A(n + m, n + m);
   A.setFromTriplets(t.begin(), t.end());
   return A;
 }
@@ -23,30 +36,37 @@ SparseMatrix block_diagonal(const BlockSystem& sys) {
 
 GlobalDirect::GlobalDirect(std::string kind) : kind_(std::move(kind)) {}
 
-std::vector<Eigen::VectorXd> GlobalDirect::solve(const BlockSystem& sys) {
-  const SparseMatrix& A = sys.groups.size() == 1 ? sys.groups[0].K : (global_ = block_diagonal(sys));
-  Eigen::VectorXd f(A.rows());
+BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver*) {
+  const long n = sys.num_dofs(), m = sys.num_multipliers();
+  const bool single = sys.groups.size() == 1 && m == 0;
+  const SparseMatrix& A = single ? sys.groups[0].K : (global_ = global_matrix(sys));
+  Eigen::VectorXd f(n + m);
   long offset = 0;
   for (const Group& g : sys.groups) {
     f.segment(offset, g.f.size()) = g.f;
     offset += g.f.size();
   }
-  const bool new_pattern = !factor_ || factor_->stats().factorizations == 0;
-  if (!factor_) factor_ = make_factorization(kind_);
-  if (new_pattern) factor_->analyze(A);
+  f.tail(m) = sys.d;
+  if (!factor_ || factor_size_ != A.rows() || trailing_ != m) {
+    factor_ = make_factorization(kind_, static_cast<int>(m));
+    factor_size_ = A.rows();
+    trailing_ = m;
+    factor_->analyze(A);
+  }
   factor_->factorize(A);
-  const Eigen::VectorXd u = factor_->solve(f);
+  const Eigen::VectorXd x = factor_->solve(f);
   for (const Group& g : sys.groups) ++stats_.factorizations[g.name];
   stats_.factor = factor_->stats();
   stats_.analyze_s = stats_.factor.analyze_s;
   stats_.factorize_s = stats_.factor.factorize_s;
   stats_.solve_s = stats_.factor.solve_s;
-  std::vector<Eigen::VectorXd> out;
+  BlockSolution out;
   offset = 0;
   for (const Group& g : sys.groups) {
-    out.push_back(u.segment(offset, g.f.size()));
+    out.u.push_back(x.segment(offset, g.f.size()));
     offset += g.f.size();
   }
+  out.lambda = x.tail(m);
   return out;
 }
 

@@ -8,13 +8,14 @@ namespace rollsim {
 class GlobalDirect final : public SolverStrategy {
  public:
   explicit GlobalDirect(std::string factorization_kind);
-  std::vector<Eigen::VectorXd> solve(const BlockSystem& system) override;
+  BlockSolution solve(const BlockSystem& system, AnalysisObserver* observer = nullptr) override;
   const SolveStats& stats() const override { return stats_; }
 
  private:
   std::string kind_;
   std::unique_ptr<Factorization> factor_;
   SparseMatrix global_;
+  long factor_size_ = 0, trailing_ = 0;  // a new size or number of multipliers needs a new analysis
   SolveStats stats_;
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/Observer.h"
 #include "solve/BlockSystem.h"
 
 namespace rollsim {
@@ -26,8 +27,9 @@ struct SolveStats {
 class SolverStrategy {
  public:
   virtual ~SolverStrategy() = default;
-  /// Solves K_g u_g = f_g (with the constraints, once they exist); one vector per group.
-  virtual std::vector<Eigen::VectorXd> solve(const BlockSystem& system) = 0;
+  /// Solves the constrained block system (paper eq. (1)); iterative strategies report each
+  /// iteration to `observer` (may be null).
+  virtual BlockSolution solve(const BlockSystem& system, AnalysisObserver* observer = nullptr) = 0;
   virtual const SolveStats& stats() const = 0;
 };
 

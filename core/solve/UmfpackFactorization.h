@@ -1,0 +1,30 @@
+#pragma once
+// UMFPACK sparse LU with partial pivoting: the `direct` factorization of the saddle-point matrix (1), which is
+// symmetric but indefinite and whose stiffness blocks may be singular (floating bodies) — Cholesky cannot, and an
+// LDLᵀ without pivoting may meet a zero pivot there. See docs/ARCHITECTURE.md for the measured choice.
+#include "solve/Factorization.h"
+
+namespace rollsim {
+
+class UmfpackFactorization final : public Factorization {
+ public:
+  UmfpackFactorization();
+  ~UmfpackFactorization() override;
+  UmfpackFactorization(const UmfpackFactorization&) = delete;
+  UmfpackFactorization& operator=(const UmfpackFactorization&) = delete;
+
+  void analyze(const SparseMatrix& A) override;
+  void factorize(const SparseMatrix& A) override;
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
+  const FactorStats& stats() const override { return stats_; }
+
+ private:
+  void free_numeric();
+  SparseMatrix A_;  // UMFPACK keeps pointers into the matrix it factored
+  void* symbolic_ = nullptr;
+  void* numeric_ = nullptr;
+  double control_[20]{};
+  FactorStats stats_;
+};
+
+}  // namespace rollsim
