@@ -32,24 +32,53 @@ Eigen::MatrixXd rigid_modes(const Mesh& m) {
   return R;
 }
 
+namespace {
+/// Rows of R at the prescribed dofs: a rigid motion is prevented iff it moves one of them.
+Eigen::MatrixXd prescribed_rows(const Eigen::MatrixXd& R, const DofMap& dofs) {
+  Eigen::MatrixXd Rc(dofs.num_prescribed(), R.cols());
+  for (Eigen::Index i = 0, row = 0; i < R.rows(); ++i)
+    if (dofs.equation(static_cast<int>(i / dofs.dim()), static_cast<int>(i % dofs.dim())) < 0) Rc.row(row++) = R.row(i);
+  return Rc;
+}
+
+/// Orthonormal basis (columns) of the combinations of rigid modes that leave every prescribed dof at rest.
+Eigen::MatrixXd free_combinations(const Eigen::MatrixXd& R, const DofMap& dofs) {
+  const Eigen::MatrixXd Rc = prescribed_rows(R, dofs);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Rc.transpose() * Rc, Eigen::ComputeFullV);
+  const Eigen::VectorXd sv = svd.singularValues();
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index k = 0; k < sv.size(); ++k)
+    if (sv[k] <= 1e-10 * std::max(1.0, sv[0])) kept.push_back(k);
+  Eigen::MatrixXd V(R.cols(), static_cast<Eigen::Index>(kept.size()));
+  for (size_t k = 0; k < kept.size(); ++k) V.col(static_cast<Eigen::Index>(k)) = svd.matrixV().col(kept[k]);
+  return V;
+}
+}  // namespace
+
+Eigen::MatrixXd kernel_basis(const Mesh& mesh, const DofMap& dofs) {
+  const Eigen::MatrixXd R = rigid_modes(mesh);
+  const Eigen::MatrixXd V = free_combinations(R, dofs);
+  Eigen::MatrixXd Rf(dofs.num_free(), V.cols());
+  if (V.cols() == 0) return Rf;
+  const Eigen::MatrixXd RV = R * V;
+  for (Eigen::Index i = 0; i < R.rows(); ++i) {
+    const int eq = dofs.equation(static_cast<int>(i / dofs.dim()), static_cast<int>(i % dofs.dim()));
+    if (eq >= 0) Rf.row(eq) = RV.row(i);
+  }
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(Rf);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(Rf.rows(), Rf.cols());
+}
+
 std::vector<std::string> free_rigid_modes(const Model& model, int b) {
   const Body& body = model.bodies[b];
   const DofMap dofs(body, b, model.displacements);
-  const Eigen::MatrixXd R = rigid_modes(body.mesh);
-  Eigen::MatrixXd Rc(dofs.num_prescribed(), R.cols());
-  for (Eigen::Index i = 0, row = 0; i < R.rows(); ++i)
-    if (dofs.equation(static_cast<int>(i) / body.mesh.dim, static_cast<int>(i) % body.mesh.dim) < 0)
-      Rc.row(row++) = R.row(i);
-  // a rigid motion is prevented iff it moves some prescribed dof: the null space of Rc is what stays free
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Rc.transpose() * Rc, Eigen::ComputeFullV);
-  const Eigen::VectorXd sv = svd.singularValues();
+  const Eigen::MatrixXd V = free_combinations(rigid_modes(body.mesh), dofs);
   const char* axes = "xyz";
+  const int dim = body.mesh.dim;
   std::vector<std::string> names;
-  for (Eigen::Index k = 0; k < sv.size(); ++k) {
-    if (sv[k] > 1e-10 * std::max(1.0, sv[0])) continue;
+  for (Eigen::Index k = 0; k < V.cols(); ++k) {
     Eigen::Index dominant = 0;
-    svd.matrixV().col(k).cwiseAbs().maxCoeff(&dominant);
-    const int dim = body.mesh.dim;
+    V.col(k).cwiseAbs().maxCoeff(&dominant);
     if (dominant < dim)
       names.push_back(std::string("translation along ") + axes[dominant]);
     else

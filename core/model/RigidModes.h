@@ -13,6 +13,13 @@ namespace rollsim {
 /// about the body's centroid and scaled by its size so that all columns are of comparable norm.
 Eigen::MatrixXd rigid_modes(const Mesh& mesh);
 
+class DofMap;
+
+/// Orthonormal basis of ker K restricted to the free dofs of `dofs` (rows = equation numbers): the rigid
+/// motions that move no prescribed dof (geometric modes checked against the Dirichlet conditions, which is
+/// exact for a connected body of solid elements — no numerical rank decision on K). 0 columns when held.
+Eigen::MatrixXd kernel_basis(const Mesh& mesh, const DofMap& dofs);
+
 /// Names of the rigid-body motions the displacement conditions of body `b` do not prevent,
 /// e.g. {"translation along y", "rotation about z"}; empty when the body is held.
 std::vector<std::string> free_rigid_modes(const Model& model, int b);
