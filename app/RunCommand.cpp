@@ -122,7 +122,7 @@ int run_command(const RunOptions& o) {
   try {
     results = run_linear_static(model, *solver, &progress);
     info.error = non_finite_results(model, results);
-  } catch (const UnsupportedBody& e) {
+  } catch (const AnalysisError& e) {
     info.error = e.what();
   }
   if (!info.error.empty()) {

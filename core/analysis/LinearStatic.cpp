@@ -2,10 +2,14 @@
 
 #include <memory>
 
+#include "analysis/ConstraintAssembly.h"
+#include "analysis/ContactResults.h"
 #include "analysis/Recovery.h"
+#include "contact/ContactConstraints.h"
 #include "fem/Assembler.h"
 #include "fem/Loads.h"
 #include "model/DofMap.h"
+#include "model/RigidModes.h"
 #include "solve/Stopwatch.h"
 
 namespace rollsim {
@@ -35,15 +39,18 @@ std::string describe_singular(const Model& model, const std::vector<std::unique_
 }
 }  // namespace
 
-Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer) {
-  AnalysisObserver quiet;
-  AnalysisObserver& obs = observer ? *observer : quiet;
-  Stopwatch total;
-  Results res;
-  std::vector<std::unique_ptr<DofMap>> dofs;
+namespace {
+constexpr int kMaxActiveSetIterations = 50;
+
+bool in_contact(const Model& model, int b) {
+  for (const ContactPair& p : model.contacts)
+    if (p.slave_body == b || p.master_body == b) return true;
+  return false;
+}
+
+/// One group per body: K, f and, for a body held only by contact, its kernel (paper eq. (5)).
+BlockSystem assemble_groups(const Model& model, std::vector<std::unique_ptr<DofMap>>& dofs, Results& res) {
   BlockSystem sys;
-  obs.on_stage("assemble");
-  Stopwatch t;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
     dofs.push_back(std::make_unique<DofMap>(body, static_cast<int>(b), model.displacements));
@@ -53,29 +60,95 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
     Assembler assembler(body, *dofs.back());
     assembler.assemble(g.K, g.f);
     g.f += dofs.back()->restrict_to_free(external_nodal_load(model, static_cast<int>(b)));
+    g.R =
+        in_contact(model, static_cast<int>(b)) ? kernel_basis(body.mesh, *dofs.back()) : Eigen::MatrixXd(g.K.rows(), 0);
     res.dofs += g.K.rows();
+    res.rigid_modes += g.R.cols();
     sys.groups.push_back(std::move(g));
   }
-  res.timing.stiffness_s = t.seconds();
-  if (obs.cancel_requested()) {
-    res.status = "cancelled";
-    return res;
-  }
-  obs.on_stage("solve");
-  BlockSolution sol;
+  return sys;
+}
+
+BlockSolution solve_checked(const Model& model, const std::vector<std::unique_ptr<DofMap>>& dofs,
+                            SolverStrategy& solver, const BlockSystem& sys, AnalysisObserver& obs) {
   try {
-    sol = solver.solve(sys, &obs);
+    return solver.solve(sys, &obs);
   } catch (const SingularMatrix& e) {
-    throw UnsupportedBody(describe_singular(model, dofs, e.column));
+    if (sys.num_rigid_modes() > 0)
+      throw AnalysisError("the system is singular: the contact constraints do not hold the floating bodies (" +
+                          std::to_string(sys.num_rigid_modes()) +
+                          " rigid modes) — check that the contact surfaces meet and hold every free direction");
+    throw AnalysisError(describe_singular(model, dofs, e.column));
+  } catch (const std::invalid_argument& e) {
+    throw AnalysisError(e.what());
   }
+}
+
+std::vector<Eigen::VectorXd> full_displacements(const std::vector<std::unique_ptr<DofMap>>& dofs,
+                                                const BlockSolution& sol) {
+  std::vector<Eigen::VectorXd> u;
+  for (size_t b = 0; b < dofs.size(); ++b) u.push_back(dofs[b]->expand(sol.u[b]));
+  return u;
+}
+
+bool has_unilateral(const Model& model) {
+  for (const ContactPair& p : model.contacts)
+    if (p.kind == ContactKind::Frictionless) return true;
+  return false;
+}
+}  // namespace
+
+Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer) {
+  AnalysisObserver quiet;
+  AnalysisObserver& obs = observer ? *observer : quiet;
+  Stopwatch total;
+  Results res;
+  std::vector<std::unique_ptr<DofMap>> dofs;
+  obs.on_stage("assemble");
+  Stopwatch t;
+  BlockSystem sys = assemble_groups(model, dofs, res);
+  res.timing.stiffness_s = t.seconds();
+  std::vector<PairState> pairs;
+  try {
+    pairs = search_contacts(model);
+  } catch (const std::runtime_error& e) {
+    throw AnalysisError(e.what());
+  }
+  std::vector<ConstraintRow> rows;
+  std::vector<int> kept;
+  BlockSolution sol;
+  std::vector<Eigen::VectorXd> u;
+  for (int it = 1;; ++it) {
+    if (obs.cancel_requested()) {
+      res.status = "cancelled";
+      return res;
+    }
+    rows = contact_rows(model, pairs);
+    set_constraints(rows, dofs, sys, &kept);
+    obs.on_stage("solve");
+    sol = solve_checked(model, dofs, solver, sys, obs);
+    u = full_displacements(dofs, sol);
+    res.active_set_iterations = it;
+    if (!has_unilateral(model)) break;
+    std::vector<ConstraintRow> kept_rows;
+    for (int r : kept) kept_rows.push_back(rows[r]);
+    const int changed = update_active_set(model, kept_rows, sol.lambda, u, pairs);
+    obs.on_iteration("active_set", it, changed);
+    if (changed == 0) break;
+    if (it == kMaxActiveSetIterations) {
+      res.status = "diverged";
+      break;
+    }
+  }
+  res.multipliers = sys.num_multipliers();
   const SolveStats& st = solver.stats();
   res.timing.analyze_s = st.analyze_s;
   res.timing.factorize_s = st.factorize_s;
   res.timing.solve_s = st.solve_s;
   obs.on_stage("recover");
   Stopwatch tr;
-  for (size_t b = 0; b < model.bodies.size(); ++b)
-    res.bodies.push_back(recover(model, static_cast<int>(b), dofs[b]->expand(sol.u[b])));
+  for (size_t b = 0; b < model.bodies.size(); ++b) res.bodies.push_back(recover(model, static_cast<int>(b), u[b]));
+  contact_results(model, pairs, rows, kept, sol.lambda, res);
   res.timing.recovery_s = tr.seconds();
   res.timing.total_s = total.seconds();
   return res;

@@ -1,6 +1,7 @@
 #pragma once
-// Linear static analysis: assemble each body's group, solve the block system with the chosen
-// strategy, recover displacements, stresses and reactions.
+// Linear static analysis: assemble each body's group, search contact, solve the block system with the chosen
+// strategy (repeated while the active set of frictionless contact changes), recover displacements, stresses,
+// reactions and contact forces.
 #include <stdexcept>
 
 #include "analysis/Observer.h"
@@ -10,8 +11,9 @@
 
 namespace rollsim {
 
-/// The model cannot be solved because a body is free to move (bad input, reported to the user).
-struct UnsupportedBody : std::runtime_error {
+/// The model cannot be solved as given (a body free to move, contact that cannot hold a floating body, a strategy
+/// that cannot handle the model): bad input, reported to the user with exit code 2.
+struct AnalysisError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 

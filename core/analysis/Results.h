@@ -14,6 +14,17 @@ struct BodyResults {
   std::vector<std::array<double, 6>> element_stress;  // element mean (xx, yy, zz, xy, yz, zx) [stress]
   std::vector<std::array<double, 6>> nodal_stress;    // extrapolated from Gauss points, averaged at nodes
   std::vector<int> subdomain;                         // per element (0 while bodies are not partitioned)
+  Eigen::VectorXd contact_pressure;                   // per node: normal contact pressure on slave nodes [stress]
+};
+
+/// Resultants of one contact pair on its slave surface (forces on the slave body).
+struct ContactResult {
+  std::string name;
+  double normal_force = 0;      // Σ f·n, positive in compression [force]
+  double tangential_force = 0;  // |Σ (f − (f·n) n)| [force]
+  double max_pressure = 0;      // max of f·n / tributary measure [stress]
+  double measure = 0;           // contact length (2D) / area (3D) of the active points [length / length²]
+  int active_nodes = 0, candidate_nodes = 0;
 };
 
 struct Timing {
@@ -24,6 +35,10 @@ struct Results {
   std::string status = "converged";  // converged / diverged / cancelled / error
   std::vector<BodyResults> bodies;
   long dofs = 0;
+  long multipliers = 0;  // contact multipliers of the last solve
+  long rigid_modes = 0;  // floating-body modes handled by the solver
+  int active_set_iterations = 0;
+  std::vector<ContactResult> contacts;
   Timing timing;
 };
 

@@ -23,10 +23,11 @@ json model_section(const Model& m, const Results& r) {
           {"elements", m.total_elements()},
           {"dofs", r.dofs},
           {"bodies", m.bodies.size()},
-          {"contact_multipliers", 0},
+          {"contact_multipliers", r.multipliers},
           {"interface_multipliers", 0},
           {"subdomains", m.bodies.size()},
-          {"rigid_modes", 0}};
+          {"rigid_modes", r.rigid_modes},
+          {"contact_pairs", m.contacts.size()}};
 }
 
 json results_section(const Model& m, const Results& r) {
@@ -47,7 +48,12 @@ json results_section(const Model& m, const Results& r) {
     const auto s = set_resultant(r.bodies[bc.body], m.dim, bc.nodes);
     reactions[m.bodies[bc.body].name][bc.set] = vec(s.data(), m.dim);
   }
-  return {{"probes", probes}, {"max_abs_displacement", umax}, {"reactions", reactions}};
+  json contact = json::object();
+  for (const ContactResult& c : r.contacts)
+    contact[c.name] = {{"normal_force", c.normal_force}, {"tangential_force", c.tangential_force},
+                       {"max_pressure", c.max_pressure}, {m.dim == 2 ? "contact_length" : "contact_area", c.measure},
+                       {"active_nodes", c.active_nodes}, {"candidate_nodes", c.candidate_nodes}};
+  return {{"probes", probes}, {"max_abs_displacement", umax}, {"reactions", reactions}, {"contact", contact}};
 }
 }  // namespace
 
@@ -62,6 +68,7 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
                  {"cg_iterations_total", st.cg_iterations},
                  {"newton_iterations", r.status == "converged" ? 1 : 0},
                  {"increments", 1},
+                 {"active_set_iterations", r.active_set_iterations},
                  {"factorizations", factorizations},
                  {"threads", run.threads},
                  {"blas", blas_description()},

@@ -50,6 +50,20 @@ struct Probe {
   int node = 0;
 };
 
+/// Contact between a slave surface (carries the multipliers, paper: the base) and a master surface.
+/// tied: the slave nodes stick to the master surface in every component (the paper's "infinite friction");
+/// frictionless: normal, unilateral, with an active set (the contact zone is an unknown). Small sliding:
+/// each slave node keeps the master facet and the normal found in the undeformed configuration.
+enum class ContactKind { Tied, Frictionless };
+
+struct ContactPair {
+  std::string name;
+  ContactKind kind = ContactKind::Tied;
+  int slave_body = 0, master_body = 0;
+  std::string slave_surface, master_surface;
+  double search_distance = 0;  // slave nodes farther than this from the master surface are ignored [length]
+};
+
 struct Model {
   int dim = 2;
   std::vector<Body> bodies;
@@ -57,6 +71,7 @@ struct Model {
   std::vector<NodalForce> forces;
   std::vector<Pressure> pressures;
   std::vector<Probe> probes;
+  std::vector<ContactPair> contacts;
 
   long total_nodes() const;
   long total_elements() const;

@@ -102,17 +102,46 @@ void check_project_name(const json& project, std::vector<Issue>& issues) {
                      describe(project.at("name"))});
 }
 
+bool in_contact(const json& project, const json& name) {
+  for (const auto& c : project.at("contacts"))
+    if (c.at("slave_body") == name || c.at("master_body") == name) return true;
+  return false;
+}
+
+void check_contact(const json& c, const std::string& path, const json& bodies, int dim, std::vector<Issue>& issues) {
+  std::string found[2];
+  const char* roles[2] = {"slave", "master"};
+  for (int r = 0; r < 2; ++r) {
+    const std::string role = roles[r];
+    const auto body_name = c.at(role + "_body").get<std::string>();
+    const int b = find_named(bodies, body_name);
+    if (b < 0) {
+      issues.push_back({path + "." + role + "_body", "no body named '" + body_name + "'"});
+      continue;
+    }
+    const auto names = generator_set_names(bodies[static_cast<size_t>(b)].at("mesh"), dim);
+    const auto surface = c.at(role + "_surface").get<std::string>();
+    if (!names.count(surface))
+      issues.push_back({path + "." + role + "_surface",
+                        "no surface '" + surface + "' in body '" + body_name + "' (available: " + join(names) + ")"});
+    found[r] = body_name;
+  }
+  if (!found[0].empty() && found[0] == found[1])
+    issues.push_back({path, "slave and master are the same body '" + found[0] +
+                                "' (self-contact is not supported; name two different bodies)"});
+}
+
 void check_supports(const json& project, std::vector<Issue>& issues) {
   const json& bodies = project.at("bodies");
   for (size_t b = 0; b < bodies.size(); ++b) {
-    bool held = false;
+    bool held = in_contact(project, bodies[b].at("name"));
     for (const auto& bc : project.at("boundary_conditions"))
       held = held || ((bc.at("type") == "displacement" || bc.at("type") == "symmetry") &&
                       bc.at("body") == bodies[b].at("name"));
     if (!held)
       issues.push_back({at("bodies", b), "body '" + bodies[b].at("name").get<std::string>() +
-                                             "' has no displacement or symmetry condition: it is free to move as a "
-                                             "rigid body"});
+                                             "' has no displacement or symmetry condition and no contact: it is free "
+                                             "to move as a rigid body"});
   }
 }
 
@@ -148,6 +177,9 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
     if (p.contains("body") && find_named(d.at("bodies"), p.at("body").get<std::string>()) < 0)
       issues.push_back({at("probes", i) + ".body", "no body named '" + p.at("body").get<std::string>() + "'"});
   }
+  check_unique(d.at("contacts"), "contacts", issues);
+  for (size_t i = 0; i < d.at("contacts").size(); ++i)
+    check_contact(d["contacts"][i], at("contacts", i), d.at("bodies"), dim, issues);
   if (issues.empty()) check_supports(d, issues);
 }
 
@@ -228,6 +260,27 @@ void add_condition(Model& model, const json& bc, const json& bodies) {
   model.displacements.push_back(std::move(d));
 }
 
+double model_size(const Model& model) {
+  double s = 0;
+  for (const Body& b : model.bodies) s = std::max(s, mesh_size(b.mesh));
+  return s;
+}
+
+void add_contacts(Model& model, const json& d) {
+  for (const auto& c : d.at("contacts")) {
+    ContactPair p;
+    p.name = c.at("name").get<std::string>();
+    p.kind = c.at("type") == "tied" ? ContactKind::Tied : ContactKind::Frictionless;
+    p.slave_body = find_named(d.at("bodies"), c.at("slave_body").get<std::string>());
+    p.master_body = find_named(d.at("bodies"), c.at("master_body").get<std::string>());
+    p.slave_surface = c.at("slave_surface").get<std::string>();
+    p.master_surface = c.at("master_surface").get<std::string>();
+    p.search_distance = c.contains("search_distance") ? c.at("search_distance").get<double>()
+                                                      : (p.kind == ContactKind::Tied ? 1e-6 : 0.05) * model_size(model);
+    model.contacts.push_back(std::move(p));
+  }
+}
+
 }  // namespace
 
 Model build_model(const Project& project) {
@@ -255,7 +308,9 @@ Model build_model(const Project& project) {
   }
   if (!issues.empty()) throw ProjectError(project.source, issues);
   for (const auto& bc : d.at("boundary_conditions")) add_condition(model, bc, d.at("bodies"));
+  add_contacts(model, d);
   for (size_t b = 0; b < model.bodies.size(); ++b) {
+    if (in_contact(d, model.bodies[b].name)) continue;  // a floating body: the contact must hold it
     const auto modes = free_rigid_modes(model, static_cast<int>(b));
     std::string list;
     for (const auto& m : modes) list += (list.empty() ? "" : ", ") + m;

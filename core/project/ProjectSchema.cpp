@@ -239,6 +239,24 @@ const ObjectSchema kBC{"boundary condition",
                        "type",
                        {{"displacement", &kDisp}, {"symmetry", &kSym}, {"force", &kForce}, {"pressure", &kPressure}}};
 
+const ObjectSchema kContact{
+    "contact pair",
+    "Contact between two bodies through Lagrange multipliers on the slave surface's nodes (node-to-segment in 2D, "
+    "node-to-face in 3D; meshes need not match). Small sliding: master facets and normals are found once, in the "
+    "undeformed configuration. A body held only by contact (no displacement condition) is a floating body: "
+    "`direct` and `mixed` solve it, `skyline` refuses it.",
+    {req(str("name", "pair name, unique (the key of results.contact in summary.json)")),
+     choice("type", {"tied", "frictionless"}, "tied",
+            "tied: sticking in every component (the paper's infinite friction), bilateral; frictionless: normal "
+            "only, unilateral, with an active set"),
+     req(str("slave_body", "body carrying the multipliers")), req(str("slave_surface", "surface of the slave body")),
+     req(str("master_body", "the other body")), req(str("master_surface", "surface of the master body")),
+     positive("search_distance", "length",
+              "slave nodes farther from the master surface are ignored (default: 1e-6 of the model size for tied, "
+              "5 % of the model size for frictionless)")},
+    "",
+    {}};
+
 const ObjectSchema& solver_schema() {
   static const ObjectSchema s{
       "solver",
@@ -298,8 +316,8 @@ const ObjectSchema& project_schema() {
        }(),
        str("description", "free text"), objects("materials", kMaterial, "materials", 1),
        objects("bodies", kBody, "bodies", 1), objects("boundary_conditions", kBC, "supports and loads"),
-       object("solver", solver_schema(), "solver settings"), objects("probes", kProbe, "reported points"),
-       object("output", kOutput, "outputs")},
+       objects("contacts", kContact, "contact pairs"), object("solver", solver_schema(), "solver settings"),
+       objects("probes", kProbe, "reported points"), object("output", kOutput, "outputs")},
       "",
       {}};
   return root;

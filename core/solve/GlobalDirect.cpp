@@ -1,5 +1,6 @@
 #include "solve/GlobalDirect.h"
 
+#include <stdexcept>
 #include <vector>
 
 namespace rollsim {
@@ -38,6 +39,10 @@ GlobalDirect::GlobalDirect(std::string kind) : kind_(std::move(kind)) {}
 
 BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver*) {
   const long n = sys.num_dofs(), m = sys.num_multipliers();
+  if (kind_ == "skyline" && sys.num_rigid_modes() > 0)
+    throw std::invalid_argument("solver 'skyline' eliminates without pivoting and cannot factor a floating body (" +
+                                std::to_string(sys.num_rigid_modes()) +
+                                " rigid modes held only by contact): use 'direct' or 'mixed'");
   const bool single = sys.groups.size() == 1 && m == 0;
   const SparseMatrix& A = single ? sys.groups[0].K : (global_ = global_matrix(sys));
   Eigen::VectorXd f(n + m);

@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "solve/GlobalDirect.h"
+#include "solve/MixedStrategy.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {
@@ -10,8 +11,14 @@ const std::vector<StrategyInfo>& solver_registry() {
   static const std::vector<StrategyInfo> registry = {
       {"skyline", "global matrix, active-column LDL^T with reverse Cuthill-McKee ordering (the paper's ACTCOL)",
        [](const SolverOptions&) { return std::make_unique<GlobalDirect>("skyline"); }},
-      {"direct", "global matrix, CHOLMOD supernodal Cholesky with AMD/METIS ordering (modern baseline)",
+      {"direct",
+       "global matrix, CHOLMOD supernodal Cholesky with AMD/METIS ordering (modern baseline); with contact multipliers "
+       "UMFPACK LU",
        [](const SolverOptions&) { return std::make_unique<GlobalDirect>("cholmod"); }},
+      {"mixed",
+       "each body factored on its own (CHOLMOD), CG on the condensed contact interface, projected CG for floating "
+       "bodies (the paper's mixed method)",
+       [](const SolverOptions& o) { return std::make_unique<MixedStrategy>(o); }},
   };
   return registry;
 }

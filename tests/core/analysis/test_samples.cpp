@@ -1,5 +1,6 @@
-// Every sample: `skyline` and `direct` give the same displacements (1e-10 relative), and the key
-// quantities (dofs, reactions, probe displacements) match the committed golden file
+// Every sample: `skyline` and `direct` give the same displacements (1e-10 relative), `mixed` (CG tolerance
+// 1e-10) the same to 1e-7; a model with a floating body is refused by `skyline` with a clear error. The key
+// quantities (dofs, reactions, probe displacements, contact resultants) match the committed golden file
 // tests/golden/<sample>.json to 1e-8 relative. ROLLSIM_UPDATE_GOLDEN=1 rewrites the golden files.
 #include <gtest/gtest.h>
 
@@ -31,7 +32,7 @@ struct Solved {
 };
 
 Solved solve(const Model& model, const std::string& mode) {
-  auto solver = make_solver(mode, {});
+  auto solver = make_solver(mode, {1e-10, 1});
   Solved s{run_linear_static(model, *solver), {}};
   s.stats = solver->stats();
   return s;
@@ -42,7 +43,8 @@ json golden_view(const json& summary) {
   return {{"model", summary.at("model")},
           {"reactions", summary.at("results").at("reactions")},
           {"probes", summary.at("results").at("probes")},
-          {"max_abs_displacement", summary.at("results").at("max_abs_displacement")}};
+          {"max_abs_displacement", summary.at("results").at("max_abs_displacement")},
+          {"contact", summary.at("results").at("contact")}};
 }
 
 void expect_close(const json& got, const json& want, const std::string& path) {
@@ -65,14 +67,25 @@ class SampleTest : public testing::TestWithParam<std::string> {};
 
 }  // namespace
 
-TEST_P(SampleTest, SkylineEqualsDirectAndMatchesGolden) {
+void expect_same_displacements(const Model& model, const Results& a, const Results& b, double tol,
+                               const std::string& what) {
+  double umax = 0, diff = 0;
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    umax = std::max(umax, a.bodies[i].displacement.cwiseAbs().maxCoeff());
+    diff = std::max(diff, (a.bodies[i].displacement - b.bodies[i].displacement).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LE(diff, tol * umax) << what;
+}
+
+TEST_P(SampleTest, SolversAgreeAndMatchGolden) {
   const Project project = load_project(GetParam());
   const Model model = build_model(project);
-  const Solved direct = solve(model, "direct"), skyline = solve(model, "skyline");
-  for (size_t b = 0; b < model.bodies.size(); ++b) {
-    const auto& ud = direct.results.bodies[b].displacement;
-    const auto& us = skyline.results.bodies[b].displacement;
-    EXPECT_LE((us - ud).cwiseAbs().maxCoeff(), 1e-10 * ud.cwiseAbs().maxCoeff()) << model.bodies[b].name;
+  const Solved direct = solve(model, "direct"), mixed = solve(model, "mixed");
+  expect_same_displacements(model, direct.results, mixed.results, 1e-7, "mixed vs direct");
+  if (direct.results.rigid_modes > 0) {
+    EXPECT_THROW(solve(model, "skyline"), AnalysisError);
+  } else {
+    expect_same_displacements(model, direct.results, solve(model, "skyline").results, 1e-10, "skyline vs direct");
   }
   const json got =
       golden_view(make_summary(model, direct.results, direct.stats, {project.name(), "direct", 1e-4, 1, ""}));

@@ -1,0 +1,44 @@
+#include "analysis/ContactResults.h"
+
+#include <map>
+
+namespace rollsim {
+
+void contact_results(const Model& model, const std::vector<PairState>& pairs, const std::vector<ConstraintRow>& rows,
+                     const std::vector<int>& kept, const Eigen::VectorXd& lambda, Results& results) {
+  // force on each slave point, per pair
+  std::vector<std::map<int, Eigen::Vector3d>> force(pairs.size());
+  for (size_t r = 0; r < kept.size(); ++r) {
+    const ConstraintRow& row = rows[kept[r]];
+    const ContactPoint& c = pairs[row.pair].points[row.point];
+    auto [it, fresh] = force[row.pair].try_emplace(row.point, Eigen::Vector3d::Zero());
+    const double l = lambda[static_cast<Eigen::Index>(r)];
+    it->second -= row.comp < 0 ? Eigen::Vector3d(l * c.normal) : Eigen::Vector3d(l * Eigen::Vector3d::Unit(row.comp));
+  }
+  results.contacts.clear();
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    ContactResult cr;
+    cr.name = p.name;
+    cr.candidate_nodes = static_cast<int>(pairs[i].points.size());
+    Eigen::Vector3d tangential = Eigen::Vector3d::Zero();
+    BodyResults& slave = results.bodies[p.slave_body];
+    if (slave.contact_pressure.size() == 0)
+      slave.contact_pressure = Eigen::VectorXd::Zero(model.bodies[p.slave_body].mesh.num_nodes());
+    for (const auto& [j, f] : force[i]) {
+      const ContactPoint& c = pairs[i].points[j];
+      const double fn = f.dot(c.normal);
+      cr.normal_force += fn;
+      tangential += f - fn * c.normal;
+      const double pressure = fn / c.weight;
+      cr.max_pressure = std::max(cr.max_pressure, pressure);
+      slave.contact_pressure[c.slave_node] = pressure;
+      cr.measure += c.weight;
+      ++cr.active_nodes;
+    }
+    cr.tangential_force = tangential.norm();
+    results.contacts.push_back(cr);
+  }
+}
+
+}  // namespace rollsim

@@ -1,0 +1,15 @@
+#pragma once
+// Contact forces from the multipliers: the force on a slave node is −Cᵀλ restricted to it
+// (tied rows: −λ per component; frictionless rows: −λ n).
+#include <vector>
+
+#include "analysis/Results.h"
+#include "contact/ContactConstraints.h"
+
+namespace rollsim {
+
+/// `rows[kept[r]]` is the row of multiplier r. Fills results.contacts and the slave bodies' contact_pressure.
+void contact_results(const Model& model, const std::vector<PairState>& pairs, const std::vector<ConstraintRow>& rows,
+                     const std::vector<int>& kept, const Eigen::VectorXd& lambda, Results& results);
+
+}  // namespace rollsim

@@ -1,0 +1,44 @@
+#pragma once
+// The contact constraint rows of every pair (paper eq. (1), rows C_j): for each contact point, tied pairs
+// give one row per component, u_s − Σ N_k u_k = 0; frictionless pairs one normal row while active,
+// n·(u_s − Σ N_k u_k) = −g. The active set of frictionless pairs is updated from the solution.
+#include <string>
+#include <vector>
+
+#include "contact/ContactSearch.h"
+#include "model/Model.h"
+
+namespace rollsim {
+
+/// One term coef · u(body, node, comp) of a constraint row.
+struct ConstraintTerm {
+  int body, node, comp;
+  double coef;
+};
+
+struct ConstraintRow {
+  std::vector<ConstraintTerm> terms;
+  double rhs = 0;
+  int pair = 0, point = 0, comp = -1;  // origin: contact pair, point, component (−1: normal row)
+};
+
+/// The contact points of one pair and which of them are active (tied: all).
+struct PairState {
+  std::vector<ContactPoint> points;
+  std::vector<char> active;
+};
+
+/// Contact search of every pair of the model; frictionless points start active where the gap is closed
+/// (gap ≤ 1e-9 of the search distance). Throws std::runtime_error naming a pair whose surfaces never meet.
+std::vector<PairState> search_contacts(const Model& model);
+
+/// The rows of the active points, pair by pair, point by point.
+std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<PairState>& pairs);
+
+/// Active-set update of the frictionless pairs from the displacements (node-major per body) and the multiplier
+/// of each row: a point leaves when its multiplier is tensile, enters when it penetrates. Returns the number of
+/// points that changed status.
+int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
+                      const std::vector<Eigen::VectorXd>& displacement, std::vector<PairState>& pairs);
+
+}  // namespace rollsim

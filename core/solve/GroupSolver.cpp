@@ -1,0 +1,63 @@
+#include "solve/GroupSolver.h"
+
+#include <algorithm>
+
+namespace rollsim {
+
+namespace {
+/// The r dofs where the kernel basis is best conditioned (pivots of a column-pivoted QR of Rᵀ).
+std::vector<int> fixing_dofs(const Eigen::MatrixXd& R) {
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(R.transpose());
+  std::vector<int> dofs;
+  for (Eigen::Index k = 0; k < R.cols(); ++k) dofs.push_back(qr.colsPermutation().indices()[k]);
+  std::sort(dofs.begin(), dofs.end());
+  return dofs;
+}
+
+SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& kept) {
+  std::vector<int> position(static_cast<size_t>(K.rows()), -1);
+  for (size_t i = 0; i < kept.size(); ++i) position[kept[i]] = static_cast<int>(i);
+  std::vector<Eigen::Triplet<double, int>> t;
+  t.reserve(static_cast<size_t>(K.nonZeros()));
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+      if (position[it.row()] >= 0 && position[j] >= 0) t.emplace_back(position[it.row()], position[j], it.value());
+  SparseMatrix Kpp(static_cast<int>(kept.size()), static_cast<int>(kept.size()));
+  Kpp.setFromTriplets(t.begin(), t.end());
+  return Kpp;
+}
+}  // namespace
+
+void GroupSolver::factorize(const Group& g) {
+  if (g.K.rows() != size_) {
+    size_ = g.K.rows();
+    fixed_ = g.R.cols() ? fixing_dofs(g.R) : std::vector<int>{};
+    kept_.clear();
+    for (int i = 0, f = 0; i < size_; ++i)
+      if (f < static_cast<int>(fixed_.size()) && fixed_[f] == i)
+        ++f;
+      else if (!fixed_.empty())
+        kept_.push_back(i);
+    factor_ = make_factorization(kind_);
+  }
+  if (fixed_.empty()) {
+    if (factor_->stats().factorizations == 0) factor_->analyze(g.K);
+    factor_->factorize(g.K);
+    return;
+  }
+  const SparseMatrix Kpp = remove_dofs(g.K, kept_);
+  if (factor_->stats().factorizations == 0) factor_->analyze(Kpp);
+  factor_->factorize(Kpp);
+}
+
+Eigen::VectorXd GroupSolver::apply(const Eigen::VectorXd& b) {
+  if (fixed_.empty()) return factor_->solve(b);
+  Eigen::VectorXd bp(static_cast<Eigen::Index>(kept_.size()));
+  for (size_t i = 0; i < kept_.size(); ++i) bp[static_cast<Eigen::Index>(i)] = b[kept_[i]];
+  const Eigen::VectorXd xp = factor_->solve(bp);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  for (size_t i = 0; i < kept_.size(); ++i) x[kept_[i]] = xp[static_cast<Eigen::Index>(i)];
+  return x;
+}
+
+}  // namespace rollsim

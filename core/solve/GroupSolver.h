@@ -1,0 +1,32 @@
+#pragma once
+// A generalized inverse K⁺ of one group's stiffness (paper eqs. (5)-(6)). A regular K is factored as is.
+// A floating group (kernel R with r columns) has r dofs fixed — those where R is best conditioned, chosen by
+// column-pivoted QR of Rᵀ, so that no rigid motion survives them — and K⁺ = [Kpp⁻¹ 0; 0 0] (the paper's
+// reordering). Then K K⁺ b = b for every b with Rᵀb = 0, which is all projected CG needs.
+#include <memory>
+#include <vector>
+
+#include "solve/BlockSystem.h"
+
+namespace rollsim {
+
+class GroupSolver {
+ public:
+  /// `kind`: a factorization name of make_factorization ("cholmod", "skyline").
+  explicit GroupSolver(std::string kind) : kind_(std::move(kind)) {}
+  /// Analyzes on the first call (or when the size changes) and factors K (or Kpp).
+  void factorize(const Group& g);
+  /// K⁺ b
+  Eigen::VectorXd apply(const Eigen::VectorXd& b);
+  const FactorStats& stats() const { return factor_->stats(); }
+  const std::vector<int>& fixed_dofs() const { return fixed_; }
+
+ private:
+  std::string kind_;
+  std::unique_ptr<Factorization> factor_;
+  std::vector<int> fixed_;  // dofs set to zero in K⁺ (floating groups)
+  std::vector<int> kept_;   // kept_[i]: dof of row i of Kpp; empty when nothing is fixed
+  long size_ = -1;
+};
+
+}  // namespace rollsim

@@ -1,0 +1,73 @@
+#include "solve/ProjectedCG.h"
+
+#include <cmath>
+
+#include "solve/Factorization.h"
+
+namespace rollsim {
+
+namespace {
+/// The projector P = I − G(GᵀG)⁻¹Gᵀ with GᵀG factored once.
+class Projector {
+ public:
+  explicit Projector(const Eigen::MatrixXd& G) : G_(G) {
+    if (G.cols() == 0) return;
+    const Eigen::MatrixXd GtG = G.transpose() * G;
+    qr_.compute(GtG);
+    qr_.setThreshold(1e-10);
+    if (qr_.rank() < GtG.cols())
+      throw SingularMatrix("GᵀG is singular: the constraints do not hold every rigid mode", -1);
+  }
+  Eigen::VectorXd apply(const Eigen::VectorXd& w) const {
+    return G_.cols() == 0 ? w : Eigen::VectorXd(w - G_ * coarse(G_.transpose() * w));
+  }
+  /// (GᵀG)⁻¹ v
+  Eigen::VectorXd coarse(const Eigen::VectorXd& v) const { return qr_.solve(v); }
+
+ private:
+  const Eigen::MatrixXd& G_;
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
+};
+
+double constraint_error(const InterfaceProblem& p, const Eigen::VectorXd& lambda) {
+  if (p.G.cols() == 0) return 0;
+  return (p.G.transpose() * lambda - p.e).lpNorm<Eigen::Infinity>() / std::max(p.e.lpNorm<Eigen::Infinity>(), 1e-300);
+}
+}  // namespace
+
+ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptions& o, AnalysisObserver* observer) {
+  const Projector P(p.G);
+  ProjectedCGResult res;
+  res.lambda = p.G.cols() ? Eigen::VectorXd(p.G * P.coarse(p.e)) : Eigen::VectorXd::Zero(p.b.size());
+  Eigen::VectorXd r = p.b - p.F(res.lambda);
+  Eigen::VectorXd w = P.apply(r);
+  const double w0 = w.norm();
+  res.residuals.push_back(w0 > 0 ? 1.0 : 0.0);
+  res.max_constraint_error = constraint_error(p, res.lambda);
+  Eigen::VectorXd dir, y_prev;
+  double wy_prev = 0;
+  res.converged = w0 == 0;
+  while (!res.converged && res.iterations < o.max_iterations) {
+    const Eigen::VectorXd y = P.apply(o.preconditioner ? o.preconditioner(w) : w);
+    const double wy = w.dot(y);
+    dir = res.iterations == 0 ? y : Eigen::VectorXd(y + (wy / wy_prev) * dir);
+    const Eigen::VectorXd q = p.F(dir);
+    const double step = wy / dir.dot(q);
+    res.lambda += step * dir;
+    r -= step * q;
+    w = P.apply(r);
+    wy_prev = wy;
+    ++res.iterations;
+    const double rel = w.norm() / w0;
+    res.residuals.push_back(rel);
+    res.max_constraint_error = std::max(res.max_constraint_error, constraint_error(p, res.lambda));
+    if (observer) observer->on_iteration("cg", res.iterations, rel);
+    res.converged = rel <= o.tolerance;
+    if (!std::isfinite(rel)) break;
+  }
+  // α = (GᵀG)⁻¹Gᵀ(Fλ − b) = −(GᵀG)⁻¹Gᵀ r
+  if (p.G.cols()) res.alpha = -P.coarse(p.G.transpose() * r);
+  return res;
+}
+
+}  // namespace rollsim
