@@ -42,17 +42,21 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
   Eigen::VectorXd r = p.b - p.F(res.lambda);
   Eigen::VectorXd w = P.apply(r);
   const double w0 = w.norm();
-  res.residuals.push_back(w0 > 0 ? 1.0 : 0.0);
+  // round-off floor: a projected residual this small relative to the data is zero (e.g. λ fully fixed by Gᵀλ = e)
+  const double floor = 1e-14 * std::max(r.norm(), p.b.norm());
+  res.residuals.push_back(w0 > floor ? 1.0 : 0.0);
   res.max_constraint_error = constraint_error(p, res.lambda);
   Eigen::VectorXd dir, y_prev;
   double wy_prev = 0;
-  res.converged = w0 == 0;
+  res.converged = w0 <= floor;
   while (!res.converged && res.iterations < o.max_iterations) {
     const Eigen::VectorXd y = P.apply(o.preconditioner ? o.preconditioner(w) : w);
     const double wy = w.dot(y);
     dir = res.iterations == 0 ? y : Eigen::VectorXd(y + (wy / wy_prev) * dir);
     const Eigen::VectorXd q = p.F(dir);
-    const double step = wy / dir.dot(q);
+    const double curvature = dir.dot(q);
+    if (!(wy > 0 && curvature > 0)) break;  // breakdown: F not positive definite on ker Gᵀ (or NaN)
+    const double step = wy / curvature;
     res.lambda += step * dir;
     r -= step * q;
     w = P.apply(r);
@@ -62,8 +66,7 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
     res.residuals.push_back(rel);
     res.max_constraint_error = std::max(res.max_constraint_error, constraint_error(p, res.lambda));
     if (observer) observer->on_iteration("cg", res.iterations, rel);
-    res.converged = rel <= o.tolerance;
-    if (!std::isfinite(rel)) break;
+    res.converged = rel <= o.tolerance || w.norm() <= floor;
   }
   // α = (GᵀG)⁻¹Gᵀ(Fλ − b) = −(GᵀG)⁻¹Gᵀ r
   if (p.G.cols()) res.alpha = -P.coarse(p.G.transpose() * r);

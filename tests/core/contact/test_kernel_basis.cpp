@@ -1,0 +1,56 @@
+// Rigid-mode detection (kernel_basis): the number of free modes for bodies held at nothing, one node, one
+// component, two nodes, an edge or a face, in 2D (0..3) and 3D (0..6), and K R = 0 to round-off.
+#include <gtest/gtest.h>
+
+#include "fem/Assembler.h"
+#include "mesh/StructuredBlock.h"
+#include "model/DofMap.h"
+#include "model/RigidModes.h"
+
+using namespace rollsim;
+
+namespace {
+struct Support {
+  std::vector<int> nodes;
+  std::array<std::optional<double>, 3> value;
+};
+
+/// Free rigid modes of a unit block with the given supports; checks K R = 0 on the way.
+long free_modes(int dim, const std::vector<Support>& supports) {
+  BlockSpec spec;
+  spec.dim = dim;
+  spec.n = dim == 2 ? std::array<int, 3>{3, 2, 1} : std::array<int, 3>{2, 2, 2};  // 3 nodes on the first line
+  Body body;
+  body.mesh = make_block(spec);
+  body.material = {1000.0, 0.3};
+  std::vector<DisplacementBC> bcs;
+  for (const Support& s : supports) bcs.push_back({0, "s", s.nodes, s.value});
+  const DofMap dofs(body, 0, bcs);
+  const Eigen::MatrixXd R = kernel_basis(body.mesh, dofs);
+  SparseMatrix K;
+  Eigen::VectorXd f;
+  Assembler(body, dofs).assemble(K, f);
+  if (R.cols()) {
+    EXPECT_LT((K * R).cwiseAbs().maxCoeff(), 1e-10 * K.coeffs().cwiseAbs().maxCoeff());
+    EXPECT_LT((R.transpose() * R - Eigen::MatrixXd::Identity(R.cols(), R.cols())).norm(), 1e-12);
+  }
+  return R.cols();
+}
+const std::optional<double> kFix = 0.0, kFree;
+}  // namespace
+
+TEST(KernelBasis, TwoDimensionalModesZeroToThree) {
+  EXPECT_EQ(free_modes(2, {}), 3);
+  EXPECT_EQ(free_modes(2, {{{0}, {kFree, kFix, kFree}}}), 2);  // one node held in y
+  EXPECT_EQ(free_modes(2, {{{0}, {kFix, kFix, kFree}}}), 1);   // one node pinned: rotation left
+  EXPECT_EQ(free_modes(2, {{{0}, {kFix, kFix, kFree}}, {{3}, {kFree, kFix, kFree}}}), 0);  // pin + roller
+  EXPECT_EQ(free_modes(2, {{{0, 1, 2, 3}, {kFree, kFix, kFree}}}), 1);  // a line held in y: x translation left
+}
+
+TEST(KernelBasis, ThreeDimensionalModesZeroToSix) {
+  EXPECT_EQ(free_modes(3, {}), 6);
+  EXPECT_EQ(free_modes(3, {{{0}, {kFix, kFix, kFix}}}), 3);                             // a point: rotations left
+  EXPECT_EQ(free_modes(3, {{{0}, {kFix, kFix, kFix}}, {{3}, {kFix, kFix, kFix}}}), 1);  // an axis: 1 rotation
+  EXPECT_EQ(free_modes(3, {{{0, 1, 2, 3}, {kFree, kFree, kFix}}}), 3);                  // an edge line held in z
+  EXPECT_EQ(free_modes(3, {{{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, {kFix, kFix, kFix}}}), 0);  // a face clamped
+}
