@@ -1,0 +1,61 @@
+#pragma once
+// One body torn into subdomain groups plus its interface constraints — the part of the BlockSystem that the FETI
+// strategy (paper §2: [K_i B_iᵀ C_iᵀ; B_i 0 0; C_i 0 0]) gets for that body.
+#include <string>
+#include <vector>
+
+#include "model/DofMap.h"
+#include "model/Model.h"
+#include "partition/Interface.h"
+#include "partition/Partition.h"
+#include "partition/Subdomain.h"
+#include "solve/BlockSystem.h"
+
+namespace rollsim {
+
+struct DecomposeOptions {
+  Multipliers multipliers = Multipliers::NonRedundant;
+  bool split_disconnected = true;  // split subdomains made of several pieces (a warning says so) or refuse them
+  bool assemble = true;            // false: groups carry R and C only (counting, GUI preview)
+};
+
+struct BodyDecomposition {
+  int body = 0;
+  int body_free_dofs = 0;             // the undivided body's free dofs
+  Partition partition;                // as used (after automatic splitting)
+  std::vector<Subdomain> subdomains;  // local bodies and dof maps, kept for re-assembly (selective update)
+  Interface interface;
+  Multipliers multipliers = Multipliers::NonRedundant;
+  std::vector<Group> groups;              // one per subdomain: K_i, f_i, C = B_i (rows: this body's multipliers), R_i
+  Eigen::VectorXd d;                      // zeros: Σ_i B_i u_i = 0
+  long paper_convention_multipliers = 0;  // the paper's count for this partition (paper_convention_count)
+  std::vector<std::string> warnings;      // automatic splits
+
+  long num_multipliers() const { return d.size(); }
+  long num_rigid_modes() const;
+};
+
+/// Tears body `b` of the model along `partition`. Throws PartitionError listing every problem of the partition
+/// (with paths under "bodies[b].partition").
+BodyDecomposition decompose_body(const Model& model, int b, Partition partition, const DecomposeOptions& options = {});
+
+/// The same from the parts: the body, its dof map and its external nodal load (node-major, every dof).
+BodyDecomposition decompose_body(const Body& body, int b, const DofMap& dofs, const Eigen::VectorXd& nodal_load,
+                                 Partition partition, const DecomposeOptions& options = {});
+
+/// How gather_free settles the copies of an interface dof: their mean, or the lowest subdomain's copy.
+enum class InterfaceValue { Average, FirstCopy };
+
+/// Body free-dof vector from the subdomain vectors u_i (one per group, local free dofs).
+Eigen::VectorXd gather_free(const BodyDecomposition& dec, const std::vector<Eigen::VectorXd>& u,
+                            InterfaceValue how = InterfaceValue::Average);
+
+/// Columns of a constraint block written on the undivided body's free dofs (e.g. contact C_j) moved onto the
+/// subdomains: each body dof goes to one copy, the lowest subdomain's (the copies are equal by B u = 0).
+std::vector<SparseMatrix> split_constraint_columns(const SparseMatrix& C_body, const BodyDecomposition& dec);
+
+/// Appends the groups (moved out of `dec`) and their multipliers to a system: the new rows follow the existing
+/// multipliers; every group's C gets the new total row count.
+void append_to_system(BlockSystem& sys, BodyDecomposition& dec);
+
+}  // namespace rollsim
