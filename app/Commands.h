@@ -12,6 +12,9 @@ struct RunOptions {
   std::optional<std::string> solver;
   std::optional<std::string> out;
   std::optional<int> threads;
+  std::optional<std::string> partition;       // [BODY=]SPEC: overrides that body's (default: the first) partition
+  std::optional<std::string> preconditioner;  // none, lumped, dirichlet
+  std::optional<double> cg_tolerance;
   bool quiet = false;
 };
 
@@ -22,7 +25,18 @@ struct BenchOptions {
   std::string csv;
 };
 
+/// `rollsim gui [PROJECT] [--screenshot FILE.png] [--size WxH] [--run]`, and `rollsim` with no arguments.
+struct GuiOptions {
+  std::string project;     // empty: the default project
+  std::string screenshot;  // non-empty: render, save the whole window as PNG, exit
+  std::string size;        // "WxH" window size
+  bool run = false;        // run the analysis first (with --screenshot: results and residual plot in the image)
+  int argc = 0;            // for QApplication
+  char** argv = nullptr;
+};
+
 int run_command(const RunOptions& options);
+int gui_command(GuiOptions options);
 int bench_command(const BenchOptions& options);
 int export_ccx_command(const std::string& project, const std::string& out);
 int check_command(const std::string& project);

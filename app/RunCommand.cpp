@@ -47,6 +47,27 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
     }
     solver["mode"] = *o.solver;
   }
+  if (o.preconditioner) {
+    if (*o.preconditioner != "none" && *o.preconditioner != "lumped" && *o.preconditioner != "dirichlet")
+      return "--preconditioner: must be none, lumped or dirichlet, got '" + *o.preconditioner + "'";
+    solver["preconditioner"] = *o.preconditioner;
+  }
+  if (o.cg_tolerance) {
+    if (!(*o.cg_tolerance > 0 && *o.cg_tolerance < 1))
+      return "--cg-tolerance: must be a number in (0, 1), got " + std::to_string(*o.cg_tolerance);
+    solver["cg_tolerance"] = *o.cg_tolerance;
+  }
+  if (o.partition) {
+    const auto eq = o.partition->find('=');
+    const std::string body = eq == std::string::npos ? "" : o.partition->substr(0, eq);
+    json& bodies = p.data["bodies"];
+    json* target = body.empty() ? &bodies[0] : nullptr;
+    for (auto& b : bodies)
+      if (!body.empty() && b["name"] == body) target = &b;
+    if (!target) return "--partition: no body named '" + body + "'";
+    target->erase("partition_map");
+    (*target)["partition"] = eq == std::string::npos ? *o.partition : o.partition->substr(eq + 1);
+  }
   if (o.threads) {
     if (*o.threads < 1 || *o.threads > 256)
       return "--threads: must be an integer in [1, 256], got " + std::to_string(*o.threads);
@@ -108,15 +129,21 @@ int run_command(const RunOptions& o) {
   } catch (const ProjectError& e) {
     return invalid(e.what());
   }
-  const json& js = project.data.at("solver");
-  RunInfo info{project.name(), js.at("mode").get<std::string>(), js.at("cg_tolerance").get<double>(),
-               js.at("threads").get<int>(), ""};
+  for (const auto& w : model.warnings) std::fprintf(stderr, "rollsim: warning: %s\n", w.c_str());
+  const SolverOptions options = solver_options(project);
+  RunInfo info{project.name(),
+               project.data.at("solver").at("mode").get<std::string>(),
+               options.cg_tolerance,
+               options.threads,
+               "",
+               options.preconditioner,
+               options.multipliers};
   set_blas_threads(info.threads);
   const auto dir = output_dir(project, o);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return invalid("cannot create output directory " + dir.string() + ": " + ec.message());
-  auto solver = make_solver(info.mode, {info.cg_tolerance, info.threads});
+  auto solver = make_solver(info.mode, options);
   Results results;
   int code = 0;
   try {

@@ -1,4 +1,4 @@
-// rollsim: the batch command line (the desktop window joins with the GUI issue).
+// rollsim: the batch command line, and the desktop window (`rollsim gui`, or no arguments).
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -6,6 +6,13 @@
 #include "project/ProjectSchema.h"
 #include "solve/Blas.h"
 #include "solve/SolverStrategy.h"
+
+#ifndef ROLLSIM_HAVE_GUI
+int rollsim::app::gui_command(GuiOptions) {
+  std::cerr << "rollsim: error: this build has no window (configured with -DROLLSIM_BUILD_GUI=OFF)\n";
+  return 2;
+}
+#endif
 
 namespace {
 std::string solver_help() {
@@ -28,6 +35,10 @@ int main(int argc, char** argv) {
   cmd_run->add_option("--solver", run.solver, solver_help());
   cmd_run->add_option("--out", run.out, "output directory (default: the project's output.dir or results/<name>)");
   cmd_run->add_option("--threads", run.threads, "threads for factorizations");
+  cmd_run->add_option("--partition", run.partition,
+                      "[BODY=]SPEC: subdomains for feti, e.g. 4x4, 2x2x1, metis:16 (default body: the first)");
+  cmd_run->add_option("--preconditioner", run.preconditioner, "feti interface preconditioner: none, lumped, dirichlet");
+  cmd_run->add_option("--cg-tolerance", run.cg_tolerance, "relative tolerance of the interface CG (mixed, feti)");
   cmd_run->add_flag("--quiet", run.quiet, "no progress on stderr");
 
   std::string check_file;
@@ -48,6 +59,16 @@ int main(int argc, char** argv) {
 
   auto* cmd_schema = cli.add_subcommand("schema", "print the project file reference (markdown)");
 
+  GuiOptions gui{"", "", "", false, argc, argv};
+  auto* cmd_gui = cli.add_subcommand("gui", "open the desktop window (the default without arguments)");
+  cmd_gui->add_option("project", gui.project, "project file (JSON); default: the built-in default project");
+  cmd_gui->add_option("--screenshot", gui.screenshot, "render, save the whole window as PNG and exit");
+  cmd_gui->add_option("--size", gui.size, "window size WxH (default 1280x800)");
+  cmd_gui->add_flag("--run", gui.run, "run the analysis before the screenshot (results and residual plot shown)");
+
+#ifdef ROLLSIM_HAVE_GUI
+  if (argc == 1) return gui_command(gui);  // no arguments: the window
+#endif
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -63,6 +84,7 @@ int main(int argc, char** argv) {
     if (*cmd_schema) return schema_command();
     if (*cmd_bench) return bench_command(bench);
     if (*cmd_export) return export_ccx_command(export_project, export_out);
+    if (*cmd_gui) return gui_command(gui);
   } catch (const std::exception& e) {
     std::cerr << "rollsim: internal error: " << e.what() << "\n";
     return 1;

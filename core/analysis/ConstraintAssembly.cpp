@@ -2,11 +2,11 @@
 
 namespace rollsim {
 
-void set_constraints(const std::vector<ConstraintRow>& rows, const std::vector<std::unique_ptr<DofMap>>& dofs,
-                     BlockSystem& sys, std::vector<int>* kept) {
-  std::vector<std::vector<Eigen::Triplet<double, int>>> t(sys.groups.size());
+BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
+                                 const std::vector<std::unique_ptr<DofMap>>& dofs) {
+  std::vector<std::vector<Eigen::Triplet<double, int>>> t(dofs.size());
   std::vector<double> d;
-  if (kept) kept->clear();
+  BodyConstraints out;
   for (size_t r = 0; r < rows.size(); ++r) {
     double rhs = rows[r].rhs;
     bool free = false;
@@ -20,17 +20,17 @@ void set_constraints(const std::vector<ConstraintRow>& rows, const std::vector<s
         t[term.body].emplace_back(static_cast<int>(d.size()), eq, term.coef);
       }
     }
-    if (!free) continue;  // only prescribed dofs: nothing entered the groups
+    if (!free) continue;  // only prescribed dofs: nothing entered the blocks
     d.push_back(rhs);
-    if (kept) kept->push_back(static_cast<int>(r));
+    out.kept.push_back(static_cast<int>(r));
   }
   const int m = static_cast<int>(d.size());
-  sys.d = Eigen::Map<Eigen::VectorXd>(d.data(), m);
-  for (size_t g = 0; g < sys.groups.size(); ++g) {
-    Group& grp = sys.groups[g];
-    grp.C.resize(m, grp.K.rows());
-    grp.C.setFromTriplets(t[g].begin(), t[g].end());
+  out.d = Eigen::Map<Eigen::VectorXd>(d.data(), m);
+  for (size_t b = 0; b < dofs.size(); ++b) {
+    out.C.emplace_back(m, dofs[b]->num_free());
+    out.C.back().setFromTriplets(t[b].begin(), t[b].end());
   }
+  return out;
 }
 
 }  // namespace rollsim

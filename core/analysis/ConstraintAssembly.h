@@ -1,18 +1,22 @@
 #pragma once
-// Constraint rows written in body terms (body, node, component) become the block system's C_g and d:
-// free dofs get their coefficient in the owning group, prescribed dofs move their known part to d.
+// Constraint rows written in body terms (body, node, component) become blocks on each body's free dofs:
+// free dofs get their coefficient, prescribed dofs move their known part to the right-hand side d.
 #include <memory>
 #include <vector>
 
 #include "contact/ContactConstraints.h"
 #include "model/DofMap.h"
-#include "solve/BlockSystem.h"
+#include "solve/Factorization.h"
 
 namespace rollsim {
 
-/// Groups are the bodies, in order (group g ↔ body g). Rows without any free dof are dropped and their
-/// indices returned in `dropped` (they constrain prescribed dofs only).
-void set_constraints(const std::vector<ConstraintRow>& rows, const std::vector<std::unique_ptr<DofMap>>& dofs,
-                     BlockSystem& sys, std::vector<int>* kept = nullptr);
+struct BodyConstraints {
+  std::vector<SparseMatrix> C;  // per body: rows × its free dofs
+  Eigen::VectorXd d;
+  std::vector<int> kept;  // kept[r]: the input row of constraint r (rows on prescribed dofs only are dropped)
+};
+
+BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
+                                 const std::vector<std::unique_ptr<DofMap>>& dofs);
 
 }  // namespace rollsim

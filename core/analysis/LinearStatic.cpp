@@ -4,12 +4,10 @@
 
 #include "analysis/ConstraintAssembly.h"
 #include "analysis/ContactResults.h"
+#include "analysis/GroupLayout.h"
 #include "analysis/Recovery.h"
 #include "contact/ContactConstraints.h"
-#include "fem/Assembler.h"
-#include "fem/Loads.h"
 #include "model/DofMap.h"
-#include "model/RigidModes.h"
 #include "solve/Stopwatch.h"
 
 namespace rollsim {
@@ -42,33 +40,6 @@ std::string describe_singular(const Model& model, const std::vector<std::unique_
 namespace {
 constexpr int kMaxActiveSetIterations = 50;
 
-bool in_contact(const Model& model, int b) {
-  for (const ContactPair& p : model.contacts)
-    if (p.slave_body == b || p.master_body == b) return true;
-  return false;
-}
-
-/// One group per body: K, f and, for a body held only by contact, its kernel (paper eq. (5)).
-BlockSystem assemble_groups(const Model& model, std::vector<std::unique_ptr<DofMap>>& dofs, Results& res) {
-  BlockSystem sys;
-  for (size_t b = 0; b < model.bodies.size(); ++b) {
-    const Body& body = model.bodies[b];
-    dofs.push_back(std::make_unique<DofMap>(body, static_cast<int>(b), model.displacements));
-    Group g;
-    g.name = body.name;
-    g.body = static_cast<int>(b);
-    Assembler assembler(body, *dofs.back());
-    assembler.assemble(g.K, g.f);
-    g.f += dofs.back()->restrict_to_free(external_nodal_load(model, static_cast<int>(b)));
-    g.R =
-        in_contact(model, static_cast<int>(b)) ? kernel_basis(body.mesh, *dofs.back()) : Eigen::MatrixXd(g.K.rows(), 0);
-    res.dofs += g.K.rows();
-    res.rigid_modes += g.R.cols();
-    sys.groups.push_back(std::move(g));
-  }
-  return sys;
-}
-
 BlockSolution solve_checked(const Model& model, const std::vector<std::unique_ptr<DofMap>>& dofs,
                             SolverStrategy& solver, const BlockSystem& sys, AnalysisObserver& obs) {
   try {
@@ -85,9 +56,9 @@ BlockSolution solve_checked(const Model& model, const std::vector<std::unique_pt
 }
 
 std::vector<Eigen::VectorXd> full_displacements(const std::vector<std::unique_ptr<DofMap>>& dofs,
-                                                const BlockSolution& sol) {
+                                                const std::vector<Eigen::VectorXd>& free) {
   std::vector<Eigen::VectorXd> u;
-  for (size_t b = 0; b < dofs.size(); ++b) u.push_back(dofs[b]->expand(sol.u[b]));
+  for (size_t b = 0; b < dofs.size(); ++b) u.push_back(dofs[b]->expand(free[b]));
   return u;
 }
 
@@ -96,6 +67,10 @@ bool has_unilateral(const Model& model) {
     if (p.kind == ContactKind::Frictionless) return true;
   return false;
 }
+
+Multipliers multiplier_choice(const SolverOptions& o) {
+  return o.multipliers == "redundant" ? Multipliers::FullyRedundant : Multipliers::NonRedundant;
+}
 }  // namespace
 
 Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer) {
@@ -103,10 +78,16 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   AnalysisObserver& obs = observer ? *observer : quiet;
   Stopwatch total;
   Results res;
-  std::vector<std::unique_ptr<DofMap>> dofs;
   obs.on_stage("assemble");
   Stopwatch t;
-  BlockSystem sys = assemble_groups(model, dofs, res);
+  GroupLayout layout(model, solver.uses_subdomains(), multiplier_choice(solver.options()));
+  BlockSystem& sys = layout.system();
+  const auto& dofs = layout.body_dofs();
+  res.dofs = sys.num_dofs();
+  res.rigid_modes = sys.num_rigid_modes();
+  res.subdomains = layout.subdomains();
+  res.interface_multipliers = layout.interface_multipliers();
+  res.paper_convention_multipliers = layout.paper_convention_multipliers();
   res.timing.stiffness_s = t.seconds();
   std::vector<PairState> pairs;
   try {
@@ -115,7 +96,7 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
     throw AnalysisError(e.what());
   }
   std::vector<ConstraintRow> rows;
-  std::vector<int> kept;
+  BodyConstraints contact;
   BlockSolution sol;
   std::vector<Eigen::VectorXd> u;
   for (int it = 1;; ++it) {
@@ -124,15 +105,16 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
       return res;
     }
     rows = contact_rows(model, pairs);
-    set_constraints(rows, dofs, sys, &kept);
+    contact = body_constraints(rows, dofs);
+    layout.set_contact(contact);
     obs.on_stage("solve");
     sol = solve_checked(model, dofs, solver, sys, obs);
-    u = full_displacements(dofs, sol);
+    u = full_displacements(dofs, layout.body_solution(sol));
     res.active_set_iterations = it;
     if (!has_unilateral(model)) break;
     std::vector<ConstraintRow> kept_rows;
-    for (int r : kept) kept_rows.push_back(rows[r]);
-    const int changed = update_active_set(model, kept_rows, sol.lambda, u, pairs);
+    for (int r : contact.kept) kept_rows.push_back(rows[r]);
+    const int changed = update_active_set(model, kept_rows, sol.lambda.head(contact.d.size()), u, pairs);
     obs.on_iteration("active_set", it, changed);
     if (changed == 0) break;
     if (it == kMaxActiveSetIterations) {
@@ -140,15 +122,19 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
       break;
     }
   }
-  res.multipliers = sys.num_multipliers();
+  res.multipliers = contact.d.size();
   const SolveStats& st = solver.stats();
   res.timing.analyze_s = st.analyze_s;
   res.timing.factorize_s = st.factorize_s;
   res.timing.solve_s = st.solve_s;
   obs.on_stage("recover");
   Stopwatch tr;
-  for (size_t b = 0; b < model.bodies.size(); ++b) res.bodies.push_back(recover(model, static_cast<int>(b), u[b]));
-  contact_results(model, pairs, rows, kept, sol.lambda, res);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    res.bodies.push_back(recover(model, static_cast<int>(b), u[b]));
+    if (!model.bodies[b].partition.element_subdomain.empty())
+      res.bodies.back().subdomain = model.bodies[b].partition.element_subdomain;
+  }
+  contact_results(model, pairs, rows, contact.kept, sol.lambda.head(contact.d.size()), res);
   res.timing.recovery_s = tr.seconds();
   res.timing.total_s = total.seconds();
   return res;

@@ -36,7 +36,9 @@ struct Results {
   std::vector<BodyResults> bodies;
   long dofs = 0;
   long multipliers = 0;  // contact multipliers of the last solve
-  long rigid_modes = 0;  // floating-body modes handled by the solver
+  long rigid_modes = 0;  // floating-body and floating-subdomain modes handled by the solver
+  long subdomains = 0;   // groups of the block system (bodies, or their subdomains under feti)
+  long interface_multipliers = 0, paper_convention_multipliers = 0;
   int active_set_iterations = 0;
   std::vector<ContactResult> contacts;
   Timing timing;

@@ -24,8 +24,9 @@ json model_section(const Model& m, const Results& r) {
           {"dofs", r.dofs},
           {"bodies", m.bodies.size()},
           {"contact_multipliers", r.multipliers},
-          {"interface_multipliers", 0},
-          {"subdomains", m.bodies.size()},
+          {"interface_multipliers", r.interface_multipliers},
+          {"interface_multipliers_paper_convention", r.paper_convention_multipliers},
+          {"subdomains", r.subdomains},
           {"rigid_modes", r.rigid_modes},
           {"contact_pairs", m.contacts.size()}};
 }
@@ -71,6 +72,8 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
                  {"active_set_iterations", r.active_set_iterations},
                  {"factorizations", factorizations},
                  {"threads", run.threads},
+                 {"preconditioner", run.preconditioner},
+                 {"multipliers", run.multipliers},
                  {"blas", blas_description()},
                  {"ordering", st.factor.ordering},
                  {"factor_nnz", st.factor.nnz_factor},

@@ -14,7 +14,9 @@ struct RunInfo {
   std::string mode;     // solver strategy name
   double cg_tolerance = 1e-4;
   int threads = 1;
-  std::string error;  // message when status is "error"
+  std::string error;                    // message when status is "error"
+  std::string preconditioner = "none";  // feti
+  std::string multipliers = "nonredundant";
 };
 
 nlohmann::json make_summary(const Model& model, const Results& results, const SolveStats& stats, const RunInfo& run);

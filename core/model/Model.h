@@ -9,6 +9,7 @@
 #include "fem/SolidElement.h"
 #include "material/LinearElastic.h"
 #include "mesh/Mesh.h"
+#include "partition/Partition.h"
 
 namespace rollsim {
 
@@ -18,6 +19,7 @@ struct Body {
   LinearElastic material;
   std::string material_name;
   Formulation formulation = Formulation::Full;
+  Partition partition;  // subdomains for `feti` (one subdomain: undivided)
 };
 
 /// Prescribed displacement per component (unset components stay free) on a node set.
@@ -72,6 +74,7 @@ struct Model {
   std::vector<Pressure> pressures;
   std::vector<Probe> probes;
   std::vector<ContactPair> contacts;
+  std::vector<std::string> warnings;  // said to the user, e.g. a partition piece split automatically
 
   long total_nodes() const;
   long total_elements() const;

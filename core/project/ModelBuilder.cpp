@@ -6,6 +6,8 @@
 #include <set>
 
 #include "model/RigidModes.h"
+#include "partition/PartitionCheck.h"
+#include "partition/PartitionSpec.h"
 #include "project/MeshFactory.h"
 #include "project/ProjectSchema.h"
 
@@ -102,6 +104,28 @@ void check_project_name(const json& project, std::vector<Issue>& issues) {
                      describe(project.at("name"))});
 }
 
+void check_partition_fields(const json& body, const std::string& path, std::vector<Issue>& issues) {
+  if (body.contains("partition") && body.contains("partition_map"))
+    issues.push_back({path + ".partition_map", "give either `partition` or `partition_map`, not both"});
+  if (body.contains("partition")) {
+    try {
+      parse_partition_spec(body.at("partition").get<std::string>());
+    } catch (const PartitionError& e) {
+      for (const auto& p : e.problems()) issues.push_back({path + "." + p.path, p.message});
+    }
+  }
+  if (!body.contains("partition_map")) return;
+  const json& map = body.at("partition_map");
+  for (size_t i = 0; i < map.size(); ++i) {
+    const double v = map[i].get<double>();
+    if (v != std::floor(v) || v < 0 || v > 1e6) {
+      issues.push_back(
+          {at(path + ".partition_map", i), "must be a subdomain id (an integer from 0), got " + describe(map[i])});
+      return;
+    }
+  }
+}
+
 bool in_contact(const json& project, const json& name) {
   for (const auto& c : project.at("contacts"))
     if (c.at("slave_body") == name || c.at("master_body") == name) return true;
@@ -164,6 +188,7 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
     check_mesh_spec(body.at("mesh"), path + ".mesh", dim, issues);
     elements += estimated_elements(body.at("mesh"), dim);
     check_node_sets(body, path, dim, issues);
+    check_partition_fields(body, path, issues);
   }
   if (elements > kMaxElements)
     issues.push_back({"bodies", "the meshes would have " + std::to_string(static_cast<long long>(elements)) +
@@ -260,6 +285,29 @@ void add_condition(Model& model, const json& bc, const json& bodies) {
   model.displacements.push_back(std::move(d));
 }
 
+/// The partition of a body (one subdomain when none is asked for); its problems are reported with JSON paths.
+Partition body_partition(const json& jb, const Mesh& mesh, const std::string& path, std::vector<Issue>& issues,
+                         std::vector<std::string>& warnings) {
+  PartitionSpec spec;
+  std::string where = path + ".partition";
+  if (jb.contains("partition")) {
+    spec = parse_partition_spec(jb.at("partition").get<std::string>());
+  } else if (jb.contains("partition_map")) {
+    spec.kind = PartitionKind::Explicit;
+    for (const auto& v : jb.at("partition_map")) spec.map.push_back(static_cast<int>(v.get<double>()));
+    where = path + ".partition_map";
+  } else {
+    Partition whole;
+    whole.element_subdomain.assign(static_cast<size_t>(mesh.num_elements()), 0);
+    whole.description = "1";
+    return whole;
+  }
+  Partition p = make_partition(mesh, spec);
+  for (const auto& w : split_disconnected(mesh, p)) warnings.push_back(where + ": " + w);
+  for (const auto& problem : check_partition(mesh, p, where)) issues.push_back({problem.path, problem.message});
+  return p;
+}
+
 double model_size(const Model& model) {
   double s = 0;
   for (const Body& b : model.bodies) s = std::max(s, mesh_size(b.mesh));
@@ -283,6 +331,16 @@ void add_contacts(Model& model, const json& d) {
 
 }  // namespace
 
+SolverOptions solver_options(const Project& project) {
+  const json& s = project.data.at("solver");
+  SolverOptions o;
+  o.cg_tolerance = s.at("cg_tolerance").get<double>();
+  o.threads = s.at("threads").get<int>();
+  o.preconditioner = s.at("preconditioner").get<std::string>();
+  o.multipliers = s.at("multipliers").get<std::string>();
+  return o;
+}
+
 Model build_model(const Project& project) {
   const json& d = project.data;
   Model model;
@@ -304,6 +362,11 @@ Model build_model(const Project& project) {
       continue;
     }
     add_user_sets(body.mesh, jb.at("node_sets"), at("bodies", b) + ".node_sets", issues);
+    try {
+      body.partition = body_partition(jb, body.mesh, at("bodies", b), issues, model.warnings);
+    } catch (const PartitionError& e) {
+      for (const auto& p : e.problems()) issues.push_back({at("bodies", b) + "." + p.path, p.message});
+    }
     model.bodies.push_back(std::move(body));
   }
   if (!issues.empty()) throw ProjectError(project.source, issues);

@@ -6,11 +6,15 @@
 
 #include "model/Model.h"
 #include "project/Project.h"
+#include "solve/SolverStrategy.h"
 
 namespace rollsim {
 
 /// Checks names, references, generator parameters and model size; appends problems to `issues`.
 void check_references(const Project& project, std::vector<Issue>& issues);
+
+/// The solver section as strategy options (validated values).
+SolverOptions solver_options(const Project& project);
 
 /// Builds the model. Throws ProjectError for problems only visible on the mesh (inverted elements).
 Model build_model(const Project& project);

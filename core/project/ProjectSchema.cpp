@@ -178,7 +178,13 @@ const ObjectSchema kBody{
        f.doc = "mesh generator";
        return f;
      }(),
-     objects("node_sets", kNodeSet, "extra named node sets")},
+     objects("node_sets", kNodeSet, "extra named node sets"),
+     str("partition",
+         "subdomains for the `feti` solver: \"AxB\" / \"AxBxC\" slices along x, y (, z) by element centroid, or "
+         "\"metis:N\" (METIS k-way on the element dual graph); --partition overrides"),
+     vec("partition_map", "-",
+         "explicit element → subdomain map (integers from 0, one per element, e.g. painted in the window); excludes "
+         "`partition`")},
     "",
     {}};
 
@@ -263,6 +269,11 @@ const ObjectSchema& solver_schema() {
       "Linear solver settings.",
       {choice("mode", solver_names(), "direct", "solver strategy (see docs/ARCHITECTURE.md)"),
        def(count("threads", "threads for the factorization (BLAS) and parallel groups", 256), 1),
+       choice("preconditioner", {"none", "lumped", "dirichlet"}, "none",
+              "interface preconditioner of `feti` (none: the paper's unpreconditioned projected CG)"),
+       choice("multipliers", {"nonredundant", "redundant"}, "nonredundant",
+              "subdomain glue of `feti`: nonredundant (k − 1 constraints per dof shared by k subdomains, the paper's) "
+              "or redundant (all k(k − 1)/2 pairs)"),
        [] {
          Field f =
              def(positive("cg_tolerance", "-", "relative residual tolerance of the interface CG (mixed/feti)"), 1e-4);

@@ -23,7 +23,10 @@ struct Group {
 
 struct BlockSystem {
   std::vector<Group> groups;
-  Eigen::VectorXd d;  // right-hand side of the constraints, one entry per multiplier
+  Eigen::VectorXd d;        // right-hand side of the constraints, one entry per multiplier
+  Eigen::VectorXd scaling;  // per multiplier, for preconditioners: 1/multiplicity on subdomain glue (empty: ones)
+  long glue_begin = 0, glue_end = 0;  // the rows gluing subdomains (B_i), for the preconditioners' scaling
+  bool glue_redundant = false;        // fully redundant glue: diagonal scaling; otherwise (B Bᵀ)⁻¹
 
   long num_dofs() const {
     long n = 0;

@@ -3,7 +3,10 @@
 // multipliers found by (projected) CG on the condensed interface without forming it — each product F p is,
 // per group, p → C_gᵀp → K_g⁺ (forward/back substitution) → C_g(·) — and the displacements recovered by
 // u_g = K_g⁺(f_g − C_gᵀλ) + R_g α_g. A group is refactored only when its stiffness changed (Group::version).
+#include <functional>
+
 #include "solve/GroupSolver.h"
+#include "solve/InterfacePreconditioner.h"
 #include "solve/ProjectedCG.h"
 #include "solve/SolverStrategy.h"
 
@@ -11,9 +14,12 @@ namespace rollsim {
 
 class MixedStrategy final : public SolverStrategy {
  public:
-  MixedStrategy(SolverOptions options, std::string factorization = "cholmod");
+  /// `subdomains`: the `feti` flavour (partitioned bodies torn into subdomains, preconditioner from the options).
+  MixedStrategy(SolverOptions options, bool subdomains = false, std::string factorization = "cholmod");
   BlockSolution solve(const BlockSystem& system, AnalysisObserver* observer = nullptr) override;
   const SolveStats& stats() const override { return stats_; }
+  bool uses_subdomains() const override { return subdomains_; }
+  const SolverOptions& options() const override { return options_; }
   /// The last interface solve (residual history, constraint error), for tests and reports.
   const ProjectedCGResult& last_interface_solve() const { return last_; }
 
@@ -21,7 +27,14 @@ class MixedStrategy final : public SolverStrategy {
   void factorize_changed(const BlockSystem& sys);
   InterfaceProblem interface_problem(const BlockSystem& sys, const std::vector<Eigen::VectorXd>& Kf);
 
+  /// y = Σ_g op(g) over the groups, concurrently on options_.threads threads; summed in group order, so the
+  /// result is bit-identical for any thread count.
+  Eigen::VectorXd sum_over_groups(const BlockSystem& sys, const std::function<Eigen::VectorXd(size_t)>& op) const;
+
   SolverOptions options_;
+  bool subdomains_;
+  std::unique_ptr<InterfacePreconditioner> preconditioner_;
+  long preconditioned_rows_ = -1;
   std::string kind_;
   std::vector<GroupSolver> groups_;
   std::vector<long> factored_version_;

@@ -19,6 +19,10 @@ const std::vector<StrategyInfo>& solver_registry() {
        "each body factored on its own (CHOLMOD), CG on the condensed contact interface, projected CG for floating "
        "bodies (the paper's mixed method)",
        [](const SolverOptions& o) { return std::make_unique<MixedStrategy>(o); }},
+      {"feti",
+       "FETI: partitioned bodies torn into subdomains, each factored on its own, projected CG on the subdomain and "
+       "contact multipliers with an optional lumped / Dirichlet preconditioner",
+       [](const SolverOptions& o) { return std::make_unique<MixedStrategy>(o, true); }},
   };
   return registry;
 }

@@ -14,7 +14,9 @@ namespace rollsim {
 
 struct SolverOptions {
   double cg_tolerance = 1e-4;
-  int threads = 1;
+  int threads = 1;                           // groups factored and solved concurrently (mixed / feti)
+  std::string preconditioner = "none";       // interface preconditioner: none, lumped, dirichlet (feti)
+  std::string multipliers = "nonredundant";  // subdomain glue: nonredundant, redundant (feti)
 };
 
 struct SolveStats {
@@ -31,6 +33,12 @@ class SolverStrategy {
   /// iteration to `observer` (may be null).
   virtual BlockSolution solve(const BlockSystem& system, AnalysisObserver* observer = nullptr) = 0;
   virtual const SolveStats& stats() const = 0;
+  /// True when the strategy wants partitioned bodies torn into subdomain groups (feti).
+  virtual bool uses_subdomains() const { return false; }
+  virtual const SolverOptions& options() const {
+    static const SolverOptions defaults;
+    return defaults;
+  }
 };
 
 struct StrategyInfo {

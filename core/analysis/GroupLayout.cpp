@@ -1,0 +1,131 @@
+#include "analysis/GroupLayout.h"
+
+#include "fem/Assembler.h"
+#include "fem/Loads.h"
+#include "model/RigidModes.h"
+
+namespace rollsim {
+
+namespace {
+bool in_contact(const Model& model, int b) {
+  for (const ContactPair& p : model.contacts)
+    if (p.slave_body == b || p.master_body == b) return true;
+  return false;
+}
+
+/// One group for a whole body: K, f and, for a body held only by contact, its kernel (paper eq. (5)).
+Group body_group(const Model& model, int b, const DofMap& dofs) {
+  const Body& body = model.bodies[b];
+  Group g;
+  g.name = body.name;
+  g.body = b;
+  Assembler(body, dofs).assemble(g.K, g.f);
+  g.f += dofs.restrict_to_free(external_nodal_load(model, b));
+  g.R = in_contact(model, b) ? kernel_basis(body.mesh, dofs) : Eigen::MatrixXd(g.K.rows(), 0);
+  return g;
+}
+
+/// Multiplicity scaling of the interface rows, in boolean_blocks' order (node, pair, free component).
+std::vector<double> row_scaling(const BodyDecomposition& dec, const DofMap& dofs) {
+  std::vector<double> w;
+  for (const InterfaceNode& n : dec.interface.nodes)
+    for (size_t p = 0; p < constraint_pairs(n, dec.multipliers).size(); ++p)
+      for (int c = 0; c < dofs.dim(); ++c)
+        if (dofs.equation(n.node, c) >= 0) w.push_back(1.0 / dec.interface.multiplicity[n.node]);
+  return w;
+}
+
+SparseMatrix shift_rows(const SparseMatrix& A, long offset, long rows) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+      t.emplace_back(static_cast<int>(offset + it.row()), j, it.value());
+  SparseMatrix S(static_cast<int>(rows), A.cols());
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+/// [top; bottom] for two blocks with the same columns.
+SparseMatrix stack(const SparseMatrix& top, const SparseMatrix& bottom) {
+  SparseMatrix S = shift_rows(bottom, top.rows(), top.rows() + bottom.rows());
+  return S + shift_rows(top, 0, S.rows());
+}
+}  // namespace
+
+GroupLayout::GroupLayout(const Model& model, bool split, Multipliers choice) {
+  sys_.glue_redundant = choice != Multipliers::NonRedundant;
+  for (size_t b = 0; b < model.bodies.size(); ++b) add_body(model, static_cast<int>(b), split, choice);
+  // interface rows of every body, one after the other
+  std::vector<long> offset;
+  for (const BodyGroups& bg : bodies_) {
+    offset.push_back(interface_rows_);
+    if (bg.dec) interface_rows_ += bg.dec->num_multipliers();
+  }
+  interface_C_.resize(sys_.groups.size());
+  for (size_t b = 0; b < bodies_.size(); ++b)
+    for (int i = 0; i < bodies_[b].count; ++i) {
+      const int g = bodies_[b].first + i;
+      const SparseMatrix& B = sys_.groups[g].C;
+      interface_C_[g] = bodies_[b].dec ? shift_rows(B, offset[b], interface_rows_)
+                                       : SparseMatrix(static_cast<int>(interface_rows_), sys_.groups[g].K.rows());
+    }
+  set_contact(BodyConstraints{std::vector<SparseMatrix>(), Eigen::VectorXd(), {}});
+}
+
+void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers choice) {
+  const Body& body = model.bodies[b];
+  dofs_.push_back(std::make_unique<DofMap>(body, b, model.displacements));
+  BodyGroups bg;
+  bg.first = static_cast<int>(sys_.groups.size());
+  if (split && body.partition.num_subdomains > 1) {
+    DecomposeOptions opt;
+    opt.multipliers = choice;
+    bg.dec = decompose_body(body, b, *dofs_.back(), external_nodal_load(model, b), body.partition, opt);
+    warnings_.insert(warnings_.end(), bg.dec->warnings.begin(), bg.dec->warnings.end());
+    paper_rows_ += bg.dec->paper_convention_multipliers;
+    const auto w = row_scaling(*bg.dec, *dofs_.back());
+    interface_scaling_.insert(interface_scaling_.end(), w.begin(), w.end());
+    bg.count = static_cast<int>(bg.dec->groups.size());
+    for (Group& g : bg.dec->groups) sys_.groups.push_back(std::move(g));
+    bg.dec->groups.clear();
+  } else {
+    sys_.groups.push_back(body_group(model, b, *dofs_.back()));
+  }
+  bodies_.push_back(std::move(bg));
+}
+
+void GroupLayout::set_contact(const BodyConstraints& contact) {
+  const long mc = contact.d.size();
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    const BodyGroups& bg = bodies_[b];
+    std::vector<SparseMatrix> parts;
+    if (contact.C.empty())
+      for (int i = 0; i < bg.count; ++i) parts.emplace_back(0, sys_.groups[bg.first + i].K.rows());
+    else if (bg.dec)
+      parts = split_constraint_columns(contact.C[b], *bg.dec);
+    else
+      parts = {contact.C[b]};
+    for (int i = 0; i < bg.count; ++i) sys_.groups[bg.first + i].C = stack(parts[i], interface_C_[bg.first + i]);
+  }
+  sys_.d = Eigen::VectorXd::Zero(mc + interface_rows_);
+  sys_.d.head(mc) = contact.d;
+  sys_.scaling = Eigen::VectorXd::Ones(mc + interface_rows_);
+  for (long r = 0; r < interface_rows_; ++r) sys_.scaling[mc + r] = interface_scaling_[r];
+  sys_.glue_begin = mc;
+  sys_.glue_end = mc + interface_rows_;
+}
+
+std::vector<Eigen::VectorXd> GroupLayout::body_solution(const BlockSolution& sol) const {
+  std::vector<Eigen::VectorXd> u;
+  for (const BodyGroups& bg : bodies_) {
+    if (!bg.dec) {
+      u.push_back(sol.u[bg.first]);
+      continue;
+    }
+    const std::vector<Eigen::VectorXd> parts(sol.u.begin() + bg.first, sol.u.begin() + bg.first + bg.count);
+    u.push_back(gather_free(*bg.dec, parts));
+  }
+  return u;
+}
+
+}  // namespace rollsim

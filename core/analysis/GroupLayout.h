@@ -1,0 +1,50 @@
+#pragma once
+// How the bodies become the block system's groups (DESIGN.md): one group per body, or — for a partitioned body
+// when the strategy works on subdomains (feti) — one group per subdomain, glued by the interface rows B_i
+// (paper §2). The multipliers are ordered [contact; interface]: contact rows change with the active set, the
+// interface rows never do.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "analysis/ConstraintAssembly.h"
+#include "analysis/Results.h"
+#include "partition/Decomposition.h"
+#include "solve/BlockSystem.h"
+
+namespace rollsim {
+
+class GroupLayout {
+ public:
+  /// Assembles every group. `split`: tear partitioned bodies into subdomains.
+  GroupLayout(const Model& model, bool split, Multipliers choice);
+
+  BlockSystem& system() { return sys_; }
+  const std::vector<std::unique_ptr<DofMap>>& body_dofs() const { return dofs_; }
+  /// Puts the contact rows (blocks on the bodies' free dofs) in front of the interface rows.
+  void set_contact(const BodyConstraints& contact);
+  /// Free-dof vector of every body from the groups' solution (interface copies averaged).
+  std::vector<Eigen::VectorXd> body_solution(const BlockSolution& sol) const;
+
+  long subdomains() const { return static_cast<long>(sys_.groups.size()); }
+  long interface_multipliers() const { return interface_rows_; }
+  long paper_convention_multipliers() const { return paper_rows_; }
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  struct BodyGroups {
+    int first = 0, count = 1;
+    std::optional<BodyDecomposition> dec;
+  };
+  void add_body(const Model& model, int b, bool split, Multipliers choice);
+
+  BlockSystem sys_;
+  std::vector<std::unique_ptr<DofMap>> dofs_;
+  std::vector<BodyGroups> bodies_;
+  std::vector<SparseMatrix> interface_C_;  // per group: its interface rows, in the global interface numbering
+  std::vector<double> interface_scaling_;
+  long interface_rows_ = 0, paper_rows_ = 0;
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace rollsim

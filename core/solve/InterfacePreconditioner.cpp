@@ -1,0 +1,131 @@
+#include "solve/InterfacePreconditioner.h"
+
+#include <stdexcept>
+
+#include "solve/Factorization.h"
+
+namespace rollsim {
+
+namespace {
+/// Interface (boundary) dofs of a group: the columns of C_g that hold an entry.
+std::vector<int> boundary_dofs(const SparseMatrix& C) {
+  std::vector<int> b;
+  for (int j = 0; j < C.outerSize(); ++j)
+    if (C.outerIndexPtr()[j + 1] > C.outerIndexPtr()[j]) b.push_back(j);
+  return b;
+}
+
+SparseMatrix select(const SparseMatrix& A, const std::vector<int>& rows, const std::vector<int>& cols) {
+  std::vector<int> rpos(static_cast<size_t>(A.rows()), -1), cpos(static_cast<size_t>(A.cols()), -1);
+  for (size_t i = 0; i < rows.size(); ++i) rpos[rows[i]] = static_cast<int>(i);
+  for (size_t i = 0; i < cols.size(); ++i) cpos[cols[i]] = static_cast<int>(i);
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int j = 0; j < A.outerSize(); ++j)
+    if (cpos[j] >= 0)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        if (rpos[it.row()] >= 0) t.emplace_back(rpos[it.row()], cpos[j], it.value());
+  SparseMatrix S(static_cast<int>(rows.size()), static_cast<int>(cols.size()));
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+/// Per group: boundary dofs, C_g on them (scaled by W), K_bb, and for dirichlet K_ib and the factor of K_ii.
+struct GroupBlocks {
+  std::vector<int> boundary;
+  SparseMatrix WCb;  // W C_g restricted to the boundary columns
+  SparseMatrix Kbb, Kib;
+  std::unique_ptr<Factorization> Kii;
+};
+
+class BlockPreconditioner final : public InterfacePreconditioner {
+ public:
+  explicit BlockPreconditioner(bool dirichlet) : dirichlet_(dirichlet) {}
+
+  void setup(const BlockSystem& sys) override {
+    blocks_.clear();
+    Eigen::VectorXd w = sys.scaling.size() ? sys.scaling : Eigen::VectorXd::Ones(sys.num_multipliers());
+    glue_ = {sys.glue_begin, sys.glue_end - sys.glue_begin};
+    BBt_.reset();
+    if (!sys.glue_redundant && glue_.second > 0) {
+      factor_glue(sys);
+      w.segment(glue_.first, glue_.second).setOnes();  // (B Bᵀ)⁻¹ replaces the multiplicity weights
+    }
+    for (const Group& g : sys.groups) {
+      GroupBlocks b;
+      b.boundary = boundary_dofs(g.C);
+      if (!b.boundary.empty()) {
+        std::vector<int> all(static_cast<size_t>(g.C.rows()));
+        for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+        b.WCb = w.asDiagonal() * select(g.C, all, b.boundary);
+        b.Kbb = select(g.K, b.boundary, b.boundary);
+        if (dirichlet_) factor_interior(g, b);
+      }
+      blocks_.push_back(std::move(b));
+    }
+  }
+
+  Eigen::VectorXd apply(const BlockSystem&, const Eigen::VectorXd& r_in) const override {
+    const Eigen::VectorXd r = scale(r_in);
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(r.size());
+    for (const GroupBlocks& b : blocks_) {
+      if (b.boundary.empty()) continue;
+      const Eigen::VectorXd v = b.WCb.transpose() * r;
+      Eigen::VectorXd s = b.Kbb * v;
+      if (b.Kii) s -= b.Kib.transpose() * b.Kii->solve(b.Kib * v);  // S v = K_bb v − K_bi K_ii⁻¹ K_ib v
+      z += b.WCb * s;
+    }
+    return scale(z);
+  }
+
+ private:
+  static void factor_interior(const Group& g, GroupBlocks& b) {
+    std::vector<char> is_boundary(static_cast<size_t>(g.K.rows()), 0);
+    for (int d : b.boundary) is_boundary[d] = 1;
+    std::vector<int> interior;
+    for (int d = 0; d < g.K.rows(); ++d)
+      if (!is_boundary[d]) interior.push_back(d);
+    if (interior.empty()) return;
+    b.Kib = select(g.K, interior, b.boundary);
+    const SparseMatrix Kii = select(g.K, interior, interior);
+    b.Kii = make_factorization("cholmod");
+    b.Kii->analyze(Kii);
+    b.Kii->factorize(Kii);
+  }
+
+  /// Non-redundant glue (a spanning tree of k − 1 pairs where k subdomains meet) is scaled by (B Bᵀ)⁻¹, the
+  /// generalisation of the 1/2 weights of a two-subdomain interface: with plain 1/k weights the crosspoints spoil
+  /// the preconditioner (measured: Dirichlet 34 iterations instead of 8 on a 20×20 cantilever, 4×2 subdomains).
+  void factor_glue(const BlockSystem& sys) {
+    SparseMatrix BBt(static_cast<int>(glue_.second), static_cast<int>(glue_.second));
+    for (const Group& g : sys.groups) {
+      const SparseMatrix B = g.C.middleRows(glue_.first, glue_.second);
+      BBt += SparseMatrix(B * B.transpose());
+    }
+    BBt_ = make_factorization("cholmod");
+    BBt_->analyze(BBt);
+    BBt_->factorize(BBt);
+  }
+  Eigen::VectorXd scale(const Eigen::VectorXd& v) const {
+    if (!BBt_) return v;
+    Eigen::VectorXd out = v;
+    out.segment(glue_.first, glue_.second) = BBt_->solve(v.segment(glue_.first, glue_.second));
+    return out;
+  }
+
+  bool dirichlet_;
+  std::vector<GroupBlocks> blocks_;
+  std::pair<long, long> glue_{0, 0};  // first row, count
+  std::unique_ptr<Factorization> BBt_;
+};
+}  // namespace
+
+std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(const std::string& name) {
+  if (name == "none") return nullptr;
+  if (name == "lumped") return std::make_unique<BlockPreconditioner>(false);
+  if (name == "dirichlet") return std::make_unique<BlockPreconditioner>(true);
+  throw std::invalid_argument("unknown preconditioner '" + name + "' (valid: none, lumped, dirichlet)");
+}
+
+std::vector<std::string> interface_preconditioner_names() { return {"none", "lumped", "dirichlet"}; }
+
+}  // namespace rollsim

@@ -1,0 +1,29 @@
+#pragma once
+// FETI preconditioners of the interface operator F = Σ_g C_g K_g⁺ C_gᵀ (beyond the paper, which ran
+// unpreconditioned): with W the multiplier scaling (1/multiplicity on subdomain glue rows, 1 on contact rows),
+//   lumped:    M⁻¹ = Σ_g W C_g K_g C_gᵀ W            (the group stiffness on its interface dofs)
+//   dirichlet: M⁻¹ = Σ_g W C_g S_g C_gᵀ W,  S_g = K_bb − K_bi K_ii⁻¹ K_ib   (Schur complement on the interface)
+// (Farhat, Mandel, Roux 1994; Rixen, Farhat 1999 for the scaling).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "solve/BlockSystem.h"
+
+namespace rollsim {
+
+class InterfacePreconditioner {
+ public:
+  virtual ~InterfacePreconditioner() = default;
+  /// Prepares for the groups' current stiffness (factors K_ii for dirichlet).
+  virtual void setup(const BlockSystem& sys) = 0;
+  /// z = M⁻¹ w
+  virtual Eigen::VectorXd apply(const BlockSystem& sys, const Eigen::VectorXd& w) const = 0;
+};
+
+/// "none" gives nullptr; "lumped", "dirichlet"; anything else throws std::invalid_argument.
+std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(const std::string& name);
+/// The names above, for validation and help.
+std::vector<std::string> interface_preconditioner_names();
+
+}  // namespace rollsim
