@@ -184,7 +184,8 @@ const ObjectSchema kBody{
          "\"metis:N\" (METIS k-way on the element dual graph); --partition overrides"),
      vec("partition_map", "-",
          "explicit element → subdomain map (integers from 0, one per element, e.g. painted in the window); excludes "
-         "`partition`")},
+         "`partition`",
+         -1)},
     "",
     {}};
 

@@ -117,14 +117,16 @@ void check_choice(const json& v, const Field& f, const std::string& path, std::v
 }
 
 void check_vector(const json& v, const Field& f, const std::string& path, int dim, std::vector<Issue>& out) {
-  const size_t n = f.vector_size ? static_cast<size_t>(f.vector_size) : static_cast<size_t>(dim);
+  const bool any = f.vector_size < 0;
+  const size_t n = any ? (v.is_array() ? v.size() : 0) : f.vector_size ? f.vector_size : static_cast<size_t>(dim);
   bool ok = v.is_array() && v.size() == n;
   if (ok)
     for (const auto& x : v) ok = ok && x.is_number() && std::isfinite(x.get<double>()) && in_range(f, x.get<double>());
   if (!ok) {
     std::string r = range_text(f);
-    out.push_back({path, "must be an array of " + std::to_string(n) + " finite numbers" + (r.empty() ? "" : " " + r) +
-                             ", got " + (v.is_array() ? "[" + v.dump().substr(1, 60) : describe(v))});
+    out.push_back({path, "must be an array of " + (any ? std::string("") : std::to_string(n) + " ") + "finite numbers" +
+                             (r.empty() ? "" : " " + r) + ", got " +
+                             (v.is_array() ? "[" + v.dump().substr(1, 60) : describe(v))});
   }
 }
 
@@ -226,7 +228,9 @@ std::string type_text(const Field& f) {
       return s;
     }
     case Kind::Vector:
-      return f.vector_size ? "array of " + std::to_string(f.vector_size) + " numbers" : "array of `dimension` numbers";
+      return f.vector_size < 0 ? "array of numbers"
+             : f.vector_size   ? "array of " + std::to_string(f.vector_size) + " numbers"
+                               : "array of `dimension` numbers";
     case Kind::Object:
       return anchor(f.object->name);
     case Kind::ObjectArray:

@@ -36,7 +36,7 @@ struct Field {
   std::vector<std::string> choices;
   std::vector<int> int_choices;
   const ObjectSchema* object = nullptr;
-  int vector_size = 0;  // 0: the model dimension
+  int vector_size = 0;  // 0: the model dimension; -1: any length
   size_t min_items = 0;
 };
 

@@ -31,7 +31,10 @@ class Projector {
 
 double constraint_error(const InterfaceProblem& p, const Eigen::VectorXd& lambda) {
   if (p.G.cols() == 0) return 0;
-  return (p.G.transpose() * lambda - p.e).lpNorm<Eigen::Infinity>() / std::max(p.e.lpNorm<Eigen::Infinity>(), 1e-300);
+  // relative to the size of the terms of Gᵀλ (e may be zero: no load on the floating groups)
+  const double scale =
+      std::max(p.e.lpNorm<Eigen::Infinity>(), p.G.cwiseAbs().maxCoeff() * lambda.lpNorm<Eigen::Infinity>());
+  return (p.G.transpose() * lambda - p.e).lpNorm<Eigen::Infinity>() / std::max(scale, 1e-300);
 }
 }  // namespace
 

@@ -31,8 +31,8 @@ struct ProjectedCGResult {
   Eigen::VectorXd lambda, alpha;
   int iterations = 0;
   bool converged = false;
-  std::vector<double> residuals;    // ‖P r_k‖ / ‖P r_0‖, k = 0..iterations
-  double max_constraint_error = 0;  // max over iterations of ‖Gᵀλ_k − e‖∞ / max(‖e‖∞, tiny)
+  std::vector<double> residuals;  // ‖P r_k‖ / ‖P r_0‖, k = 0..iterations
+  double max_constraint_error = 0;  // max over iterations of ‖Gᵀλ_k − e‖∞ / max(‖e‖∞, max|G| ‖λ_k‖∞)
 };
 
 /// Throws SingularMatrix (column −1) when GᵀG is singular: the constraints do not hold some rigid mode.

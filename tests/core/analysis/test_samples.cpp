@@ -1,7 +1,7 @@
 // Every sample: `skyline` and `direct` give the same displacements (1e-10 relative), `mixed` (CG tolerance
-// 1e-10) the same to 1e-7; a model with a floating body is refused by `skyline` with a clear error. The key
-// quantities (dofs, reactions, probe displacements, contact resultants) match the committed golden file
-// tests/golden/<sample>.json to 1e-8 relative. ROLLSIM_UPDATE_GOLDEN=1 rewrites the golden files.
+// 1e-10) the same to 1e-7, and so does `feti` where the sample asks for it; a model with a floating body is refused by
+// `skyline` with a clear error. The key quantities (dofs, reactions, probe displacements, contact resultants) match the
+// committed golden file tests/golden/<sample>.json to 1e-8 relative. ROLLSIM_UPDATE_GOLDEN=1 rewrites the golden files.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -82,6 +82,8 @@ TEST_P(SampleTest, SolversAgreeAndMatchGolden) {
   const Model model = build_model(project);
   const Solved direct = solve(model, "direct"), mixed = solve(model, "mixed");
   expect_same_displacements(model, direct.results, mixed.results, 1e-7, "mixed vs direct");
+  if (project.data.at("solver").at("mode") == "feti")
+    expect_same_displacements(model, direct.results, solve(model, "feti").results, 1e-7, "feti vs direct");
   if (direct.results.rigid_modes > 0) {
     EXPECT_THROW(solve(model, "skyline"), AnalysisError);
   } else {
