@@ -68,6 +68,32 @@ bool has_unilateral(const Model& model) {
   return false;
 }
 
+/// Every rigid mode of a floating group must move some constrained dof: G = [C_g R_g] of full column rank (paper
+/// eq. (8) is solvable only then). Checked for every strategy, so that none returns an answer for a body that
+/// nothing holds (a frictionless contact cannot hold sideways motion, for one).
+void check_floating_groups_held(const BlockSystem& sys) {
+  const long k = sys.num_rigid_modes();
+  if (k == 0) return;
+  Eigen::MatrixXd G(sys.num_multipliers(), k);
+  std::vector<std::string> owner;
+  for (const Group& g : sys.groups)
+    if (g.R.cols()) {
+      G.middleCols(static_cast<Eigen::Index>(owner.size()), g.R.cols()) = g.C * g.R;
+      owner.insert(owner.end(), static_cast<size_t>(g.R.cols()), g.name);
+    }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(G.transpose() * G, Eigen::ComputeFullV);
+  const Eigen::VectorXd sv = svd.singularValues();
+  if (sv.size() && sv[sv.size() - 1] > 1e-10 * std::max(sv[0], 1e-300)) return;
+  Eigen::Index worst = 0;
+  svd.matrixV().col(sv.size() - 1).cwiseAbs().maxCoeff(&worst);
+  throw AnalysisError(
+      "the system is singular: the contact constraints do not hold the floating bodies — a rigid "
+      "motion of '" +
+      owner[worst] +
+      "' moves no constrained dof (check that the contact surfaces "
+      "meet and hold every free direction, or add a support)");
+}
+
 Multipliers multiplier_choice(const SolverOptions& o) {
   return o.multipliers == "redundant" ? Multipliers::FullyRedundant : Multipliers::NonRedundant;
 }
@@ -107,6 +133,7 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
     rows = contact_rows(model, pairs);
     contact = body_constraints(rows, dofs);
     layout.set_contact(contact);
+    check_floating_groups_held(sys);
     obs.on_stage("solve");
     sol = solve_checked(model, dofs, solver, sys, obs);
     u = full_displacements(dofs, layout.body_solution(sol));

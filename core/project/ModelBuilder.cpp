@@ -303,8 +303,21 @@ Partition body_partition(const json& jb, const Mesh& mesh, const std::string& pa
     return whole;
   }
   Partition p = make_partition(mesh, spec);
+  const auto report = [&](const std::vector<PartitionProblem>& problems) {
+    for (const auto& problem : problems) {
+      std::string at_path = problem.path;  // "<where>.map[…]" of an explicit map is "<path>.partition_map[…]"
+      if (at_path.rfind(where + ".map", 0) == 0) at_path = where + at_path.substr(where.size() + 4);
+      issues.push_back({at_path, problem.message});
+    }
+  };
+  bool ids_valid = static_cast<int>(p.element_subdomain.size()) == mesh.num_elements();
+  for (const int id : p.element_subdomain) ids_valid = ids_valid && id >= 0 && id < p.num_subdomains;
+  if (!ids_valid) {  // splitting needs a well-formed map: report its problems first
+    report(check_partition(mesh, p, where));
+    return p;
+  }
   for (const auto& w : split_disconnected(mesh, p)) warnings.push_back(where + ": " + w);
-  for (const auto& problem : check_partition(mesh, p, where)) issues.push_back({problem.path, problem.message});
+  report(check_partition(mesh, p, where));
   return p;
 }
 

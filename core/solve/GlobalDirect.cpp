@@ -37,6 +37,12 @@ SparseMatrix global_matrix(const BlockSystem& sys) {
 
 GlobalDirect::GlobalDirect(std::string kind) : kind_(std::move(kind)) {}
 
+void GlobalDirect::add_times(const FactorStats& s) {
+  earlier_.analyze_s += s.analyze_s;
+  earlier_.factorize_s += s.factorize_s;
+  earlier_.solve_s += s.solve_s;
+}
+
 BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver*) {
   const long n = sys.num_dofs(), m = sys.num_multipliers();
   if (kind_ == "skyline" && sys.num_rigid_modes() > 0)
@@ -53,6 +59,7 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver*) {
   }
   f.tail(m) = sys.d;
   if (!factor_ || factor_size_ != A.rows() || trailing_ != m) {
+    if (factor_) add_times(factor_->stats());  // a new pattern: keep what the old factor spent
     factor_ = make_factorization(kind_, static_cast<int>(m));
     factor_size_ = A.rows();
     trailing_ = m;
@@ -62,9 +69,9 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver*) {
   const Eigen::VectorXd x = factor_->solve(f);
   for (const Group& g : sys.groups) ++stats_.factorizations[g.name];
   stats_.factor = factor_->stats();
-  stats_.analyze_s = stats_.factor.analyze_s;
-  stats_.factorize_s = stats_.factor.factorize_s;
-  stats_.solve_s = stats_.factor.solve_s;
+  stats_.analyze_s = earlier_.analyze_s + stats_.factor.analyze_s;
+  stats_.factorize_s = earlier_.factorize_s + stats_.factor.factorize_s;
+  stats_.solve_s = earlier_.solve_s + stats_.factor.solve_s;
   BlockSolution out;
   offset = 0;
   for (const Group& g : sys.groups) {

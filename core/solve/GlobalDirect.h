@@ -15,7 +15,10 @@ class GlobalDirect final : public SolverStrategy {
   std::string kind_;
   std::unique_ptr<Factorization> factor_;
   SparseMatrix global_;
-  long factor_size_ = 0, trailing_ = 0;  // a new size or number of multipliers needs a new analysis
+  void add_times(const FactorStats& s);
+  long factor_size_ = 0, trailing_ = 0;
+  FactorStats earlier_;  // times of factors replaced by a new pattern (active-set changes)  // a new size or number of
+                         // multipliers needs a new analysis
   SolveStats stats_;
 };
 
