@@ -60,13 +60,20 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
   if (o.partition) {
     const auto eq = o.partition->find('=');
     const std::string body = eq == std::string::npos ? "" : o.partition->substr(0, eq);
+    const std::string spec = eq == std::string::npos ? *o.partition : o.partition->substr(eq + 1);
     json& bodies = p.data["bodies"];
-    json* target = body.empty() ? &bodies[0] : nullptr;
+    json* target = body.empty() && !bodies.empty() ? &bodies[0] : nullptr;
     for (auto& b : bodies)
       if (!body.empty() && b["name"] == body) target = &b;
-    if (!target) return "--partition: no body named '" + body + "'";
-    target->erase("partition_map");
-    (*target)["partition"] = eq == std::string::npos ? *o.partition : o.partition->substr(eq + 1);
+    const bool slab = p.data.contains("process") && (body == "slab" || (body.empty() && bodies.empty()));
+    if (slab) {
+      p.data["process"]["slab_partition"] = spec;  // the generated slab
+    } else if (!target) {
+      return "--partition: no body named '" + body + "'";
+    } else {
+      target->erase("partition_map");
+      (*target)["partition"] = spec;
+    }
   }
   if (o.threads) {
     if (*o.threads < 1 || *o.threads > 256)

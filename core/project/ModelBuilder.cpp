@@ -10,6 +10,7 @@
 #include "partition/PartitionSpec.h"
 #include "project/MeshFactory.h"
 #include "project/ProjectSchema.h"
+#include "project/RollingProcess.h"
 
 namespace rollsim {
 
@@ -172,8 +173,10 @@ void check_supports(const json& project, std::vector<Issue>& issues) {
 }  // namespace
 
 void check_references(const Project& project, std::vector<Issue>& issues) {
-  const json& d = project.data;
+  const json d = expand_process(project.data);
   const int dim = project.dimension();
+  if (d.at("bodies").empty()) issues.push_back({"bodies", "no body: give `bodies` or a `process`"});
+  if (d.at("materials").empty()) issues.push_back({"materials", "no material: give `materials` or a `process`"});
   check_project_name(d, issues);
   check_unique(d.at("materials"), "materials", issues);
   check_unique(d.at("bodies"), "bodies", issues);
@@ -355,7 +358,7 @@ SolverOptions solver_options(const Project& project) {
 }
 
 Model build_model(const Project& project) {
-  const json& d = project.data;
+  const json d = expand_process(project.data);
   Model model;
   model.dim = project.dimension();
   std::vector<Issue> issues;

@@ -1,6 +1,7 @@
 // Declaration of every project field: name, type, range, default, unit, documentation.
 #include "project/ProjectSchema.h"
 
+#include "project/RollingProcess.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {
@@ -326,10 +327,19 @@ const ObjectSchema& project_schema() {
          f.doc = "2 (plane strain) or 3";
          return f;
        }(),
-       str("description", "free text"), objects("materials", kMaterial, "materials", 1),
-       objects("bodies", kBody, "bodies", 1), objects("boundary_conditions", kBC, "supports and loads"),
-       objects("contacts", kContact, "contact pairs"), object("solver", solver_schema(), "solver settings"),
-       objects("probes", kProbe, "reported points"), object("output", kOutput, "outputs")},
+       str("description", "free text"), objects("materials", kMaterial, "materials (a `process` adds its own)"),
+       objects("bodies", kBody, "bodies (at least one, or a `process` that generates them)"),
+       [] {
+         Field f;  // optional, no default: a project without it has no process
+         f.name = "process";
+         f.kind = Kind::Object;
+         f.object = &rolling_process_schema();
+         f.doc = "a rolling pass that generates the slab and roll bodies (see below)";
+         return f;
+       }(),
+       objects("boundary_conditions", kBC, "supports and loads"), objects("contacts", kContact, "contact pairs"),
+       object("solver", solver_schema(), "solver settings"), objects("probes", kProbe, "reported points"),
+       object("output", kOutput, "outputs")},
       "",
       {}};
   return root;

@@ -226,8 +226,8 @@ std::vector<Case> count_cases() {
 
 std::vector<Case> field_cases() {
   return {
-      drop("missing materials", "/materials", "materials", "is required"),
-      set("no bodies", "/bodies", json::array(), "bodies", "needs at least 1 entries"),
+      drop("missing materials", "/materials", "materials", "no material: give `materials` or a `process`"),
+      set("no bodies", "/bodies", json::array(), "bodies", "no body: give `bodies` or a `process`"),
       drop("missing E", "/materials/0/E", "materials[0].E", "is required"),
       drop("missing nu", "/materials/0/nu", "materials[0].nu", "is required"),
       drop("missing mesh", "/bodies/0/mesh", "bodies[0].mesh", "is required"),
