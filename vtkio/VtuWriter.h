@@ -12,7 +12,7 @@ namespace rollsim {
 /// cell data: stress (element mean), von_mises, body_id, subdomain_id. Written atomically.
 void write_vtu(const std::filesystem::path& file, const Model& model, const Results& results);
 
-/// Mesh only (no results): body_id per cell.
+/// Mesh only (no results): body_id and subdomain_id per cell.
 void write_mesh_vtu(const std::filesystem::path& file, const Model& model);
 
 }  // namespace rollsim

@@ -1,0 +1,136 @@
+// The whole window under Xvfb: the view draws the project's meshes, an edit in the property editor updates the
+// status-bar counts and the view, a run from the Run button converges and colours the view by displacement,
+// Cancel ends a run "cancelled", and the window's screenshot is not blank.
+#include <QVTKOpenGLNativeWidget.h>
+#include <QApplication>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+
+#include "MainWindow.h"
+#include "MeshView.h"
+#include "ProjectDocument.h"
+#include "ProjectTreePanel.h"
+#include "PropertyEditor.h"
+#include "ResidualPlot.h"
+#include "RunPanel.h"
+
+using namespace rollsim;
+using namespace rollsim::ui;
+
+namespace {
+const QString kSample = QStringLiteral(ROLLSIM_SOURCE_DIR "/samples/plate-hole-2d.json");
+
+/// Standard deviation of the grey level: a blank (one-colour) image has none.
+double grey_spread(const QImage& image) {
+  double sum = 0, sum2 = 0;
+  long n = 0;
+  for (int y = 0; y < image.height(); y += 2)
+    for (int x = 0; x < image.width(); x += 2) {
+      const double g = qGray(image.pixel(x, y));
+      sum += g;
+      sum2 += g * g;
+      ++n;
+    }
+  const double mean = sum / static_cast<double>(n);
+  return std::sqrt(std::max(0.0, sum2 / static_cast<double>(n) - mean * mean));
+}
+}  // namespace
+
+class TestMainWindow : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void shows_the_project_and_its_counts() {
+    MainWindow w;
+    QVERIFY(w.open_file(kSample));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QCOMPARE(w.view()->drawn_cells(), 32L * 24);
+    QVERIFY(w.counts_text().startsWith(QStringLiteral("nodes 825 · elements 768 · dofs ")));
+    QVERIFY(w.windowTitle().startsWith(QStringLiteral("plate-hole-2d.json")));
+  }
+
+  void editing_a_count_regenerates_the_mesh() {
+    MainWindow w;
+    QVERIFY(w.open_file(kSample));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.tree()->select("/bodies/0");
+    auto* line = qobject_cast<QLineEdit*>(w.property_editor()->editor_for("/bodies/0/mesh/n_radial"));
+    QVERIFY(line);
+    line->setFocus();
+    line->selectAll();
+    QTest::keyClicks(line, QStringLiteral("12"));
+    QCOMPARE(w.document()->document()["bodies"][0]["mesh"]["n_radial"].get<int>(), 12);
+    QTRY_COMPARE_WITH_TIMEOUT(w.view()->drawn_cells(), 32L * 12, 10000);
+    QVERIFY(w.counts_text().startsWith(QStringLiteral("nodes 429 · elements 384")));
+    QVERIFY(w.isWindowModified());
+    // a refused value leaves counts and view alone
+    line->selectAll();
+    QTest::keyClicks(line, QStringLiteral("0"));
+    QVERIFY(w.property_editor()->message().contains(QStringLiteral("must be a positive integer, got 0")));
+    QTest::qWait(100);
+    QCOMPARE(w.view()->drawn_cells(), 32L * 12);
+  }
+
+  void run_button_converges_and_shows_results() {
+    MainWindow w;
+    QVERIFY(w.open_file(kSample));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
+    QTest::mouseClick(w.run_panel()->run_button(), Qt::LeftButton);
+    QCOMPARE(w.run_status(), QStringLiteral("running"));
+    QVERIFY(!w.run_panel()->run_button()->isEnabled());
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(w.run_status(), QStringLiteral("converged"));
+    QVERIFY(w.view()->has_results());
+    QCOMPARE(w.view()->color_by(), ColorBy::Displacement);
+    QVERIFY(w.run_panel()->run_button()->isEnabled());
+    w.view()->set_color_by(ColorBy::VonMises);
+    w.view()->set_deformation_scale(w.view()->suggested_deformation_scale());
+    QVERIFY(w.view()->suggested_deformation_scale() > 1);
+    QTemporaryDir dir;
+    const auto vtu = dir.filePath(QStringLiteral("r.vtu")).toStdString();
+    w.view()->export_vtu(vtu);
+    QVERIFY(QFileInfo::exists(QString::fromStdString(vtu)));
+    const QImage shot = w.screenshot();
+    QCOMPARE(shot.size(), w.size());
+    QVERIFY2(grey_spread(shot) > 10, "the window screenshot is blank");
+  }
+
+  void cancel_ends_the_run_cancelled() {
+    MainWindow w;
+    QVERIFY(w.open_file(kSample));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
+    connect(
+        w.worker(), &AnalysisWorker::stageStarted, this,
+        [&w](const QString& stage) {
+          if (stage == QLatin1String("assemble")) w.worker()->cancel();
+        },
+        Qt::DirectConnection);
+    QVERIFY(w.start_run());
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(w.run_status(), QStringLiteral("cancelled"));
+    QVERIFY(!w.view()->has_results());
+    QCOMPARE(w.view()->drawn_cells(), 32L * 24);  // the mesh is still shown
+    QVERIFY(w.run_panel()->run_button()->isEnabled());
+  }
+};
+
+int main(int argc, char** argv) {
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  TestMainWindow test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_main_window.moc"

@@ -1,0 +1,92 @@
+#pragma once
+// The rollsim window: project tree and property editor (left), the mesh/results view (centre), solver and run
+// controls (right), residual plot and log (bottom), counts and run status in the status bar. It wires the
+// ProjectDocument, the AnalysisWorker and the widgets; each widget refreshes itself from the document.
+#include <QMainWindow>
+#include <QStringList>
+
+#include "AnalysisWorker.h"
+
+class QLabel;
+class QMenu;
+
+namespace rollsim::ui {
+
+class LogPanel;
+class MeshView;
+class ProjectDocument;
+class ProjectTreePanel;
+class PropertyEditor;
+class ResidualPlot;
+class RunPanel;
+class ViewToolBar;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  /// Opens a project file; on an invalid project returns false with the validator's message in `error` (the
+  /// window keeps its current project).
+  bool open_file(const QString& file, QString* error = nullptr);
+  /// The default project (resources/default-project.json), untitled.
+  void new_project();
+  /// Save / Save As; false when cancelled or failed (the message is logged).
+  bool save();
+  bool save_to(const QString& file);
+  /// Starts a run of the current project in the worker thread; false if one is running.
+  bool start_run();
+  void cancel_run();
+  /// Colours the view and shows the residual plot exactly as after an interactive run (for --screenshot).
+  void show_results_view();
+  /// The whole window as an image (QWidget::grab, the 3D view included).
+  QImage screenshot();
+
+  ProjectDocument* document() const { return doc_; }
+  MeshView* view() const { return view_; }
+  ResidualPlot* plot() const { return plot_; }
+  AnalysisWorker* worker() const { return worker_; }
+  ProjectTreePanel* tree() const { return tree_; }
+  PropertyEditor* property_editor() const { return editor_; }
+  RunPanel* run_panel() const { return run_panel_; }
+  LogPanel* log() const { return log_; }
+  /// "nodes 1,234 · elements 1,100 · dofs 2,300" as shown in the status bar.
+  QString counts_text() const;
+  /// The last run's status: "not run", "running", "converged", "cancelled", "error", ...
+  QString run_status() const;
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void build_menus();
+  void open_dialog();
+  bool save_as_dialog();
+  bool maybe_save();
+  void export_vtu();
+  void export_png();
+  void export_csv();
+  void add_recent(const QString& file);
+  void refresh_recent_menu();
+  void refresh_title();
+  void model_changed();
+  void run_finished(const RunOutcome& outcome);
+
+  ProjectDocument* doc_;
+  AnalysisWorker* worker_;
+  MeshView* view_;
+  ViewToolBar* view_bar_;
+  ProjectTreePanel* tree_;
+  PropertyEditor* editor_;
+  RunPanel* run_panel_;
+  ResidualPlot* plot_;
+  LogPanel* log_;
+  QLabel* counts_;
+  QLabel* status_;
+  QMenu* recent_menu_ = nullptr;
+  QString run_status_ = QStringLiteral("not run");
+};
+
+}  // namespace rollsim::ui

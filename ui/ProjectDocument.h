@@ -1,0 +1,99 @@
+#pragma once
+// The project being edited in the window: the user's JSON (what Save writes, key order kept), the validated
+// Project (defaults filled) and the Model built from it. Every edit goes through the batch command's own
+// validation (parse_project + check_references, then build_model); a refused edit leaves everything unchanged.
+#include <QFutureWatcher>
+#include <QObject>
+#include <QString>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "model/Model.h"
+#include "project/Project.h"
+
+namespace rollsim::ui {
+
+/// The document as the user wrote it: an ordered JSON object (Save keeps the key order of the file).
+using Document = nlohmann::ordered_json;
+
+/// Sizes of the built model, for the status bar.
+struct ModelCounts {
+  long nodes = 0, elements = 0, dofs = 0;
+};
+
+class ProjectDocument : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit ProjectDocument(QObject* parent = nullptr);
+  ~ProjectDocument() override;
+
+  /// Replaces the document by `text` (File > New / Open). Throws ProjectError, leaving the document as it was.
+  /// `file` empty: untitled (Save asks for a name).
+  void load_text(const std::string& text, const QString& file, const QString& source_name);
+  /// Opens a project file. Throws ProjectError.
+  void open(const QString& file);
+  /// The embedded default project (resources/default-project.json), untitled.
+  void load_default();
+  /// Writes the document atomically (temporary file + rename) and makes `file` the document's file.
+  /// Throws std::exception on I/O failure.
+  void save_as(const QString& file);
+
+  /// Proposes `value` at the JSON pointer (e.g. "/bodies/0/mesh/nx"); null removes the key (back to the default).
+  /// Returns the validation issues; empty means accepted (document and project updated, model rebuilt).
+  std::vector<Issue> propose(const std::string& pointer, const Document& value);
+
+  const Document& document() const { return doc_; }
+  /// The document as saved: 2-space indented JSON with a final newline.
+  std::string text() const;
+  const Project& project() const { return project_; }
+  /// The model of the current project; null until the first build finishes.
+  std::shared_ptr<const Model> model() const { return model_; }
+  ModelCounts counts() const { return counts_; }
+  /// True while a model build runs in the background.
+  bool building() const { return watcher_.isRunning(); }
+  bool modified() const { return modified_; }
+  QString file() const { return file_; }
+  /// File name or "untitled", for titles and messages.
+  QString display_name() const;
+
+ signals:
+  /// The document's values changed (edit accepted, file loaded); widgets refresh from it.
+  void changed();
+  /// A new model is available (after every accepted change, once its mesh is built).
+  void modelChanged();
+  /// An accepted edit could not be built (a problem only visible on the mesh): the document was reverted.
+  void buildRefused(const QString& message);
+  /// The file name or the modified flag changed.
+  void fileStateChanged();
+
+ private:
+  struct Build {
+    std::shared_ptr<const Model> model;
+    ModelCounts counts;
+    std::string error;
+    unsigned long generation = 0;
+  };
+  void start_build();
+  void build_done();
+  void set_modified(bool m);
+
+  Document doc_;
+  Project project_;
+  Document built_doc_;  // the last document whose model built: the revert point of buildRefused
+  Project built_project_;
+  bool built_modified_ = false;
+  std::shared_ptr<const Model> model_;
+  ModelCounts counts_;
+  QString file_;
+  bool modified_ = false;
+  unsigned long generation_ = 0;
+  bool rebuild_pending_ = false;
+  QFutureWatcher<Build> watcher_;
+};
+
+/// Validates a document exactly as `rollsim run` validates the file. Throws ProjectError.
+Project validate_document(const Document& doc, const std::string& source);
+
+}  // namespace rollsim::ui

@@ -1,0 +1,68 @@
+#include "RunPanel.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "PropertyEditor.h"
+#include "solve/SolverStrategy.h"
+
+namespace rollsim::ui {
+
+RunPanel::RunPanel(ProjectDocument* document, QWidget* parent) : QWidget(parent), doc_(document) {
+  auto* layout = new QVBoxLayout(this);
+  editor_ = new PropertyEditor(doc_, this);
+  editor_->set_object("/solver");
+  description_ = new QLabel(this);
+  description_->setWordWrap(true);
+  description_->setStyleSheet(QStringLiteral("color: #404040;"));
+  run_ = new QPushButton(tr("Run"), this);
+  run_->setObjectName(QStringLiteral("runButton"));
+  run_->setToolTip(tr("Solve the project in the background (F5)"));
+  cancel_ = new QPushButton(tr("Cancel"), this);
+  cancel_->setObjectName(QStringLiteral("cancelButton"));
+  cancel_->setToolTip(tr("Stop at the next safe point (Esc)"));
+  cancel_->setEnabled(false);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(run_);
+  buttons->addWidget(cancel_);
+  progress_ = new QProgressBar(this);
+  progress_->setRange(0, 1000);
+  progress_->setValue(0);
+  progress_->setTextVisible(false);
+  status_ = new QLabel(tr("not run"), this);
+  status_->setObjectName(QStringLiteral("runStatus"));
+  layout->addWidget(editor_);
+  layout->addWidget(description_);
+  layout->addLayout(buttons);
+  layout->addWidget(progress_);
+  layout->addWidget(status_);
+  layout->addStretch(1);
+  connect(run_, &QPushButton::clicked, this, &RunPanel::runRequested);
+  connect(cancel_, &QPushButton::clicked, this, &RunPanel::cancelRequested);
+  connect(doc_, &ProjectDocument::changed, this, &RunPanel::refresh_description);
+  refresh_description();
+}
+
+void RunPanel::refresh_description() {
+  const json& pd = doc_->project().data;
+  const std::string mode = pd.contains("solver") ? pd["solver"].value("mode", std::string()) : std::string();
+  for (const StrategyInfo& s : solver_registry())
+    if (s.name == mode) description_->setText(QString::fromStdString(s.name + ": " + s.description));
+}
+
+QString RunPanel::status() const { return status_->text(); }
+
+void RunPanel::set_running(bool running) {
+  run_->setEnabled(!running);
+  cancel_->setEnabled(running);
+  if (running) progress_->setValue(0);
+}
+
+void RunPanel::set_progress(double fraction) { progress_->setValue(static_cast<int>(1000 * fraction)); }
+
+void RunPanel::set_status(const QString& status) { status_->setText(status); }
+
+}  // namespace rollsim::ui

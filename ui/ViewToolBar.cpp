@@ -1,0 +1,53 @@
+#include "ViewToolBar.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QStandardItemModel>
+
+namespace rollsim::ui {
+
+ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"), parent), view_(view) {
+  setObjectName(QStringLiteral("viewToolBar"));
+  addWidget(new QLabel(tr(" Colour by ")));
+  color_ = new QComboBox;
+  color_->setObjectName(QStringLiteral("colorBy"));
+  color_->addItem(tr("body"), QVariant::fromValue(ColorBy::Body));
+  color_->addItem(tr("subdomain"), QVariant::fromValue(ColorBy::Subdomain));
+  color_->addItem(tr("displacement |u|"), QVariant::fromValue(ColorBy::Displacement));
+  color_->addItem(tr("von Mises stress"), QVariant::fromValue(ColorBy::VonMises));
+  addWidget(color_);
+  addSeparator();
+  deformed_ = new QCheckBox(tr("deformed ×"));
+  deformed_->setObjectName(QStringLiteral("deformed"));
+  addWidget(deformed_);
+  scale_ = new QDoubleSpinBox;
+  scale_->setObjectName(QStringLiteral("deformationScale"));
+  scale_->setDecimals(1);
+  scale_->setRange(0, 1e9);
+  scale_->setValue(1);
+  addWidget(scale_);
+  addSeparator();
+  addAction(tr("Reset camera"), view_, &MeshView::reset_camera);
+
+  connect(color_, QOverload<int>::of(&QComboBox::activated), this,
+          [this](int i) { view_->set_color_by(color_->itemData(i).value<ColorBy>()); });
+  connect(view_, &MeshView::colorByChanged, this, &ViewToolBar::refresh);
+  auto apply = [this] { view_->set_deformation_scale(deformed_->isChecked() ? scale_->value() : 0.0); };
+  connect(deformed_, &QCheckBox::toggled, this, apply);
+  connect(scale_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, apply);
+  refresh();
+}
+
+void ViewToolBar::refresh() {
+  const bool results = view_->has_results();
+  auto* items = qobject_cast<QStandardItemModel*>(color_->model());
+  for (int i = 2; i < 4 && items; ++i) items->item(i)->setEnabled(results);
+  for (int i = 0; i < color_->count(); ++i)
+    if (color_->itemData(i).value<ColorBy>() == view_->color_by()) color_->setCurrentIndex(i);
+  deformed_->setEnabled(results);
+  scale_->setEnabled(results);
+}
+
+}  // namespace rollsim::ui

@@ -1,0 +1,19 @@
+#pragma once
+// Model (+ results) -> vtkUnstructuredGrid: the one conversion shared by the VTU writer and the window's view.
+// Only VTK-aware code (vtkio/, ui/) includes this header; VtuWriter.h stays free of VTK.
+#include <vtkSmartPointer.h>
+
+#include "analysis/Results.h"
+#include "model/Model.h"
+
+class vtkUnstructuredGrid;
+
+namespace rollsim {
+
+/// Cells of every body stacked in body order (Q4 -> VTK_QUAD, H8 -> VTK_HEXAHEDRON), nodes offset per body.
+/// Cell data always: body_id, subdomain_id (the body's partition, 0 when undivided).
+/// With results, point data: displacement (3 components; the active vectors), stress (6, nodal average),
+/// von_mises, body_id; cell data: stress (element mean), von_mises, and subdomain_id from the results.
+vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const Results* results = nullptr);
+
+}  // namespace rollsim
