@@ -40,6 +40,8 @@ int gui_command(GuiOptions options);
 int bench_command(const BenchOptions& options);
 int export_ccx_command(const std::string& project, const std::string& out);
 int check_command(const std::string& project);
+/// `rollsim mesh PROJECT [--out DIR] [--partition SPEC]`: the model's meshes as DIR/mesh.vtu, without solving.
+int mesh_command(const RunOptions& options);
 int schema_command();
 
 }  // namespace rollsim::app

@@ -1,4 +1,4 @@
-// `rollsim run` and `rollsim check`: project -> model -> analysis -> results -> writers.
+// `rollsim run`, `rollsim check` and `rollsim mesh`: project -> model (-> analysis -> results) -> writers.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -121,6 +121,31 @@ int check_command(const std::string& file) {
   } catch (const ProjectError& e) {
     return invalid(e.what());
   }
+}
+
+int mesh_command(const RunOptions& o) {
+  Model model;
+  Project project;
+  try {
+    project = load_project(o.project);
+    if (auto err = apply_overrides(project, o); !err.empty()) return invalid(err);
+    model = build_model(project);
+  } catch (const ProjectError& e) {
+    return invalid(e.what());
+  }
+  for (const auto& w : model.warnings) std::fprintf(stderr, "rollsim: warning: %s\n", w.c_str());
+  const auto file = output_dir(project, o) / "mesh.vtu";
+  try {
+    std::filesystem::create_directories(file.parent_path());
+    write_mesh_vtu(file, model);
+  } catch (const std::exception& e) {
+    return invalid("cannot write " + file.string() + ": " + e.what());
+  }
+  if (!o.quiet)
+    std::fprintf(stderr, "rollsim: %s: %zu bodies, %ld nodes, %ld elements\n", project.name().c_str(),
+                 model.bodies.size(), model.total_nodes(), model.total_elements());
+  std::cout << file.string() << "\n";
+  return 0;
 }
 
 int run_command(const RunOptions& o) {

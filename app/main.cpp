@@ -45,6 +45,14 @@ int main(int argc, char** argv) {
   auto* cmd_check = cli.add_subcommand("check", "validate a project without solving");
   cmd_check->add_option("project", check_file, "project file (JSON)")->required();
 
+  RunOptions mesh;
+  auto* cmd_mesh =
+      cli.add_subcommand("mesh", "write the meshes of a project (bodies, subdomains) as mesh.vtu, without solving");
+  cmd_mesh->add_option("project", mesh.project, "project file (JSON)")->required();
+  cmd_mesh->add_option("--out", mesh.out, "output directory (default: the project's output.dir or results/<name>)");
+  cmd_mesh->add_option("--partition", mesh.partition, "[BODY=]SPEC: show this partition, e.g. 4x4, metis:16");
+  cmd_mesh->add_flag("--quiet", mesh.quiet, "no summary line on stderr");
+
   BenchOptions bench;
   auto* cmd_bench = cli.add_subcommand("bench", "time assembly, ordering, factorization and solve: skyline vs CHOLMOD");
   cmd_bench->add_option("samples", bench.samples, "project files")->required();
@@ -81,6 +89,7 @@ int main(int argc, char** argv) {
   try {
     if (*cmd_run) return run_command(run);
     if (*cmd_check) return check_command(check_file);
+    if (*cmd_mesh) return mesh_command(mesh);
     if (*cmd_schema) return schema_command();
     if (*cmd_bench) return bench_command(bench);
     if (*cmd_export) return export_ccx_command(export_project, export_out);
