@@ -40,8 +40,8 @@ TEST(MeshCommand, WritesTheGeneratedRollingMeshesWithoutSolving) {
 
 TEST(MeshCommand, BadInputExitsTwoWritingNothing) {
   const std::string dir = make_temp_dir("mesh-bad");
-  const auto r = run_rollsim({"mesh", ROLLSIM_SOURCE_DIR "/samples/plate-hole-2d.json", "--out", dir + "/out",
-                              "--partition", "plate=0x2"});
+  const auto r = run_rollsim(
+      {"mesh", ROLLSIM_SOURCE_DIR "/samples/plate-hole-2d.json", "--out", dir + "/out", "--partition", "plate=0x2"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("rollsim: error:"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/out/mesh.vtu"));
