@@ -67,6 +67,7 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
       if (!body.empty() && b["name"] == body) target = &b;
     const bool slab = p.data.contains("process") && (body == "slab" || (body.empty() && bodies.empty()));
     if (slab) {
+      p.data["process"].erase("slab_partition_map");
       p.data["process"]["slab_partition"] = spec;  // the generated slab
     } else if (!target) {
       return "--partition: no body named '" + body + "'";

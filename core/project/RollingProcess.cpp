@@ -67,6 +67,14 @@ const ObjectSchema& rolling_process_schema() {
          f.kind = Kind::String;
          f.doc = "subdomains of the slab for `feti` (as bodies[].partition)";
          return f;
+       }(),
+       [] {
+         Field f;
+         f.name = "slab_partition_map";
+         f.kind = Kind::Vector;
+         f.vector_size = -1;
+         f.doc = "explicit element → subdomain map of the slab (as bodies[].partition_map, e.g. painted in the window)";
+         return f;
        }()},
       "",
       {}};
@@ -114,6 +122,7 @@ json expand_process(const json& project) {
                {"mesh", slab_mesh},
                {"node_sets", json::array()}};
   if (p.contains("slab_partition")) slab["partition"] = p.at("slab_partition");
+  if (p.contains("slab_partition_map")) slab["partition_map"] = p.at("slab_partition_map");
   out["bodies"].push_back(slab);
   roll_mesh.update({{"start_angle", 0.0}, {"end_angle", 360.0}});
   out["bodies"].push_back({{"name", "roll"},

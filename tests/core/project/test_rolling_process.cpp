@@ -59,3 +59,15 @@ TEST(RollingProcess, BadValuesNameTheirPath) {
     EXPECT_NE(std::string(e.what()).find("no body: give `bodies` or a `process`"), std::string::npos) << e.what();
   }
 }
+
+TEST(RollingProcess, SlabPartitionBySpecOrPaintedMap) {
+  json j = {{"dimension", 2}, {"process", {{"type", "rolling"}, {"slab_nx", 4}, {"slab_nt", 2}}}};
+  j["process"]["slab_partition"] = "2x1";
+  const Model sliced = build_model(parse_project(j.dump(), "rolling"));
+  ASSERT_EQ(sliced.bodies[0].partition.num_subdomains, 2);
+  j["process"].erase("slab_partition");
+  j["process"]["slab_partition_map"] = sliced.bodies[0].partition.element_subdomain;
+  const Model painted = build_model(parse_project(j.dump(), "rolling"));
+  EXPECT_EQ(painted.bodies[0].partition.element_subdomain, sliced.bodies[0].partition.element_subdomain);
+  EXPECT_EQ(painted.bodies[1].partition.num_subdomains, 1);  // the roll stays one domain
+}
