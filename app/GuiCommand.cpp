@@ -1,4 +1,5 @@
-// `rollsim gui [PROJECT] [--screenshot FILE.png] [--size WxH] [--run]` and `rollsim` with no arguments: the window.
+// `rollsim gui [PROJECT] [--screenshot FILE.png] [--size WxH] [--run] [--partitions]` and `rollsim` with no arguments:
+// the window.
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
 #include <QElapsedTimer>
@@ -49,6 +50,7 @@ int screenshot(ui::MainWindow& w, const GuiOptions& o) {
     if (w.start_run()) loop.exec();
     if (w.run_status() == QLatin1String("error")) std::cerr << "rollsim: warning: the run failed (see the log)\n";
   }
+  if (o.partitions) w.show_partitions();
   settle(300);
   const QImage image = w.screenshot();
   if (image.isNull() || !image.save(QString::fromStdString(o.screenshot), "PNG")) {
@@ -88,6 +90,7 @@ int gui_command(GuiOptions o) {
   }
   if (!o.screenshot.empty()) return screenshot(w, o);
   w.show();
+  if (o.partitions) w.show_partitions();
   if (o.run) w.start_run();
   return QApplication::exec();
 }

@@ -12,7 +12,7 @@ namespace rollsim::ui {
 
 namespace {
 
-/// Progress by stage while the core reports none itself (its on_progress, once it exists, is forwarded too).
+/// Progress by stage; the increments (the core's on_progress) fill the band of the "solve" stage.
 double stage_fraction(const std::string& stage) {
   if (stage == "build model") return 0.02;
   if (stage == "assemble") return 0.05;
@@ -20,26 +20,75 @@ double stage_fraction(const std::string& stage) {
   if (stage == "recover") return 0.9;
   return -1;
 }
+constexpr double kIncrementsBegin = 0.2, kIncrementsEnd = 0.9;
 
-/// The observer on the worker thread: every call becomes a signal of the worker.
+/// The observer on the worker thread: every call becomes a signal of the worker (queued to GUI-thread receivers).
+/// CG iterations travel in batches (AnalysisWorker::cgIterations): a queued signal per iteration would wake the GUI
+/// thread at solver speed. Whatever is pending goes out before any other signal, so the order is kept.
 class ForwardingObserver final : public AnalysisObserver {
  public:
   explicit ForwardingObserver(AnalysisWorker& worker) : w_(worker) {}
   void on_stage(const std::string& stage) override {
+    flush();
     emit w_.stageStarted(QString::fromStdString(stage));
-    const double f = stage_fraction(stage);
-    if (f > done_) emit w_.progress(done_ = f);
+    advance(stage_fraction(stage));
   }
-  void on_iteration(const std::string& kind, int iteration, double residual) override {
-    emit w_.iteration(QString::fromStdString(kind), iteration, residual);
+  void on_increment_begin(int increment, int count) override {
+    flush();
+    emit w_.incrementStarted(increment, count);
+  }
+  void on_increment_end(int increment, int count) override {
+    flush();
+    emit w_.incrementFinished(increment, count);
+  }
+  void on_newton_iteration(int increment, int iteration, double residual) override {
+    flush();
+    emit w_.newtonIteration(increment, iteration, residual);
+  }
+  void on_cg_iteration(int solve, int iteration, double residual) override {
+    pending_.append({solve, iteration, residual});
+    // the first iteration of a solve at once (the plot starts moving), then at most every kBatch
+    if (iteration == 1 || Clock::now() - last_batch_ >= kBatch) flush();
+  }
+  void on_solve_end(int solve, int cg_iterations) override {
+    flush();
+    emit w_.solveFinished(solve, cg_iterations);
+  }
+  void on_factorization(const std::string& group) override {
+    flush();
+    emit w_.factorized(QString::fromStdString(group));
+  }
+  void on_active_set_iteration(int iteration, int changed) override {
+    flush();
+    emit w_.activeSetIteration(iteration, changed);
   }
   void on_progress(double fraction) override {
-    if (fraction > done_) emit w_.progress(done_ = fraction);
+    flush();
+    advance(kIncrementsBegin + (kIncrementsEnd - kIncrementsBegin) * fraction);
   }
   bool cancel_requested() const override { return w_.cancel_requested(); }
+  /// The run ended (whatever way): sends what is pending; `converged` fills the progress bar.
+  void done(bool converged) {
+    flush();
+    if (converged) advance(1.0);
+  }
 
  private:
+  using Clock = std::chrono::steady_clock;
+  static constexpr auto kBatch = std::chrono::milliseconds(AnalysisWorker::kBatchMs);
+
+  void flush() {
+    if (pending_.isEmpty()) return;
+    emit w_.cgIterations(pending_);
+    pending_.clear();
+    last_batch_ = Clock::now();
+  }
+  void advance(double fraction) {  // the bar never moves back
+    if (fraction > done_) emit w_.progress(done_ = fraction);
+  }
   AnalysisWorker& w_;
+  QVector<CgIteration> pending_;
+  Clock::time_point last_batch_ = Clock::now();
   double done_ = 0;
 };
 
@@ -55,7 +104,10 @@ SolverOptions solver_options(const json& s) {
 
 }  // namespace
 
-AnalysisWorker::AnalysisWorker(QObject* parent) : QObject(parent) { qRegisterMetaType<RunOutcome>(); }
+AnalysisWorker::AnalysisWorker(QObject* parent) : QObject(parent) {
+  qRegisterMetaType<RunOutcome>();
+  qRegisterMetaType<QVector<CgIteration>>();
+}
 
 AnalysisWorker::~AnalysisWorker() {
   if (thread_) {
@@ -102,13 +154,14 @@ void AnalysisWorker::run(const Project& project) {
       out.status = QString::fromStdString(results->status);
       out.dofs = results->dofs;
       out.cg_iterations = solver->stats().cg_iterations;
+      out.solves = solver->stats().solves;
       if (results->bodies.size() == model->bodies.size()) out.results = std::move(results);
     }
   } catch (const std::exception& e) {  // AnalysisError, ProjectError, std::invalid_argument: said to the user
     out.status = QStringLiteral("error");
     out.error = QString::fromUtf8(e.what());
   }
-  if (out.status == QLatin1String("converged")) obs.on_progress(1.0);
+  obs.done(out.status == QLatin1String("converged"));
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome_ = std::move(out);  // read on the GUI thread after the thread has finished
 }

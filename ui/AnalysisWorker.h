@@ -4,6 +4,7 @@
 // which reach GUI-thread receivers queued. Cancel sets an atomic flag the core polls at its safe points.
 #include <QObject>
 #include <QString>
+#include <QVector>
 #include <atomic>
 #include <memory>
 
@@ -15,13 +16,22 @@ class QThread;
 
 namespace rollsim::ui {
 
+/// One iteration of the interface (projected) CG: of linear solve `solve` (numbered over the run), 1-based.
+struct CgIteration {
+  int solve = 0, iteration = 0;
+  double residual = 0;  // ‖P r_k‖ / ‖P r_0‖
+};
+
 /// How a run ended, with what it produced.
 struct RunOutcome {
   QString status;  // converged / diverged / cancelled / error
   QString error;   // the message when status is "error"
   std::shared_ptr<const Model> model;
-  std::shared_ptr<const Results> results;  // null when cancelled before the analysis or on error
+  // null on error or when cancelled before the first solve; after a cancel, the last iterate's fields
+  // (Results::status)
+  std::shared_ptr<const Results> results;
   long dofs = 0, cg_iterations = 0;
+  int solves = 0;  // linear solves started
   double seconds = 0;
 };
 
@@ -40,11 +50,25 @@ class AnalysisWorker : public QObject {
   bool cancel_requested() const { return cancel_; }
   bool running() const { return thread_ != nullptr; }
 
+  static constexpr int kBatchMs = 50;
+
  signals:
   /// A stage starts: "build model", "assemble", "solve", "recover" (the core's names).
   void stageStarted(const QString& stage);
-  /// One iteration of an iterative process ("cg", "newton", "active_set"), `residual` relative.
-  void iteration(const QString& kind, int iteration, double residual);
+  /// Load increment `increment` of `count` starts / is complete (the linear analysis: 1 of 1).
+  void incrementStarted(int increment, int count);
+  void incrementFinished(int increment, int count);
+  /// Newton iteration of an increment, relative out-of-balance residual (from the nonlinear driver, once it exists).
+  void newtonIteration(int increment, int iteration, double residual);
+  /// (Projected) CG iterations, in order: the first of each solve at once, then batches at most every kBatchMs, the
+  /// rest of a solve before its solveFinished — the solver thread does not wake the GUI thread at every iteration.
+  void cgIterations(const QVector<rollsim::ui::CgIteration>& batch);
+  /// Linear solve `solve` ended after `cgIterations` CG iterations (0 for direct strategies).
+  void solveFinished(int solve, int cgIterations);
+  /// A numeric factorization of `group` (body or `body/<id>` subdomain).
+  void factorized(const QString& group);
+  /// Frictionless contact: active-set iteration `iteration` changed `changed` statuses.
+  void activeSetIteration(int iteration, int changed);
   /// Fraction of the run done, in [0, 1].
   void progress(double fraction);
   /// The run ended (always emitted once per start, on the GUI thread, after the worker thread has ended).
@@ -62,3 +86,4 @@ class AnalysisWorker : public QObject {
 }  // namespace rollsim::ui
 
 Q_DECLARE_METATYPE(rollsim::ui::RunOutcome)
+Q_DECLARE_METATYPE(rollsim::ui::CgIteration)

@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -17,11 +18,13 @@
 
 #include "LogPanel.h"
 #include "MeshView.h"
+#include "PartitionEditor.h"
+#include "PartitionPanel.h"
 #include "ProjectDocument.h"
 #include "ProjectTreePanel.h"
 #include "PropertyEditor.h"
-#include "ResidualPlot.h"
 #include "RunPanel.h"
+#include "RunPlots.h"
 #include "ViewToolBar.h"
 #include "io/AtomicFile.h"
 
@@ -59,11 +62,20 @@ MainWindow::MainWindow(QWidget* parent)
   run_dock->setWidget(run_panel_);
   addDockWidget(Qt::RightDockWidgetArea, run_dock);
 
-  plot_ = new ResidualPlot;
+  partition_ = new PartitionEditor(doc_, this);
+  partition_panel_ = new PartitionPanel(partition_, view_);
+  auto* partition_dock = new QDockWidget(tr("Partitions"), this);
+  partition_dock->setObjectName(QStringLiteral("partitionDock"));
+  partition_dock->setWidget(partition_panel_);
+  addDockWidget(Qt::RightDockWidgetArea, partition_dock);
+  tabifyDockWidget(run_dock, partition_dock);
+  run_dock->raise();
+
+  plot_ = new RunPlots;
   log_ = new LogPanel;
   auto* tabs = new QTabWidget;
   tabs->setObjectName(QStringLiteral("bottomTabs"));
-  tabs->addTab(plot_, tr("Residuals"));
+  tabs->addTab(plot_, tr("Convergence"));
   tabs->addTab(log_, tr("Log"));
   auto* bottom_dock = new QDockWidget(tr("Residuals and log"), this);
   bottom_dock->setObjectName(QStringLiteral("bottomDock"));
@@ -95,7 +107,8 @@ MainWindow::MainWindow(QWidget* parent)
     log_->info(tr("stage: %1").arg(stage));
     statusBar()->showMessage(stage);
   });
-  connect(worker_, &AnalysisWorker::iteration, plot_, &ResidualPlot::add_iteration);
+  plot_->watch(worker_);
+  connect(worker_, &AnalysisWorker::incrementStarted, run_panel_, &RunPanel::set_increment);
   connect(worker_, &AnalysisWorker::progress, run_panel_, &RunPanel::set_progress);
   connect(worker_, &AnalysisWorker::finished, this, &MainWindow::run_finished);
 
@@ -120,9 +133,16 @@ void MainWindow::build_menus() {
   file->addSeparator();
   file->addAction(tr("Export &VTU..."), this, &MainWindow::export_vtu);
   file->addAction(tr("Export &PNG screenshot..."), this, &MainWindow::export_png);
-  file->addAction(tr("Export residuals as &CSV..."), this, &MainWindow::export_csv);
+  file->addAction(tr("Export plotted series as &CSV..."), this, &MainWindow::export_csv);
   file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));  // undo/redo of partition painting steps
+  QAction* undo = partition_->undo_stack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  edit->addAction(undo);
+  QAction* redo = partition_->undo_stack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcut(QKeySequence::Redo);
+  edit->addAction(redo);
   QMenu* run = menuBar()->addMenu(tr("&Run"));
   run->addAction(tr("&Run"), this, &MainWindow::start_run, QKeySequence(Qt::Key_F5));
   run->addAction(tr("&Cancel"), this, &MainWindow::cancel_run, QKeySequence(Qt::Key_Escape));
@@ -148,7 +168,7 @@ bool MainWindow::open_file(const QString& file, QString* error) {
 
 void MainWindow::new_project() {
   doc_->load_default();
-  log_->info(tr("new project from the default (plate with a hole)"));
+  log_->info(tr("new project from the default (the paper's rolling pass)"));
   tree_->select("");
 }
 
@@ -166,6 +186,7 @@ bool MainWindow::save() {
 }
 
 bool MainWindow::save_to(const QString& file) {
+  partition_->flush();  // a stroke still waiting to be written joins the file
   try {
     doc_->save_as(file);
   } catch (const std::exception& e) {
@@ -244,6 +265,7 @@ void MainWindow::model_changed() {
 
 bool MainWindow::start_run() {
   if (worker_->running()) return false;
+  partition_->flush();
   plot_->clear();
   log_->info(tr("run %1 with solver %2")
                  .arg(QString::fromStdString(doc_->project().name()),
@@ -298,6 +320,12 @@ void MainWindow::show_results_view() {
   plot_->flush();
 }
 
+void MainWindow::show_partitions() {
+  if (auto* dock = findChild<QDockWidget*>(QStringLiteral("partitionDock"))) dock->raise();
+  view_->set_partition(partition_->body(), partition_->map());
+  view_bar_->refresh();
+}
+
 QImage MainWindow::screenshot() {
   view_->render_now();
   return grab().toImage();
@@ -325,7 +353,7 @@ void MainWindow::export_png() {
 }
 
 void MainWindow::export_csv() {
-  const QString file = QFileDialog::getSaveFileName(this, tr("Export residuals"), QString(), tr("CSV (*.csv)"));
+  const QString file = QFileDialog::getSaveFileName(this, tr("Export plotted series"), QString(), tr("CSV (*.csv)"));
   if (file.isEmpty()) return;
   try {
     write_file_atomically(file.toStdString(), plot_->csv().toStdString());

@@ -14,10 +14,12 @@ namespace rollsim::ui {
 
 class LogPanel;
 class MeshView;
+class PartitionEditor;
+class PartitionPanel;
 class ProjectDocument;
 class ProjectTreePanel;
 class PropertyEditor;
-class ResidualPlot;
+class RunPlots;
 class RunPanel;
 class ViewToolBar;
 
@@ -41,14 +43,18 @@ class MainWindow : public QMainWindow {
   void cancel_run();
   /// Colours the view and shows the residual plot exactly as after an interactive run (for --screenshot).
   void show_results_view();
+  /// Raises the partition panel and colours the view by the edited body's subdomains.
+  void show_partitions();
   /// The whole window as an image (QWidget::grab, the 3D view included).
   QImage screenshot();
 
   ProjectDocument* document() const { return doc_; }
   MeshView* view() const { return view_; }
-  ResidualPlot* plot() const { return plot_; }
+  RunPlots* plot() const { return plot_; }
   AnalysisWorker* worker() const { return worker_; }
   ProjectTreePanel* tree() const { return tree_; }
+  PartitionEditor* partition_editor() const { return partition_; }
+  PartitionPanel* partition_panel() const { return partition_panel_; }
   PropertyEditor* property_editor() const { return editor_; }
   RunPanel* run_panel() const { return run_panel_; }
   LogPanel* log() const { return log_; }
@@ -81,7 +87,9 @@ class MainWindow : public QMainWindow {
   ProjectTreePanel* tree_;
   PropertyEditor* editor_;
   RunPanel* run_panel_;
-  ResidualPlot* plot_;
+  PartitionEditor* partition_;
+  PartitionPanel* partition_panel_;
+  RunPlots* plot_;
   LogPanel* log_;
   QLabel* counts_;
   QLabel* status_;

@@ -5,17 +5,25 @@
 #include <vtkCamera.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
-#include <vtkDataSetMapper.h>
 #include <vtkDoubleArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGeometryFilter.h>
+#include <vtkHardwareSelector.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLookupTable.h>
+#include <vtkMatrix4x4.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkSelection.h>
+#include <vtkSelectionNode.h>
 #include <vtkTextProperty.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkVariant.h>
@@ -23,6 +31,7 @@
 
 #include <QMouseEvent>
 #include <QResizeEvent>
+#include <QRubberBand>
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
@@ -49,6 +58,11 @@ constexpr long kEdgesUpTo = 40000;  // cell edges are drawn on meshes up to this
 
 }  // namespace
 
+QColor category_color(int i) {
+  const auto& c = kCategories[static_cast<size_t>(std::max(0, i)) % kCategories.size()];
+  return QColor::fromRgbF(c[0], c[1], c[2]);
+}
+
 MeshView::MeshView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
   setRenderWindow(window_);
   window_->AddRenderer(renderer_);
@@ -58,7 +72,9 @@ MeshView::MeshView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   interactor()->SetInteractorStyle(style);
 
-  mapper_->SetInputConnection(warp_->GetOutputPort());
+  surface_->SetInputConnection(warp_->GetOutputPort());
+  surface_->PassThroughCellIdsOn();  // selected faces map back to the cells painted
+  mapper_->SetInputConnection(surface_->GetOutputPort());
   mapper_->SetColorModeToMapScalars();
   actor_->SetMapper(mapper_);
   actor_->GetProperty()->SetEdgeColor(0.15, 0.15, 0.15);
@@ -131,6 +147,17 @@ void MeshView::rebuild_grid() {
     zero->Fill(0.0);
     grid_->GetPointData()->AddArray(zero);
   }
+  centres_.assign(static_cast<size_t>(grid_->GetNumberOfCells()), {0, 0, 0});
+  for (vtkIdType c = 0; c < grid_->GetNumberOfCells(); ++c) {
+    const vtkIdType* ids = nullptr;
+    vtkIdType n = 0;
+    grid_->GetCellPoints(c, n, ids);
+    auto& centre = centres_[static_cast<size_t>(c)];
+    for (vtkIdType k = 0; k < n; ++k) {
+      const double* x = grid_->GetPoint(ids[k]);
+      for (int i = 0; i < 3; ++i) centre[static_cast<size_t>(i)] += x[i] / static_cast<double>(n);
+    }
+  }
   actor_->GetProperty()->SetEdgeVisibility(grid_->GetNumberOfCells() <= kEdgesUpTo);
   actor_->VisibilityOn();
   apply_coloring();
@@ -170,15 +197,19 @@ void MeshView::apply_coloring() {
     n = std::max(n, 1);
     categories_->ResetAnnotations();
     categories_->SetNumberOfTableValues(n);
+    colours_->SetNumberOfTableValues(n);
     for (int i = 0; i < n; ++i) {
       const auto& c = kCategories[static_cast<size_t>(i) % kCategories.size()];
       categories_->SetTableValue(i, c[0], c[1], c[2], 1.0);
+      colours_->SetTableValue(i, c[0], c[1], c[2], 1.0);
       const std::string name = body ? model_->bodies[static_cast<size_t>(i)].name : "subdomain " + std::to_string(i);
       categories_->SetAnnotation(vtkVariant(i), name);
     }
     categories_->SetRange(0, n - 1);
     categories_->Build();
-    mapper_->SetLookupTable(categories_);
+    colours_->SetTableRange(0, n - 1);  // n colours over [0, n-1]: id k falls in bin k
+    colours_->Build();
+    mapper_->SetLookupTable(colours_);
     mapper_->SetScalarModeToUseCellFieldData();
     mapper_->SelectColorArray(body ? "body_id" : "subdomain_id");
     mapper_->SetScalarRange(0, n - 1);
@@ -241,8 +272,14 @@ void MeshView::reset_camera() {
   renderer_->ResetCamera();
   if (model_ && model_->dim == 2 && width() > 0 && height() > 0) {  // fit width and height, 8 % margin
     const auto b = bounds();
-    const double aspect = static_cast<double>(width()) / height();
+    const double aspect = 0.8 * width() / height();  // the legend takes the right fifth
     cam->SetParallelScale(1.08 * std::max(0.5 * (b[3] - b[2]), 0.5 * (b[1] - b[0]) / aspect));
+    double focal[3], position[3];
+    cam->GetFocalPoint(focal);
+    cam->GetPosition(position);
+    const double shift = 0.1 * width() / height() * cam->GetParallelScale();  // centre the mesh left of the legend
+    cam->SetFocalPoint(focal[0] + shift, focal[1], focal[2]);
+    cam->SetPosition(position[0] + shift, position[1], position[2]);
   } else {
     cam->Zoom(1.1);
   }
@@ -258,6 +295,153 @@ void MeshView::resizeEvent(QResizeEvent* event) {
 void MeshView::mousePressEvent(QMouseEvent* event) {
   camera_fitted_ = false;
   QVTKOpenGLNativeWidget::mousePressEvent(event);
+}
+
+// QVTKOpenGLNativeWidget hands every event to VTK's interactor in event(): a paint drag must not reach it (the
+// camera would turn while painting).
+bool MeshView::event(QEvent* event) {
+  auto* mouse = dynamic_cast<QMouseEvent*>(event);
+  const bool press = event->type() == QEvent::MouseButtonPress && mouse && mouse->button() == Qt::LeftButton;
+  if (!mouse || tool_ == PaintTool::Camera || paint_body_ < 0 || !(painting_ || press))
+    return QVTKOpenGLNativeWidget::event(event);
+  if (press) {
+    paint_press(mouse->pos());
+  } else if (event->type() == QEvent::MouseMove) {
+    paint_move(mouse->pos());
+  } else if (event->type() == QEvent::MouseButtonRelease) {
+    paint_release(mouse->pos());
+  }
+  return true;
+}
+
+void MeshView::paint_press(QPoint at) {
+  painting_ = true;
+  press_ = at;
+  ++stroke_;
+  if (tool_ == PaintTool::Brush) {
+    emit painted(cells_in_circle(paint_body_, at, brush_radius_), stroke_);
+    return;
+  }
+  if (!band_) band_ = new QRubberBand(QRubberBand::Rectangle, this);
+  band_->setGeometry(QRect(at, QSize()));
+  band_->show();
+}
+
+void MeshView::paint_move(QPoint at) {
+  if (tool_ == PaintTool::Brush)
+    emit painted(cells_in_circle(paint_body_, at, brush_radius_), stroke_);
+  else if (band_)
+    band_->setGeometry(QRect(press_, at).normalized());
+}
+
+void MeshView::paint_release(QPoint at) {
+  painting_ = false;
+  if (tool_ == PaintTool::Box && band_) {
+    band_->hide();
+    emit painted(cells_in_box(paint_body_, QRect(press_, at).normalized()), stroke_);
+  }
+}
+
+void MeshView::set_paint_tool(PaintTool tool) {
+  tool_ = tool;
+  setCursor(tool == PaintTool::Camera ? Qt::ArrowCursor : Qt::CrossCursor);
+}
+
+long MeshView::cell_offset(int body) const {
+  long offset = 0;
+  for (int b = 0; b < body; ++b) offset += model_->bodies[static_cast<size_t>(b)].mesh.num_elements();
+  return offset;
+}
+
+std::vector<QPointF> MeshView::projected_centres(int body) const {
+  std::vector<QPointF> out;
+  if (!model_ || body < 0 || body >= static_cast<int>(model_->bodies.size())) return out;
+  vtkMatrix4x4* m =
+      renderer_->GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer_->GetTiledAspectRatio(), -1, 1);
+  const long first = cell_offset(body), n = model_->bodies[static_cast<size_t>(body)].mesh.num_elements();
+  out.reserve(static_cast<size_t>(n));
+  const double w = width(), h = height();
+  for (long c = first; c < first + n; ++c) {
+    const auto& x = centres_[static_cast<size_t>(c)];
+    double ndc[3];
+    for (int r = 0; r < 3; ++r)
+      ndc[r] =
+          m->GetElement(r, 0) * x[0] + m->GetElement(r, 1) * x[1] + m->GetElement(r, 2) * x[2] + m->GetElement(r, 3);
+    const double ww =
+        m->GetElement(3, 0) * x[0] + m->GetElement(3, 1) * x[1] + m->GetElement(3, 2) * x[2] + m->GetElement(3, 3);
+    out.emplace_back((ndc[0] / ww + 1) * 0.5 * w, (1 - ndc[1] / ww) * 0.5 * h);  // widget y grows downwards
+  }
+  return out;
+}
+
+std::vector<int> MeshView::visible_cells(int body, QRect box) {
+  const double dpr = devicePixelRatioF();
+  const int hpx = static_cast<int>(height() * dpr);
+  vtkNew<vtkHardwareSelector> selector;
+  selector->SetRenderer(renderer_);
+  selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
+  selector->SetArea(static_cast<unsigned>(std::max(0.0, box.left() * dpr)),
+                    static_cast<unsigned>(std::max(0, hpx - 1 - static_cast<int>(box.bottom() * dpr))),
+                    static_cast<unsigned>(std::max(0.0, box.right() * dpr)),
+                    static_cast<unsigned>(std::max(0, hpx - 1 - static_cast<int>(box.top() * dpr))));
+  vtkSmartPointer<vtkSelection> selection;
+  selection.TakeReference(selector->Select());
+  std::vector<int> cells;
+  const long first = cell_offset(body), n = model_->bodies[static_cast<size_t>(body)].mesh.num_elements();
+  vtkDataArray* original = surface_->GetOutput()->GetCellData()->GetArray("vtkOriginalCellIds");
+  for (unsigned i = 0; original && selection && i < selection->GetNumberOfNodes(); ++i) {
+    auto* ids = vtkIdTypeArray::SafeDownCast(selection->GetNode(i)->GetSelectionList());
+    for (vtkIdType k = 0; ids && k < ids->GetNumberOfTuples(); ++k) {
+      const auto c = static_cast<vtkIdType>(original->GetTuple1(ids->GetValue(k)));
+      if (c >= first && c < first + n) cells.push_back(static_cast<int>(c - first));
+    }
+  }
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  return cells;
+}
+
+std::vector<int> MeshView::cells_in_circle(int body, QPoint centre, int radius) {
+  const QRect box(centre - QPoint(radius, radius), centre + QPoint(radius, radius));
+  const std::vector<QPointF> at = projected_centres(body);
+  const double r2 = static_cast<double>(radius) * radius;
+  auto inside = [&](int e) {
+    const QPointF d = at[static_cast<size_t>(e)] - QPointF(centre);
+    return d.x() * d.x() + d.y() * d.y() <= r2;
+  };
+  std::vector<int> cells;
+  if (through_) {
+    for (int e = 0; e < static_cast<int>(at.size()); ++e)
+      if (inside(e)) cells.push_back(e);
+  } else {
+    for (const int e : visible_cells(body, box))
+      if (inside(e)) cells.push_back(e);
+  }
+  return cells;
+}
+
+std::vector<int> MeshView::cells_in_box(int body, QRect box) {
+  if (!through_) return visible_cells(body, box);
+  std::vector<int> cells;
+  const std::vector<QPointF> at = projected_centres(body);
+  const QRectF area(box);
+  for (int e = 0; e < static_cast<int>(at.size()); ++e)
+    if (area.contains(at[static_cast<size_t>(e)])) cells.push_back(e);
+  return cells;
+}
+
+void MeshView::set_partition(int body, const std::vector<int>& map) {
+  if (!grid_ || !model_ || body < 0 || body >= static_cast<int>(model_->bodies.size())) return;
+  auto* sub = vtkIntArray::SafeDownCast(grid_->GetCellData()->GetArray("subdomain_id"));
+  const long first = cell_offset(body), n = model_->bodies[static_cast<size_t>(body)].mesh.num_elements();
+  if (!sub || static_cast<long>(map.size()) != n) return;
+  for (long e = 0; e < n; ++e) sub->SetValue(first + e, map[static_cast<size_t>(e)]);
+  sub->Modified();
+  grid_->Modified();  // the warp and surface filters pass the new ids to the mapper
+  if (color_by_ == ColorBy::Subdomain)
+    apply_coloring();
+  else
+    set_color_by(ColorBy::Subdomain);
 }
 
 void MeshView::wheelEvent(QWheelEvent* event) {

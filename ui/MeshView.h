@@ -6,6 +6,8 @@
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
+#include <QColor>
+#include <QRect>
 #include <array>
 #include <filesystem>
 #include <memory>
@@ -15,7 +17,8 @@
 
 class vtkActor;
 class vtkAxesActor;
-class vtkDataSetMapper;
+class vtkGeometryFilter;
+class vtkPolyDataMapper;
 class vtkGenericOpenGLRenderWindow;
 class vtkLookupTable;
 class vtkOrientationMarkerWidget;
@@ -23,10 +26,17 @@ class vtkRenderer;
 class vtkScalarBarActor;
 class vtkUnstructuredGrid;
 class vtkWarpVector;
+class QRubberBand;
 
 namespace rollsim::ui {
 
 enum class ColorBy { Body, Subdomain, Displacement, VonMises };
+
+/// The categorical colour of body / subdomain `i` in the view (Tableau 10, repeating).
+QColor category_color(int i);
+
+/// What a left drag in the view does: turn the camera, paint with a round brush, or select a rubber-band box.
+enum class PaintTool { Camera, Brush, Box };
 
 class MeshView : public QVTKOpenGLNativeWidget {
   Q_OBJECT
@@ -60,13 +70,38 @@ class MeshView : public QVTKOpenGLNativeWidget {
   /// Cells currently drawn (tests).
   long drawn_cells() const;
 
+  /// Partition painting on one body (-1: none). `through`: every cell whose centre falls under the brush or box,
+  /// across the depth (columns of a slab); otherwise only the cells visible on screen (VTK hardware selection).
+  void set_paint_tool(PaintTool tool);
+  PaintTool paint_tool() const { return tool_; }
+  void set_paint_body(int body) { paint_body_ = body; }
+  void set_brush_radius(int pixels) { brush_radius_ = std::max(1, pixels); }
+  int brush_radius() const { return brush_radius_; }
+  void set_paint_through(bool through) { through_ = through; }
+  /// Elements of `body` under a brush at `centre` (widget pixels) / inside `box`.
+  std::vector<int> cells_in_circle(int body, QPoint centre, int radius);
+  std::vector<int> cells_in_box(int body, QRect box);
+  /// Widget positions of the cell centres of `body` (the undeformed mesh), for the current camera.
+  std::vector<QPointF> projected_centres(int body) const;
+  /// Shows a body's element -> subdomain map (colours by subdomain).
+  void set_partition(int body, const std::vector<int>& map);
+
  signals:
   void colorByChanged(rollsim::ui::ColorBy mode);
+  /// A paint step on the paint body: `elements` under the brush or in the box; `stroke` groups the steps of one
+  /// drag (a new id per press).
+  void painted(const std::vector<int>& elements, int stroke);
 
  private:
   void resizeEvent(QResizeEvent* event) override;
+  bool event(QEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
+  void paint_press(QPoint at);
+  void paint_move(QPoint at);
+  void paint_release(QPoint at);
   void wheelEvent(QWheelEvent* event) override;
+  std::vector<int> visible_cells(int body, QRect box);
+  long cell_offset(int body) const;
   void rebuild_grid();
   void apply_coloring();
   void render();
@@ -75,9 +110,12 @@ class MeshView : public QVTKOpenGLNativeWidget {
   vtkNew<vtkGenericOpenGLRenderWindow> window_;
   vtkNew<vtkRenderer> renderer_;
   vtkNew<vtkWarpVector> warp_;
-  vtkNew<vtkDataSetMapper> mapper_;
+  vtkNew<vtkGeometryFilter> surface_;  // outer faces, with the grid cell of each (vtkOriginalCellIds)
+  vtkNew<vtkPolyDataMapper> mapper_;
   vtkNew<vtkActor> actor_;
-  vtkNew<vtkLookupTable> categories_;
+  vtkNew<vtkLookupTable> categories_;  // indexed, annotated: the legend's
+  vtkNew<vtkLookupTable> colours_;     // the same colours by range: the mapper's (an indexed lookup per cell is
+                                       // slow: half a second per repaint of 1e5 hexahedra)
   vtkNew<vtkLookupTable> continuous_;
   vtkNew<vtkScalarBarActor> legend_;
   vtkNew<vtkAxesActor> axes_;
@@ -90,8 +128,15 @@ class MeshView : public QVTKOpenGLNativeWidget {
   std::array<double, 6> shown_bounds_{0, 0, 0, 0, 0, 0};
   int shown_dim_ = 0;
   bool camera_fitted_ = true;  // until the user moves the camera, a resize fits the model again
+  PaintTool tool_ = PaintTool::Camera;
+  int paint_body_ = -1, brush_radius_ = 12, stroke_ = 0;
+  bool through_ = true, painting_ = false;
+  QPoint press_;
+  QRubberBand* band_ = nullptr;
+  std::vector<std::array<double, 3>> centres_;  // cell centres of the grid
 };
 
 }  // namespace rollsim::ui
 
 Q_DECLARE_METATYPE(rollsim::ui::ColorBy)
+Q_DECLARE_METATYPE(std::vector<int>)

@@ -80,17 +80,23 @@ void ProjectDocument::save_as(const QString& file) {
 }
 
 std::vector<Issue> ProjectDocument::propose(const std::string& pointer, const Document& value) {
+  return propose({{pointer, value}});
+}
+
+std::vector<Issue> ProjectDocument::propose(const std::vector<std::pair<std::string, Document>>& edits) {
   Document doc = doc_;
-  try {
-    const Document::json_pointer ptr(pointer);
-    if (value.is_null()) {
-      Document& parent = doc.at(ptr.parent_pointer());
-      if (parent.is_object()) parent.erase(ptr.back());
-    } else {
-      doc[ptr] = value;
+  for (const auto& [pointer, value] : edits) {
+    try {
+      const Document::json_pointer ptr(pointer);
+      if (value.is_null()) {
+        Document& parent = doc.at(ptr.parent_pointer());
+        if (parent.is_object()) parent.erase(ptr.back());
+      } else {
+        doc[ptr] = value;
+      }
+    } catch (const nlohmann::json::exception& e) {
+      return {{pointer, std::string("cannot be set: ") + e.what()}};
     }
-  } catch (const nlohmann::json::exception& e) {
-    return {{pointer, std::string("cannot be set: ") + e.what()}};
   }
   if (doc == doc_) return {};
   try {

@@ -43,6 +43,8 @@ class ProjectDocument : public QObject {
   /// Proposes `value` at the JSON pointer (e.g. "/bodies/0/mesh/nx"); null removes the key (back to the default).
   /// Returns the validation issues; empty means accepted (document and project updated, model rebuilt).
   std::vector<Issue> propose(const std::string& pointer, const Document& value);
+  /// Several edits validated together as one change (e.g. a painted map replacing a partition spec).
+  std::vector<Issue> propose(const std::vector<std::pair<std::string, Document>>& edits);
 
   const Document& document() const { return doc_; }
   /// The document as saved: 2-space indented JSON with a final newline.

@@ -1,11 +1,12 @@
 #pragma once
-// Live residual history (Qt Charts, log-scale y): one series per iteration kind ("cg" of the interface solves,
-// "newton" of the nonlinear driver). Points arrive at solver speed and are buffered; the chart repaints at most
-// 20 times a second, so plotting never slows the solver.
+// Residual history of a run (Qt Charts, log10 y axis with "1e-04" labels, a labelled tick every decade or every few
+// decades when the plot is short): one series per iteration kind ("cg" of the interface solves, "newton" of the
+// nonlinear driver), against the cumulative iteration of that kind. It draws a RunSeries; RunPlots decides when (at
+// most every 100 ms), so that plotting does not slow the solver.
 #include <QChartView>
 #include <QMap>
-#include <QTimer>
-#include <QVector>
+
+#include "RunSeries.h"
 
 namespace QtCharts {
 class QLineSeries;
@@ -21,40 +22,40 @@ class ResidualPlot : public QtCharts::QChartView {
  public:
   explicit ResidualPlot(QWidget* parent = nullptr);
 
-  /// Forgets every series (a new run starts).
+  /// Draws what `series` gained since the last call (every point again after clear()).
+  void refresh(const RunSeries& series);
+  /// Removes every curve (a new run starts).
   void clear();
-  /// Points plotted so far, per kind (after flush()).
+  /// Samples drawn so far, per kind (every sample of the series after a refresh).
   int points(const QString& kind) const;
+  /// Vertices of the curve of a kind: the samples, or past 2 kMaxBuckets of them the min and max of each bucket.
+  int vertices(const QString& kind) const;
+  static constexpr int kMaxBuckets = 1000;
+  /// The kinds drawn, in the order they arrived.
   QStringList kinds() const;
-  /// The plotted series as CSV: kind,index,iteration,residual (index counts the points of a kind across solves).
-  QString csv() const;
-  /// Moves buffered points into the chart now (the timer does it at most every 50 ms).
-  void flush();
+  /// The y axis (tests read its range and label format).
+  const QtCharts::QLogValueAxis* residual_axis() const { return y_; }
 
- public slots:
-  /// One iteration: `residual` relative (dimensionless). Kinds other than cg/newton are not residuals
-  /// ("active_set" counts changed contact statuses) and are not plotted.
-  void add_iteration(const QString& kind, int iteration, double residual);
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
-  struct Sample {
-    int index, iteration;
-    double residual;
+  /// Range in whole decades around the data; a labelled tick every decade, or every few when the plot is too short.
+  void fit_residual_axis();
+  struct Curve {
+    QtCharts::QLineSeries* line = nullptr;
+    int drawn = 0;  // samples of the kind already in `line`
   };
-  struct Track {
-    QtCharts::QLineSeries* series = nullptr;
-    QVector<Sample> samples;  // every point, plotted or pending
-    int plotted = 0;
-  };
-  Track& track(const QString& kind);
+  Curve& curve(const QString& kind);
+  static QVector<QPointF> vertices(const QVector<ResidualSample>& samples);
 
-  QMap<QString, Track> tracks_;
+  QMap<QString, Curve> curves_;
+  QStringList order_;
   QtCharts::QValueAxis* x_;
   QtCharts::QLogValueAxis* y_;
-  QTimer timer_;
   double ymin_ = 1, ymax_ = 1;
   bool has_range_ = false;
-  int xmax_ = 1;
+  int xmax_ = 0;
 };
 
 }  // namespace rollsim::ui

@@ -58,8 +58,18 @@ QString RunPanel::status() const { return status_->text(); }
 void RunPanel::set_running(bool running) {
   run_->setEnabled(!running);
   cancel_->setEnabled(running);
-  if (running) progress_->setValue(0);
+  if (!running) return;
+  progress_->setValue(0);
+  progress_->setTextVisible(false);
+  progress_->setFormat(QString());
 }
+
+void RunPanel::set_increment(int increment, int count) {
+  progress_->setFormat(tr("increment %1 of %2").arg(increment).arg(count));
+  progress_->setTextVisible(true);
+}
+
+QString RunPanel::progress_text() const { return progress_->isTextVisible() ? progress_->text() : QString(); }
 
 void RunPanel::set_progress(double fraction) { progress_->setValue(static_cast<int>(1000 * fraction)); }
 

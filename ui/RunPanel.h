@@ -24,10 +24,14 @@ class RunPanel : public QWidget {
   QPushButton* run_button() const { return run_; }
   QPushButton* cancel_button() const { return cancel_; }
   QString status() const;
+  /// The progress bar's text ("" until an increment starts).
+  QString progress_text() const;
 
  public slots:
   void set_running(bool running);
   void set_progress(double fraction);
+  /// Shows "increment i of n" on the progress bar (the run's load increments).
+  void set_increment(int increment, int count);
   void set_status(const QString& status);
 
  signals:

@@ -35,6 +35,8 @@ void add_results(vtkUnstructuredGrid* grid, const Model& model, const Results& r
   auto u = array("displacement", 3, np), sp = array("stress", 6, np), vp = array("von_mises", 1, np);
   auto sc = array("stress", 6, nc), vc = array("von_mises", 1, nc);
   auto body_pt = int_array("body_id", np);
+  const bool contact = !model.contacts.empty();  // the array exists whenever the model has contact pairs
+  auto cp = array("contact_pressure", 1, contact ? np : 0);
   vtkDataArray* sub = grid->GetCellData()->GetArray("subdomain_id");
   vtkIdType pn = 0, cn = 0;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
@@ -47,6 +49,7 @@ void add_results(vtkUnstructuredGrid* grid, const Model& model, const Results& r
       sp->SetTuple(pn, br.nodal_stress[n].data());
       vp->SetValue(pn, von_mises(br.nodal_stress[n].data()));
       body_pt->SetValue(pn, static_cast<int>(b));
+      if (contact) cp->SetValue(pn, n < br.contact_pressure.size() ? br.contact_pressure[n] : 0.0);
     }
     for (int e = 0; e < m.num_elements(); ++e, ++cn) {
       sc->SetTuple(cn, br.element_stress[e].data());
@@ -59,6 +62,7 @@ void add_results(vtkUnstructuredGrid* grid, const Model& model, const Results& r
   grid->GetPointData()->AddArray(sp);
   grid->GetPointData()->AddArray(vp);
   grid->GetPointData()->AddArray(body_pt);
+  if (contact) grid->GetPointData()->AddArray(cp);
   grid->GetCellData()->AddArray(sc);
   grid->GetCellData()->AddArray(vc);
 }

@@ -13,7 +13,8 @@ namespace rollsim {
 /// Cells of every body stacked in body order (Q4 -> VTK_QUAD, H8 -> VTK_HEXAHEDRON), nodes offset per body.
 /// Cell data always: body_id, subdomain_id (the body's partition, 0 when undivided).
 /// With results, point data: displacement (3 components; the active vectors), stress (6, nodal average),
-/// von_mises, body_id; cell data: stress (element mean), von_mises, and subdomain_id from the results.
+/// von_mises, body_id, and contact_pressure when the model has contact pairs (Results: f·n / tributary measure on
+/// slave nodes, 0 elsewhere); cell data: stress (element mean), von_mises, and subdomain_id from the results.
 vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const Results* results = nullptr);
 
 }  // namespace rollsim

@@ -16,6 +16,9 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
     it->second -= row.comp < 0 ? Eigen::Vector3d(l * c.normal) : Eigen::Vector3d(l * Eigen::Vector3d::Unit(row.comp));
   }
   results.contacts.clear();
+  if (!pairs.empty())  // every body carries the field once the model has contact: 0 off the slave surfaces
+    for (size_t b = 0; b < results.bodies.size(); ++b)
+      results.bodies[b].contact_pressure = Eigen::VectorXd::Zero(model.bodies[b].mesh.num_nodes());
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
     ContactResult cr;
@@ -23,8 +26,6 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
     cr.candidate_nodes = static_cast<int>(pairs[i].points.size());
     Eigen::Vector3d tangential = Eigen::Vector3d::Zero();
     BodyResults& slave = results.bodies[p.slave_body];
-    if (slave.contact_pressure.size() == 0)
-      slave.contact_pressure = Eigen::VectorXd::Zero(model.bodies[p.slave_body].mesh.num_nodes());
     for (const auto& [j, f] : force[i]) {
       const ContactPoint& c = pairs[i].points[j];
       const double fn = f.dot(c.normal);

@@ -1,6 +1,20 @@
 #pragma once
-// What the engine reports while it runs; front ends (CLI progress, GUI plots) implement it.
-// Calls come from the thread that runs the analysis: a GUI forwards them through queued signals.
+// What the engine reports while it runs; front ends (CLI progress, GUI plots) implement it. One typed hook per
+// event, for today's linear analysis and for the incremental Newton driver to come. An analysis reports, in order:
+//
+//   on_stage("assemble")
+//   on_increment_begin(i, n)                 load increment i of n (the linear analysis: 1 of 1)
+//     on_newton_iteration(i, k, residual)    Newton driver only, after each iteration (none emits it yet)
+//     on_factorization(group)                each numeric factorization, named by group
+//     on_cg_iteration(solve, k, residual)    each (projected) CG iteration of linear solve `solve`
+//     on_solve_end(solve, cg_iterations)     a linear solve is complete (0 CG iterations for direct strategies)
+//     on_active_set_iteration(it, changed)   frictionless contact: statuses changed after solve `it`
+//   on_increment_end(i, n), on_progress(i / n)
+//   on_stage("recover")
+//
+// Linear solves are numbered 1, 2, ... over the whole run (active-set iterations, later Newton iterations of every
+// increment). Calls come from the thread that runs the analysis, one at a time (factorizations on worker threads
+// are reported after they joined): a GUI forwards them through queued signals.
 #include <string>
 
 namespace rollsim {
@@ -8,14 +22,30 @@ namespace rollsim {
 class AnalysisObserver {
  public:
   virtual ~AnalysisObserver() = default;
-  /// A named stage starts ("assemble", "factorize", "solve", "recover").
+  /// A named stage starts ("assemble", "solve", "recover").
   virtual void on_stage(const std::string& /*stage*/) {}
-  /// One iteration of an iterative process: `kind` is "cg" (interface CG / projected CG of one
-  /// linear solve), "active_set" (contact status loop) or "newton"; `residual` is relative (dimensionless).
-  virtual void on_iteration(const std::string& /*kind*/, int /*iteration*/, double /*residual*/) {}
-  /// Fraction of the whole analysis done, in [0, 1] (per increment once increments exist).
+  /// Load increment `increment` (1-based) of `count` starts / is complete (not called for an increment a cancel
+  /// interrupted).
+  virtual void on_increment_begin(int /*increment*/, int /*count*/) {}
+  virtual void on_increment_end(int /*increment*/, int /*count*/) {}
+  /// Newton iteration `iteration` (1-based) of increment `increment`: ‖r_k‖ / ‖r_0‖ of the out-of-balance force
+  /// (dimensionless). Reserved for the nonlinear driver; the GUI plots it as the "newton" series.
+  virtual void on_newton_iteration(int /*increment*/, int /*iteration*/, double /*residual*/) {}
+  /// Iteration `iteration` (1-based) of the interface (projected) CG of linear solve `solve`: ‖P r_k‖ / ‖P r_0‖
+  /// (paper eqs. (7)-(8), dimensionless).
+  virtual void on_cg_iteration(int /*solve*/, int /*iteration*/, double /*residual*/) {}
+  /// Linear solve `solve` is complete after `cg_iterations` CG iterations (0: a direct strategy).
+  virtual void on_solve_end(int /*solve*/, int /*cg_iterations*/) {}
+  /// A numeric factorization of `group` (a body, or `body/<id>` subdomain; a global factorization reports every
+  /// group it holds), as counted in summary.json's solver.factorizations.
+  virtual void on_factorization(const std::string& /*group*/) {}
+  /// Active-set iteration `iteration` (= its linear solve) changed `changed` contact statuses (0: settled).
+  virtual void on_active_set_iteration(int /*iteration*/, int /*changed*/) {}
+  /// Fraction of the increments done, in [0, 1].
   virtual void on_progress(double /*fraction*/) {}
-  /// True asks the analysis to stop at the next safe point.
+  /// True asks the analysis to stop at the next safe point: between CG iterations, before every linear solve
+  /// (between active-set iterations) and before every increment. The results of a cancelled run are those of the
+  /// last iterate (see Results::status).
   virtual bool cancel_requested() const { return false; }
 };
 

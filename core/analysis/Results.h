@@ -14,7 +14,9 @@ struct BodyResults {
   std::vector<std::array<double, 6>> element_stress;  // element mean (xx, yy, zz, xy, yz, zx) [stress]
   std::vector<std::array<double, 6>> nodal_stress;    // extrapolated from Gauss points, averaged at nodes
   std::vector<int> subdomain;                         // per element (0 while bodies are not partitioned)
-  Eigen::VectorXd contact_pressure;                   // per node: normal contact pressure on slave nodes [stress]
+  // per node, sized only when the model has contact pairs: f·n / tributary length (2D) or area (3D) of each
+  // contact point of a slave surface (positive in compression), 0 on every other node [stress]
+  Eigen::VectorXd contact_pressure;
 };
 
 /// Resultants of one contact pair on its slave surface (forces on the slave body).
@@ -32,7 +34,11 @@ struct Timing {
 };
 
 struct Results {
-  std::string status = "converged";  // converged / diverged / cancelled / error
+  // converged / diverged / cancelled / error. A cancelled run holds the fields of its last iterate: the last
+  // completed linear solve when the cancel came between solves, or the interrupted CG's current iterate (every group
+  // in equilibrium with it, Gᵀλ = e met, the constraints C u = d not yet to tolerance); no bodies when it came before
+  // the first solve.
+  std::string status = "converged";
   std::vector<BodyResults> bodies;
   long dofs = 0;
   long multipliers = 0;  // contact multipliers of the last solve

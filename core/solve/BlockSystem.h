@@ -45,6 +45,7 @@ struct BlockSystem {
 struct BlockSolution {
   std::vector<Eigen::VectorXd> u;
   Eigen::VectorXd lambda;
+  bool cancelled = false;  // an iterative solve stopped on the observer's request: (u, λ) is its last iterate
 };
 
 }  // namespace rollsim

@@ -1,8 +1,19 @@
 #include "solve/CholmodFactorization.h"
 
+#include <mutex>
+
 #include "solve/Stopwatch.h"
 
 namespace rollsim {
+
+namespace {
+/// cholmod_analyze may call METIS (CHOLMOD tries it after AMD when AMD's fill is poor: large 3D subdomains), and
+/// METIS 5.1 draws from one process-wide random state (GKlib's Mersenne twister, re-seeded at each call). Two
+/// concurrent analyses interleave that state, so the ordering — and with it the factor's round-off — depended on
+/// thread timing: `feti --threads 2` gave results differing by ~1e-7 from run to run on the 24³ cube in 2×2×2
+/// subdomains. Orderings are computed one at a time; the numeric factorizations and solves stay concurrent.
+std::mutex analyze_mutex;
+}  // namespace
 
 CholmodFactorization::CholmodFactorization() {
   cholmod_start(&common_);
@@ -38,7 +49,10 @@ void CholmodFactorization::analyze(const SparseMatrix& A) {
   Stopwatch t;
   if (factor_) cholmod_free_factor(&factor_, &common_);
   cholmod_sparse s = view(A);
-  factor_ = cholmod_analyze(&s, &common_);
+  {
+    const std::lock_guard<std::mutex> lock(analyze_mutex);
+    factor_ = cholmod_analyze(&s, &common_);
+  }
   if (!factor_) throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(common_.status) + ")");
   const int ord = common_.method[common_.selected].ordering;
   stats_.ordering = ord == CHOLMOD_METIS     ? "METIS"

@@ -43,7 +43,7 @@ void GlobalDirect::add_times(const FactorStats& s) {
   earlier_.solve_s += s.solve_s;
 }
 
-BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver*) {
+BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver* observer) {
   const long n = sys.num_dofs(), m = sys.num_multipliers();
   if (kind_ == "skyline" && sys.num_rigid_modes() > 0)
     throw std::invalid_argument("solver 'skyline' eliminates without pivoting and cannot factor a floating body (" +
@@ -67,7 +67,11 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver*) {
   }
   factor_->factorize(A);
   const Eigen::VectorXd x = factor_->solve(f);
-  for (const Group& g : sys.groups) ++stats_.factorizations[g.name];
+  const int solve = ++stats_.solves;
+  for (const Group& g : sys.groups) {
+    ++stats_.factorizations[g.name];
+    if (observer) observer->on_factorization(g.name);
+  }
   stats_.factor = factor_->stats();
   stats_.analyze_s = earlier_.analyze_s + stats_.factor.analyze_s;
   stats_.factorize_s = earlier_.factorize_s + stats_.factor.factorize_s;
@@ -79,6 +83,7 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver*) {
     offset += g.f.size();
   }
   out.lambda = x.tail(m);
+  if (observer) observer->on_solve_end(solve, 0);
   return out;
 }
 

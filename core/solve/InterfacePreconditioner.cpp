@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "solve/Factorization.h"
+#include "solve/Parallel.h"
 
 namespace rollsim {
 
@@ -39,7 +40,7 @@ struct GroupBlocks {
 
 class BlockPreconditioner final : public InterfacePreconditioner {
  public:
-  explicit BlockPreconditioner(bool dirichlet) : dirichlet_(dirichlet) {}
+  BlockPreconditioner(bool dirichlet, int threads) : dirichlet_(dirichlet), threads_(threads) {}
 
   void setup(const BlockSystem& sys) override {
     blocks_.clear();
@@ -50,30 +51,36 @@ class BlockPreconditioner final : public InterfacePreconditioner {
       factor_glue(sys);
       w.segment(glue_.first, glue_.second).setOnes();  // (B Bᵀ)⁻¹ replaces the multiplicity weights
     }
-    for (const Group& g : sys.groups) {
-      GroupBlocks b;
+    // independent per group: concurrently on the solver's threads, like the groups' own factorizations
+    blocks_.resize(sys.groups.size());
+    for_each_group(sys.groups.size(), threads_, [&](size_t i) {
+      const Group& g = sys.groups[i];
+      GroupBlocks& b = blocks_[i];
       b.boundary = boundary_dofs(g.C);
       if (!b.boundary.empty()) {
         std::vector<int> all(static_cast<size_t>(g.C.rows()));
-        for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+        for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
         b.WCb = w.asDiagonal() * select(g.C, all, b.boundary);
         b.Kbb = select(g.K, b.boundary, b.boundary);
         if (dirichlet_) factor_interior(g, b);
       }
-      blocks_.push_back(std::move(b));
-    }
+    });
   }
 
   Eigen::VectorXd apply(const BlockSystem&, const Eigen::VectorXd& r_in) const override {
     const Eigen::VectorXd r = scale(r_in);
-    Eigen::VectorXd z = Eigen::VectorXd::Zero(r.size());
-    for (const GroupBlocks& b : blocks_) {
-      if (b.boundary.empty()) continue;
+    // the local products (and the K_ii solves) concurrently, their sum in group order: the same for any threads
+    std::vector<Eigen::VectorXd> s(blocks_.size());
+    for_each_group(blocks_.size(), threads_, [&](size_t i) {
+      const GroupBlocks& b = blocks_[i];
+      if (b.boundary.empty()) return;
       const Eigen::VectorXd v = b.WCb.transpose() * r;
-      Eigen::VectorXd s = b.Kbb * v;
-      if (b.Kii) s -= b.Kib.transpose() * b.Kii->solve(b.Kib * v);  // S v = K_bb v − K_bi K_ii⁻¹ K_ib v
-      z += b.WCb * s;
-    }
+      s[i] = b.Kbb * v;
+      if (b.Kii) s[i] -= b.Kib.transpose() * b.Kii->solve(b.Kib * v);  // S v = K_bb v − K_bi K_ii⁻¹ K_ib v
+    });
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(r.size());
+    for (size_t i = 0; i < blocks_.size(); ++i)
+      if (!blocks_[i].boundary.empty()) z += blocks_[i].WCb * s[i];
     return scale(z);
   }
 
@@ -113,16 +120,17 @@ class BlockPreconditioner final : public InterfacePreconditioner {
   }
 
   bool dirichlet_;
+  int threads_;
   std::vector<GroupBlocks> blocks_;
   std::pair<long, long> glue_{0, 0};  // first row, count
   std::unique_ptr<Factorization> BBt_;
 };
 }  // namespace
 
-std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(const std::string& name) {
+std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(const std::string& name, int threads) {
   if (name == "none") return nullptr;
-  if (name == "lumped") return std::make_unique<BlockPreconditioner>(false);
-  if (name == "dirichlet") return std::make_unique<BlockPreconditioner>(true);
+  if (name == "lumped") return std::make_unique<BlockPreconditioner>(false, threads);
+  if (name == "dirichlet") return std::make_unique<BlockPreconditioner>(true, threads);
   throw std::invalid_argument("unknown preconditioner '" + name + "' (valid: none, lumped, dirichlet)");
 }
 

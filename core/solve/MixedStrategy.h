@@ -24,11 +24,12 @@ class MixedStrategy final : public SolverStrategy {
   const ProjectedCGResult& last_interface_solve() const { return last_; }
 
  private:
-  void factorize_changed(const BlockSystem& sys);
+  void factorize_changed(const BlockSystem& sys, AnalysisObserver* observer);
   InterfaceProblem interface_problem(const BlockSystem& sys, const std::vector<Eigen::VectorXd>& Kf);
 
-  /// y = Σ_g op(g) over the groups, concurrently on options_.threads threads; summed in group order, so the
-  /// result is bit-identical for any thread count.
+  /// y = Σ_g C_g op(g) over the groups with constraints: op(g) (a vector on group g's free dofs) concurrently on
+  /// options_.threads threads, the products with the sparse C_g added in group order, so the result is
+  /// bit-identical for any thread count (and no dense multiplier-length vector is made per group).
   Eigen::VectorXd sum_over_groups(const BlockSystem& sys, const std::function<Eigen::VectorXd(size_t)>& op) const;
 
   SolverOptions options_;

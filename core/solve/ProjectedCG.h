@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/Observer.h"
+#include "solve/Factorization.h"
 
 namespace rollsim {
 
@@ -17,7 +18,8 @@ using LinearOperator = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 struct InterfaceProblem {
   LinearOperator F;   // λ ↦ F λ, symmetric positive semi-definite, positive definite on ker Gᵀ
   Eigen::VectorXd b;  // right-hand side
-  Eigen::MatrixXd G;  // multipliers × rigid modes (0 columns: no floating group)
+  Eigen::MatrixXd G;  // multipliers × rigid modes (0 columns: no floating group) …
+  SparseMatrix Gs;    // … or the same as a sparse matrix (used when it has columns; FETI: G is very sparse)
   Eigen::VectorXd e;  // one entry per rigid mode
 };
 
@@ -25,16 +27,19 @@ struct ProjectedCGOptions {
   double tolerance = 1e-4;  // on ‖P r_k‖ / ‖P r_0‖
   int max_iterations = 10000;
   LinearOperator preconditioner;  // z = M⁻¹ w (empty: identity)
+  int solve = 1;                  // the linear solve's number, reported with every iteration
 };
 
 struct ProjectedCGResult {
   Eigen::VectorXd lambda, alpha;
   int iterations = 0;
   bool converged = false;
+  bool cancelled = false;         // the observer asked to stop: λ, α are the last iterate (Gᵀλ = e holds)
   std::vector<double> residuals;  // ‖P r_k‖ / ‖P r_0‖, k = 0..iterations
   double max_constraint_error = 0;  // max over iterations of ‖Gᵀλ_k − e‖∞ / max(‖e‖∞, max|G| ‖λ_k‖∞)
 };
 
+/// Reports every iteration to `observer` (may be null) and stops early when it asks to cancel.
 /// Throws SingularMatrix (column −1) when GᵀG is singular: the constraints do not hold some rigid mode.
 ProjectedCGResult projected_cg(const InterfaceProblem& problem, const ProjectedCGOptions& options,
                                AnalysisObserver* observer = nullptr);

@@ -22,6 +22,7 @@ struct SolverOptions {
 struct SolveStats {
   std::map<std::string, long> factorizations;  // per group name
   long cg_iterations = 0;
+  int solves = 0;      // linear solves so far (the number the observer's calls carry)
   FactorStats factor;  // of the global factor (direct strategies)
   double analyze_s = 0, factorize_s = 0, solve_s = 0;
 };
@@ -29,8 +30,9 @@ struct SolveStats {
 class SolverStrategy {
  public:
   virtual ~SolverStrategy() = default;
-  /// Solves the constrained block system (paper eq. (1)); iterative strategies report each
-  /// iteration to `observer` (may be null).
+  /// Solves the constrained block system (paper eq. (1)) as linear solve number stats().solves + 1, reporting to
+  /// `observer` (may be null) its factorizations, CG iterations and end; iterative strategies stop at the observer's
+  /// cancel request and return their last iterate (BlockSolution::cancelled).
   virtual BlockSolution solve(const BlockSystem& system, AnalysisObserver* observer = nullptr) = 0;
   virtual const SolveStats& stats() const = 0;
   /// True when the strategy wants partitioned bodies torn into subdomain groups (feti).

@@ -1,17 +1,31 @@
-// Runs in the worker thread: stage, progress and residual signals arrive queued on the GUI thread, the run finishes
-// converged, and a cancel mid-run ends it "cancelled" with the worker ready for the next run.
+// Runs in the worker thread: stage, increment, progress, CG residual, solve and factorization signals arrive queued
+// on the GUI thread and reach the live plots, the run finishes converged, and a cancel mid-run (before the analysis,
+// between CG iterations) ends it "cancelled" with valid partial results and the worker ready for the next run.
 #include <QSignalSpy>
 #include <QThread>
 #include <QtTest>
+#include <cmath>
 
 #include "AnalysisWorker.h"
+#include "FactorizationPlot.h"
 #include "ProjectDocument.h"
+#include "ResidualPlot.h"
+#include "RunPanel.h"
+#include "RunPlots.h"
+#include "SolvePlot.h"
 
 using namespace rollsim;
 using namespace rollsim::ui;
 
 namespace {
 Project sample(const char* name) { return load_project(std::string(ROLLSIM_SOURCE_DIR "/samples/") + name); }
+
+/// The CG iterations carried by every batch the spy saw, in order.
+QVector<CgIteration> iterations(const QSignalSpy& spy) {
+  QVector<CgIteration> all;
+  for (const auto& args : spy) all += args.at(0).value<QVector<CgIteration>>();
+  return all;
+}
 
 QStringList strings(const QSignalSpy& spy) {
   QStringList out;
@@ -57,18 +71,87 @@ class TestAnalysisWorker : public QObject {
     }
   }
 
-  void iterative_solver_reports_residuals() {
+  void iterative_solver_reports_residuals_and_the_plots_receive_them() {
     AnalysisWorker worker;
-    QSignalSpy iterations(&worker, &AnalysisWorker::iteration);
+    RunPlots plots;
+    plots.watch(&worker);
+    QSignalSpy cg(&worker, &AnalysisWorker::cgIterations);
+    QSignalSpy solves(&worker, &AnalysisWorker::solveFinished);
+    QSignalSpy factorized(&worker, &AnalysisWorker::factorized);
+    QSignalSpy increments(&worker, &AnalysisWorker::incrementStarted);
+    QSignalSpy increments_done(&worker, &AnalysisWorker::incrementFinished);
     QSignalSpy finished(&worker, &AnalysisWorker::finished);
+    ProjectDocument doc;
+    RunPanel panel(&doc);
+    connect(&worker, &AnalysisWorker::incrementStarted, &panel, &RunPanel::set_increment);
+    QVERIFY(panel.progress_text().isEmpty());
     Project p = sample("block-push-2d-50x30.json");  // floating block: projected CG in `mixed`
     p.data["solver"]["mode"] = "mixed";
     QVERIFY(worker.start(p));
     QVERIFY(finished.wait(60000));
-    QCOMPARE(finished.at(0).at(0).value<RunOutcome>().status, QStringLiteral("converged"));
-    QVERIFY(iterations.count() > 0);
-    QCOMPARE(iterations.at(0).at(0).toString(), QStringLiteral("cg"));
-    QVERIFY(finished.at(0).at(0).value<RunOutcome>().cg_iterations > 0);
+    const auto outcome = finished.at(0).at(0).value<RunOutcome>();
+    QCOMPARE(outcome.status, QStringLiteral("converged"));
+    const QVector<CgIteration> its = iterations(cg);
+    QVERIFY(!its.isEmpty());
+    QCOMPARE(cg.at(0).at(0).value<QVector<CgIteration>>().size(), 1);  // the first iteration comes at once
+    for (int i = 0; i < its.size(); ++i) {                             // then every iteration, in order, in batches
+      QCOMPARE(its[i].solve, 1);
+      QCOMPARE(its[i].iteration, i + 1);
+    }
+    QVERIFY(cg.count() < its.size() || its.size() == 1);  // fewer signals than iterations
+    QCOMPARE(static_cast<long>(its.size()), outcome.cg_iterations);
+    QCOMPARE(solves.count(), outcome.solves);
+    QCOMPARE(solves.last().at(1).toInt(), its.size());  // one solve: all its iterations
+    QCOMPARE(factorized.count(), 2);                    // base and block, once each
+    QCOMPARE(increments.count(), 1);
+    QCOMPARE(increments.at(0).at(1).toInt(), 1);
+    QCOMPARE(increments_done.count(), 1);
+    QCOMPARE(panel.progress_text(), QStringLiteral("increment 1 of 1"));
+    // the plots got every point: after the throttle's last redraw they hold as many as the worker signalled
+    QTRY_COMPARE_WITH_TIMEOUT(plots.residual_plot()->points(QStringLiteral("cg")), its.size(),
+                              5 * RunPlots::kRefreshMs);
+    QTRY_COMPARE_WITH_TIMEOUT(plots.solve_plot()->solves(), solves.count(), 5 * RunPlots::kRefreshMs);
+    int bars = 0;
+    for (const GroupFactorizations& g : plots.factorization_plot()->bars()) bars += g.count;
+    QCOMPARE(bars, factorized.count());
+  }
+
+  void cancel_from_the_first_cg_residual_keeps_valid_partial_results() {
+    AnalysisWorker worker;
+    QSignalSpy cg(&worker, &AnalysisWorker::cgIterations);
+    QSignalSpy finished(&worker, &AnalysisWorker::finished);
+    // a direct connection runs on the worker thread: the core sees the flag at its next safe point, the next CG
+    // iteration
+    connect(
+        &worker, &AnalysisWorker::cgIterations, this, [&worker] { worker.cancel(); }, Qt::DirectConnection);
+    Project p = sample("block-indent-dd-2d-50x30.json");  // feti without preconditioner: hundreds of iterations
+    p.data["solver"]["preconditioner"] = "none";
+    p.data["solver"]["cg_tolerance"] = 1e-12;
+    QVERIFY(worker.start(p));
+    QVERIFY(finished.wait(60000));
+    disconnect(&worker, &AnalysisWorker::cgIterations, this, nullptr);
+    const auto outcome = finished.at(0).at(0).value<RunOutcome>();
+    QCOMPARE(outcome.status, QStringLiteral("cancelled"));
+    QCOMPARE(iterations(cg).size(), 1);  // stopped at the next iteration
+    QCOMPARE(outcome.cg_iterations, 1L);
+    // the fields of that iterate: every body, finite, contact resultants from the same multipliers
+    QVERIFY(outcome.results);
+    QCOMPARE(outcome.results->status, std::string("cancelled"));
+    QCOMPARE(outcome.results->bodies.size(), outcome.model->bodies.size());
+    for (const BodyResults& b : outcome.results->bodies) {
+      QVERIFY(b.displacement.allFinite());
+      QVERIFY(b.nodal_force.allFinite());
+      QVERIFY(b.contact_pressure.allFinite());
+      for (const auto& s : b.nodal_stress)
+        for (const double v : s) QVERIFY(std::isfinite(v));
+    }
+    QCOMPARE(outcome.results->contacts.size(), size_t{1});
+    QVERIFY(std::isfinite(outcome.results->contacts[0].normal_force));
+    // and the worker runs the same project to convergence afterwards
+    QVERIFY(worker.start(p));
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.at(1).at(0).value<RunOutcome>().status, QStringLiteral("converged"));
+    QVERIFY(iterations(cg).size() > 100);
   }
 
   void cancel_mid_run_leaves_a_consistent_state() {
