@@ -174,8 +174,29 @@ void MeshView::rebuild_grid() {
   }
 }
 
+namespace {
+/// The point array a result colouring shows ("" for the categorical ones).
+const char* result_array(ColorBy mode) {
+  switch (mode) {
+    case ColorBy::Displacement:
+      return "displacement";
+    case ColorBy::VonMises:
+      return "von_mises";
+    case ColorBy::ContactPressure:
+      return "contact_pressure";
+    default:
+      return "";
+  }
+}
+}  // namespace
+
+bool MeshView::can_color_by(ColorBy mode) const {
+  const char* array = result_array(mode);
+  return !*array || (results_ && grid_ && grid_->GetPointData()->GetArray(array));
+}
+
 void MeshView::set_color_by(ColorBy mode) {
-  if ((mode == ColorBy::Displacement || mode == ColorBy::VonMises) && !results_) mode = ColorBy::Body;
+  if (!can_color_by(mode)) mode = ColorBy::Body;
   const bool changed = mode != color_by_;
   color_by_ = mode;
   if (grid_) apply_coloring();
@@ -184,7 +205,7 @@ void MeshView::set_color_by(ColorBy mode) {
 
 void MeshView::apply_coloring() {
   if (!grid_) return;
-  if ((color_by_ == ColorBy::Displacement || color_by_ == ColorBy::VonMises) && !results_) color_by_ = ColorBy::Body;
+  if (!can_color_by(color_by_)) color_by_ = ColorBy::Body;
   legend_->VisibilityOn();
   if (color_by_ == ColorBy::Body || color_by_ == ColorBy::Subdomain) {
     const bool body = color_by_ == ColorBy::Body;
@@ -219,7 +240,8 @@ void MeshView::apply_coloring() {
     legend_->SetDrawAnnotations(1);
   } else {
     const bool disp = color_by_ == ColorBy::Displacement;
-    vtkDataArray* a = grid_->GetPointData()->GetArray(disp ? "displacement" : "von_mises");
+    const char* name = result_array(color_by_);
+    vtkDataArray* a = grid_->GetPointData()->GetArray(name);
     double range[2] = {0, 1};
     if (a) a->GetRange(range, disp ? -1 : 0);  // component -1: the magnitude of the vectors
     if (!(range[1] > range[0])) range[1] = range[0] + 1e-30;
@@ -227,11 +249,11 @@ void MeshView::apply_coloring() {
     continuous_->SetRange(range[0], range[1]);
     mapper_->SetLookupTable(continuous_);
     mapper_->SetScalarModeToUsePointFieldData();
-    mapper_->SelectColorArray(disp ? "displacement" : "von_mises");
+    mapper_->SelectColorArray(name);
     mapper_->SetScalarRange(range[0], range[1]);
     mapper_->ScalarVisibilityOn();
     legend_->SetLookupTable(continuous_);
-    legend_->SetTitle(disp ? "|u|" : "von Mises");
+    legend_->SetTitle(disp ? "|u|" : color_by_ == ColorBy::VonMises ? "von Mises" : "contact p");
     legend_->SetDrawAnnotations(0);
   }
   render();

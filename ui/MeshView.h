@@ -30,7 +30,7 @@ class QRubberBand;
 
 namespace rollsim::ui {
 
-enum class ColorBy { Body, Subdomain, Displacement, VonMises };
+enum class ColorBy { Body, Subdomain, Displacement, VonMises, ContactPressure };
 
 /// The categorical colour of body / subdomain `i` in the view (Tableau 10, repeating).
 QColor category_color(int i);
@@ -54,8 +54,10 @@ class MeshView : public QVTKOpenGLNativeWidget {
   std::shared_ptr<const Model> model() const { return model_; }
   std::shared_ptr<const Results> results() const { return results_; }
 
-  /// Displacement and von Mises need results; without them the view falls back to bodies.
+  /// Displacement, von Mises and contact pressure need results (contact pressure a model with contacts);
+  /// without them the view falls back to bodies.
   void set_color_by(ColorBy mode);
+  bool can_color_by(ColorBy mode) const;
   ColorBy color_by() const { return color_by_; }
   /// Displacement magnification of the deformed shape (0: undeformed).
   void set_deformation_scale(double scale);

@@ -17,6 +17,7 @@ ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"),
   color_->addItem(tr("subdomain"), QVariant::fromValue(ColorBy::Subdomain));
   color_->addItem(tr("displacement |u|"), QVariant::fromValue(ColorBy::Displacement));
   color_->addItem(tr("von Mises stress"), QVariant::fromValue(ColorBy::VonMises));
+  color_->addItem(tr("contact pressure"), QVariant::fromValue(ColorBy::ContactPressure));
   addWidget(color_);
   addSeparator();
   deformed_ = new QCheckBox(tr("deformed ×"));
@@ -43,7 +44,8 @@ ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"),
 void ViewToolBar::refresh() {
   const bool results = view_->has_results();
   auto* items = qobject_cast<QStandardItemModel*>(color_->model());
-  for (int i = 2; i < 4 && items; ++i) items->item(i)->setEnabled(results);
+  for (int i = 0; i < color_->count() && items; ++i)
+    items->item(i)->setEnabled(view_->can_color_by(color_->itemData(i).value<ColorBy>()));
   for (int i = 0; i < color_->count(); ++i)
     if (color_->itemData(i).value<ColorBy>() == view_->color_by()) color_->setCurrentIndex(i);
   deformed_->setEnabled(results);

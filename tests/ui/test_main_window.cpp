@@ -105,6 +105,27 @@ class TestMainWindow : public QObject {
     QVERIFY2(grey_spread(shot) > 10, "the window screenshot is blank");
   }
 
+  void contact_pressure_colouring_needs_contact_results() {
+    MainWindow w;
+    QVERIFY(w.open_file(QStringLiteral(ROLLSIM_SOURCE_DIR "/samples/cylinder-indent-2d.json")));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(!w.view()->can_color_by(ColorBy::ContactPressure));  // no results yet
+    QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
+    QVERIFY(w.start_run());
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(w.run_status(), QStringLiteral("converged"));
+    w.view()->set_color_by(ColorBy::ContactPressure);
+    QCOMPARE(w.view()->color_by(), ColorBy::ContactPressure);
+    // a model without contacts has no pressure to show: the view keeps a colouring it can draw
+    QVERIFY(w.open_file(kSample));
+    QVERIFY(w.start_run());
+    QVERIFY(finished.wait(60000));
+    QVERIFY(!w.view()->can_color_by(ColorBy::ContactPressure));
+    w.view()->set_color_by(ColorBy::ContactPressure);
+    QCOMPARE(w.view()->color_by(), ColorBy::Body);
+  }
+
   void cancel_ends_the_run_cancelled() {
     MainWindow w;
     QVERIFY(w.open_file(kSample));
