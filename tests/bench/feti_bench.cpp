@@ -1229,7 +1229,9 @@ void crossover_section(const Options& o) {
                "direct: CHOLMOD supernodal on the whole, 2 BLAS threads. Whole linear analysis in-process (assembly "
                "and tearing included), median of "
             << o.repeat
-            << " (1 run for the largest meshes). The breakdown is from the run's own timers; FETI's ordering and "
+            << " (1 run for the largest meshes). The breakdown is from the first repeat's own timers (the first run of "
+               "a size can be slower than the "
+               "median); FETI's ordering and "
                "factorization times are summed over the subdomains (CPU seconds of the two threads, not wall), its "
                "last part (preconditioner set-up, projected CG, recovery of u) is wall time.\n\n";
   const std::string c2 = crossover_dim(o, 2, o.crossover_2d);
