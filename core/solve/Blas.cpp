@@ -15,12 +15,23 @@ std::string blas_description() {
   return s;
 }
 
-bool set_blas_threads(int threads) {
+namespace {
+bool call_setter(const char* name, int threads) {
   using Set = void (*)(int);
-  auto set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  auto set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, name));
   if (!set) return false;
   set(threads);
   return true;
+}
+}  // namespace
+
+bool set_blas_threads(int threads) { return call_setter("openblas_set_num_threads", threads); }
+
+bool set_openmp_threads(int threads) { return call_setter("omp_set_num_threads", threads); }
+
+void set_library_threads(int threads) {
+  set_blas_threads(threads);
+  set_openmp_threads(threads);
 }
 
 }  // namespace rollsim

@@ -1,8 +1,10 @@
 #include "solve/CholmodFactorization.h"
 
 #include <mutex>
+#include <stdexcept>
 
 #include "solve/Stopwatch.h"
+#include "solve/SupernodalSolve.h"
 
 namespace rollsim {
 
@@ -29,6 +31,7 @@ CholmodFactorization::~CholmodFactorization() {
 }
 
 cholmod_sparse CholmodFactorization::view(const SparseMatrix& A) const {
+  if (!A.isCompressed()) throw std::invalid_argument("CHOLMOD needs a compressed sparse matrix");
   cholmod_sparse s{};
   s.nrow = static_cast<size_t>(A.rows());
   s.ncol = static_cast<size_t>(A.cols());
@@ -84,20 +87,11 @@ void CholmodFactorization::factorize(const SparseMatrix& A) {
 
 Eigen::VectorXd CholmodFactorization::solve(const Eigen::VectorXd& b) {
   Stopwatch t;
-  cholmod_dense rhs{};
-  rhs.nrow = static_cast<size_t>(b.size());
-  rhs.ncol = 1;
-  rhs.nzmax = rhs.nrow;
-  rhs.d = rhs.nrow;
-  rhs.x = const_cast<double*>(b.data());
-  rhs.xtype = CHOLMOD_REAL;
-  rhs.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* x = cholmod_solve(CHOLMOD_A, factor_, &rhs, &common_);
-  if (!x) throw std::runtime_error("CHOLMOD solve failed");
-  Eigen::VectorXd out = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(x->x), b.size());
-  cholmod_free_dense(&x, &common_);
+  if (!factor_ || !factor_->is_super || factor_->minor < factor_->n)
+    throw std::runtime_error("CHOLMOD solve before a successful supernodal factorization");
+  Eigen::VectorXd x = supernodal_solve(*factor_, b, work_);
   stats_.solve_s += t.seconds();
-  return out;
+  return x;
 }
 
 }  // namespace rollsim

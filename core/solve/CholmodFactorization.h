@@ -1,5 +1,6 @@
 #pragma once
-// CHOLMOD supernodal Cholesky with CHOLMOD's choice of AMD / METIS ordering (the modern baseline).
+// CHOLMOD supernodal Cholesky with CHOLMOD's choice of AMD / METIS ordering (the modern baseline). Solves go
+// through supernodal_solve (SupernodalSolve.h), not cholmod_solve. One object is used by one thread at a time.
 #include <cholmod.h>
 
 #include "solve/Factorization.h"
@@ -22,6 +23,7 @@ class CholmodFactorization final : public Factorization {
   cholmod_sparse view(const SparseMatrix& A) const;
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;
+  Eigen::VectorXd work_;  // supernodal_solve's scratch
   FactorStats stats_;
 };
 

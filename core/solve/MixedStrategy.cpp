@@ -79,9 +79,10 @@ InterfaceProblem MixedStrategy::interface_problem(const BlockSystem& sys, const 
 }
 
 BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
-  // Several groups: the threads go to the groups and BLAS stays on one, whatever --threads is, so that results
-  // are bit-identical for any thread count. One group: BLAS keeps the threads.
-  if (sys.groups.size() > 1) set_blas_threads(1);
+  // Several groups: the threads go to the groups and BLAS / CHOLMOD's OpenMP stay on one, whatever --threads is,
+  // so that results are bit-identical for any thread count and `--threads 1` uses one core. One group: the
+  // libraries keep the threads.
+  if (sys.groups.size() > 1) set_library_threads(1);
   const int solve = ++stats_.solves;
   const bool refactor = groups_.size() != sys.groups.size() || [&] {
     for (size_t g = 0; g < sys.groups.size(); ++g)

@@ -1,12 +1,15 @@
 #pragma once
 // Independent per-group work on a few threads (--threads): group i goes to thread i mod threads. Callers write
 // each group's result to its own slot and combine the slots in group order afterwards, so the arithmetic — and
-// the result — does not depend on the thread count.
+// the result — does not depend on the thread count. Inside a worker the libraries stay on one thread each
+// (CHOLMOD's OpenMP loops would otherwise start a team per worker: 4 threads on 2 cores, spinning).
 #include <algorithm>
 #include <cstddef>
 #include <exception>
 #include <thread>
 #include <vector>
+
+#include "solve/Blas.h"
 
 namespace rollsim {
 
@@ -21,6 +24,7 @@ void for_each_group(size_t n, int threads, Fn&& fn) {
   std::vector<std::thread> pool;
   for (size_t t = 0; t < t_count; ++t)
     pool.emplace_back([&, t] {
+      set_openmp_threads(1);
       try {
         for (size_t i = t; i < n; i += t_count) fn(i);
       } catch (...) {
