@@ -136,7 +136,7 @@ bool consistent(const std::vector<Row>& rows) {
 }  // namespace
 
 int bench_command(const BenchOptions& o) {
-  set_blas_threads(o.threads);
+  set_library_threads(o.threads);
   std::vector<Row> rows;
   for (const auto& file : o.samples) {
     Model model;

@@ -171,7 +171,7 @@ int run_command(const RunOptions& o) {
                "",
                options.preconditioner,
                options.multipliers};
-  set_blas_threads(info.threads);
+  set_library_threads(info.threads);
   const auto dir = output_dir(project, o);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

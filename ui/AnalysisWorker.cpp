@@ -145,7 +145,7 @@ void AnalysisWorker::run(const Project& project) {
     out.model = model;
     const json& s = project.data.at("solver");
     const SolverOptions options = solver_options(s);
-    set_blas_threads(options.threads);
+    set_library_threads(options.threads);
     auto solver = make_solver(s.at("mode").get<std::string>(), options);
     if (obs.cancel_requested()) {
       out.status = QStringLiteral("cancelled");
