@@ -1,7 +1,9 @@
 #include "mesh/StructuredBlock.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 namespace rollsim {
 
@@ -12,9 +14,23 @@ std::array<int, 3> numbering_order(const BlockSpec& s) {
   std::stable_sort(order.begin(), order.begin() + s.dim, [&](int a, int b) { return s.n[a] < s.n[b]; });
   return order;
 }
+// x of node i along the rolling (x) axis: today's uniform expression unchanged when there is no grading.
+double node_x(const BlockSpec& s, int i) {
+  if (s.x_grading == 1.0) return s.origin[0] + s.size[0] * i / s.n[0];
+  return s.origin[0] + s.size[0] * graded_fraction(i, s.n[0], s.x_grading);
+}
 }  // namespace
 
+double graded_fraction(int i, int n, double grading) {
+  if (i >= n) return 1.0;
+  if (grading == 1.0) return static_cast<double>(i) / n;
+  const double q = 1.0 / grading;
+  return (1.0 - std::pow(q, i)) / (1.0 - std::pow(q, n));
+}
+
 Mesh make_block(const BlockSpec& s) {
+  if (!(std::isfinite(s.x_grading) && s.x_grading > 0.0))
+    throw std::invalid_argument("BlockSpec.x_grading must be a positive number");
   Mesh m;
   m.dim = s.dim;
   m.type = s.dim == 2 ? ElementType::Quad4 : ElementType::Hex8;
@@ -34,7 +50,7 @@ Mesh make_block(const BlockSpec& s) {
     for (int j = 0; j < np[1]; ++j)
       for (int i = 0; i < np[0]; ++i) {
         const double z = s.dim == 3 ? s.origin[2] + s.size[2] * k / s.n[2] : 0.0;
-        m.nodes[node_id(i, j, k)] = {s.origin[0] + s.size[0] * i / s.n[0], s.origin[1] + s.size[1] * j / s.n[1], z};
+        m.nodes[node_id(i, j, k)] = {node_x(s, i), s.origin[1] + s.size[1] * j / s.n[1], z};
       }
 
   // elements, numbered with the same axis order as the nodes

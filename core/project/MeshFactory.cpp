@@ -1,6 +1,8 @@
 #include "project/MeshFactory.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "mesh/Annulus.h"
 #include "mesh/Cylinder.h"
@@ -14,6 +16,17 @@ double num(const json& j, const char* k) { return j.at(k).get<double>(); }
 bool full_ring(const json& m) { return std::fabs(num(m, "end_angle") - num(m, "start_angle") - 360.0) < 1e-9; }
 }  // namespace
 
+std::string grading_problem(double grading, int n) {
+  const double spread = std::pow(std::max(grading, 1.0 / grading), n - 1);
+  if (spread <= kMaxGradingSpread) return "";
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "%g over %d elements makes the largest element %.3g times the smallest (at most %g): lower the "
+                "grading or the element count",
+                grading, n, spread, kMaxGradingSpread);
+  return text;
+}
+
 void check_mesh_spec(const json& m, const std::string& path, int dim, std::vector<Issue>& issues) {
   const auto type = m.at("type").get<std::string>();
   auto need_dim = [&](int d) {
@@ -24,6 +37,9 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
       if (dim == 3 && !m.contains(k)) issues.push_back({path + "." + k, "is required in a 3D model"});
       if (dim == 2 && m.contains(k)) issues.push_back({path + "." + k, "not allowed in a 2D model"});
     }
+    if (m.contains("x_grading"))
+      if (auto why = grading_problem(num(m, "x_grading"), m.at("nx").get<int>()); !why.empty())
+        issues.push_back({path + ".x_grading", why});
   } else if (type == "plate_with_hole") {
     need_dim(2);
     if (num(m, "radius") >= std::min(num(m, "width"), num(m, "height")))
@@ -72,6 +88,7 @@ Mesh make_mesh(const json& m, int dim) {
     s.size = {num(m, "lx"), num(m, "ly"), dim == 3 ? num(m, "lz") : 1.0};
     if (m.contains("origin"))
       for (int k = 0; k < dim; ++k) s.origin[k] = m["origin"][static_cast<size_t>(k)].get<double>();
+    if (m.contains("x_grading")) s.x_grading = num(m, "x_grading");
     return make_block(s);
   }
   auto count = [&](const char* k) { return m.at(k).get<int>(); };

@@ -173,6 +173,8 @@ void check_supports(const json& project, std::vector<Issue>& issues) {
 }  // namespace
 
 void check_references(const Project& project, std::vector<Issue>& issues) {
+  check_process(project.data, issues);
+  if (!issues.empty()) return;  // the generated bodies would repeat the process's problem under their own paths
   const json d = expand_process(project.data);
   const int dim = project.dimension();
   if (d.at("bodies").empty()) issues.push_back({"bodies", "no body: give `bodies` or a `process`"});

@@ -89,7 +89,16 @@ const ObjectSchema kBlock{
      count("nz", "elements along z (3D only, required there)", 1e5), req(positive("lx", "length", "extent along x")),
      req(positive("ly", "length", "extent along y")),
      positive("lz", "length", "extent along z (3D only, required there)"),
-     vec("origin", "length", "corner with the smallest coordinates (default: the origin)")},
+     vec("origin", "length", "corner with the smallest coordinates (default: the origin)"),
+     [] {
+       Field f = def(num("x_grading", "-",
+                         "size ratio of each element along x to its neighbour on the +x side (1: uniform; > 1: "
+                         "elements shrink geometrically toward x max, < 1: toward x min)"),
+                     1.0);
+       f.min = 0.5;
+       f.max = 2.0;
+       return f;
+     }()},
     "",
     {}};
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "project/MeshFactory.h"
+
 namespace rollsim {
 
 namespace {
@@ -52,6 +54,16 @@ const ObjectSchema& rolling_process_schema() {
        number("barrel_width", "length", 400, 0, 1e6, "roll barrel width (3D; half is modelled)"),
        number("reduction", "-", 0.132, 0, 0.9, "thickness reduction (h0 − h1) / h0"),
        count("slab_nx", 48, "slab elements along the length"),
+       [] {
+         Field f = number("grading", "-", 1, 1, 2,
+                          "size ratio of each slab element along the length to its neighbour nearer the roll gap "
+                          "(the slab's front end, where the roll touches it): the elements shrink geometrically "
+                          "toward the gap, same count and length (1: uniform). The roll's circumferential spacing "
+                          "stays uniform: its closed ring, graded from both sides toward the contact angle, would "
+                          "span r^(n/2 − 1) between element sizes");
+         f.min_exclusive = false;
+         return f;
+       }(),
        count("slab_nt", 8, "slab elements across the half thickness"),
        count("slab_nw", 8, "slab elements across the half width (3D)"),
        count("roll_n_around", 120, "roll elements around the circumference"),
@@ -81,6 +93,13 @@ const ObjectSchema& rolling_process_schema() {
   return s;
 }
 
+void check_process(const json& project, std::vector<Issue>& issues) {
+  if (!project.contains("process")) return;
+  const json& p = project.at("process");
+  if (auto why = grading_problem(p.at("grading").get<double>(), p.at("slab_nx").get<int>()); !why.empty())
+    issues.push_back({"process.grading", why});
+}
+
 json expand_process(const json& project) {
   if (!project.contains("process")) return project;
   const json& p = project.at("process");
@@ -96,7 +115,7 @@ json expand_process(const json& project) {
       {{"name", "slab"}, {"model", "linear_elastic"}, {"E", p.at("slab_E")}, {"nu", p.at("slab_nu")}});
   out["materials"].push_back(
       {{"name", "roll"}, {"model", "linear_elastic"}, {"E", p.at("roll_E")}, {"nu", p.at("roll_nu")}});
-  json slab_mesh = {{"type", "block"}, {"nx", p.at("slab_nx")}, {"lx", L}};
+  json slab_mesh = {{"type", "block"}, {"nx", p.at("slab_nx")}, {"lx", L}, {"x_grading", p.at("grading")}};
   json roll_mesh = {{"inner_radius", p.at("roll_hub_radius")},
                     {"outer_radius", R},
                     {"n_radial", p.at("roll_n_radial")},

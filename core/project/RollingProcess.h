@@ -12,6 +12,9 @@ namespace rollsim {
 /// 300 mm, 13.2 % reduction).
 const ObjectSchema& rolling_process_schema();
 
+/// Checks of the section that need more than one field (the grading against slab_nx), as `process.<field>`.
+void check_process(const json& project, std::vector<Issue>& issues);
+
 /// `project` with the bodies, materials, contacts and conditions of its process appended (unchanged without a
 /// process). The section must already be validated (defaults filled).
 json expand_process(const json& project);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -193,6 +194,30 @@ TEST(StructuredBlock, NumbersAlongTheShortestDirectionFirst) {
   EXPECT_NEAR(m3.nodes[1][2] - m3.nodes[0][2], 1.3 / 2, 1e-12);
   EXPECT_NEAR(m3.nodes[3][1] - m3.nodes[0][1], 0.7 / 3, 1e-12);
   EXPECT_EQ(bandwidth(m3), 1 + 3 + 3 * 4);
+}
+
+TEST(StructuredBlock, GradingAlongXMovesNodesOnlyAndKeepsTheLength) {
+  BlockSpec s = block2(6, 2);
+  const Mesh uniform = make_block(s);
+  for (const double g : {1.3, 1.0 / 1.3}) {
+    SCOPED_TRACE(g);
+    s.x_grading = g;
+    const Mesh m = make_block(s);
+    EXPECT_EQ(m.connectivity, uniform.connectivity);
+    EXPECT_NEAR(mesh_measure(m), mesh_measure(uniform), 1e-12);
+    // the bottom row of nodes, left to right: element sizes fall by g from each element to the next
+    std::vector<double> x;
+    for (const Vec& p : m.nodes)
+      if (p[1] == s.origin[1]) x.push_back(p[0]);
+    std::sort(x.begin(), x.end());
+    ASSERT_EQ(x.size(), 7u);
+    EXPECT_EQ(x.front(), s.origin[0]);
+    EXPECT_EQ(x.back(), s.origin[0] + s.size[0]);
+    for (size_t i = 0; i + 2 < x.size(); ++i) EXPECT_NEAR((x[i + 1] - x[i]) / (x[i + 2] - x[i + 1]), g, 1e-12);
+  }
+  EXPECT_EQ(graded_fraction(3, 6, 1.0), 3.0 / 6);
+  s.x_grading = 0.0;
+  EXPECT_THROW(make_block(s), std::invalid_argument);
 }
 
 }  // namespace

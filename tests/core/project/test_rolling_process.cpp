@@ -1,20 +1,42 @@
 // The rolling process section: the paper's pass generates a slab and a roll whose surfaces meet at the entry of
 // the bite (gap within the roll polygon's chord sagitta), half thickness (and half width in 3D) by symmetry;
-// bad process values are refused with their JSON path.
+// bad process values are refused with their JSON path; grading toward the roll gap moves the slab's nodes only.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "contact/ContactConstraints.h"
+#include "mesh/Mesh.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
 using namespace rollsim;
 
 namespace {
-Model rolling(int dim) {
-  json j = {{"dimension", dim}, {"process", {{"type", "rolling"}}}};
+Model rolling(int dim, json process = json::object()) {
+  process["type"] = "rolling";
+  json j = {{"dimension", dim}, {"process", process}};
   return build_model(parse_project(j.dump(), "rolling"));
+}
+
+// Distinct x of the slab's nodes, ascending: the node planes along the rolling direction.
+std::vector<double> x_planes(const Mesh& m) {
+  std::vector<double> x;
+  for (const auto& p : m.nodes) x.push_back(p[0]);
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end()), x.end());
+  return x;
+}
+
+std::string refusal(const json& process) {
+  json j = {{"dimension", 2}, {"process", process}};
+  try {
+    parse_project(j.dump(), "bad");
+  } catch (const ProjectError& e) {
+    return e.what();
+  }
+  return "accepted";
 }
 }  // namespace
 
@@ -70,4 +92,70 @@ TEST(RollingProcess, SlabPartitionBySpecOrPaintedMap) {
   const Model painted = build_model(parse_project(j.dump(), "rolling"));
   EXPECT_EQ(painted.bodies[0].partition.element_subdomain, sliced.bodies[0].partition.element_subdomain);
   EXPECT_EQ(painted.bodies[1].partition.num_subdomains, 1);  // the roll stays one domain
+}
+
+TEST(RollingProcess, GradingOneKeepsTodaysUniformNodesBitForBit) {
+  for (const int dim : {2, 3}) {
+    SCOPED_TRACE(dim);
+    const Model plain = rolling(dim), graded_one = rolling(dim, {{"grading", 1.0}});
+    const Mesh &a = plain.bodies[0].mesh, &b = graded_one.bodies[0].mesh;
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    EXPECT_EQ(a.connectivity, b.connectivity);
+    const double L = 300, x0 = x_planes(a).front();
+    const auto planes = x_planes(a);
+    ASSERT_EQ(planes.size(), 49u);
+    for (size_t n = 0; n < a.nodes.size(); ++n) {
+      EXPECT_EQ(a.nodes[n], b.nodes[n]) << n;  // exact equality, not a tolerance
+    }
+    for (int i = 0; i <= 48; ++i) EXPECT_EQ(planes[i], x0 + L * i / 48) << i;  // the uniform generator's expression
+  }
+}
+
+TEST(RollingProcess, GradingShrinksSlabElementsGeometricallyTowardTheGap) {
+  const double r = 1.05;
+  for (const int dim : {2, 3}) {
+    SCOPED_TRACE(dim);
+    const Model uniform = rolling(dim), graded = rolling(dim, {{"grading", r}});
+    const Mesh &u = uniform.bodies[0].mesh, &g = graded.bodies[0].mesh;
+    // same elements, same node numbering and connectivity; only x moves
+    EXPECT_EQ(g.num_elements(), u.num_elements());
+    EXPECT_EQ(g.connectivity, u.connectivity);
+    ASSERT_EQ(g.nodes.size(), u.nodes.size());
+    for (size_t n = 0; n < g.nodes.size(); ++n)
+      for (int c = 1; c < 3; ++c) EXPECT_EQ(g.nodes[n][c], u.nodes[n][c]);
+    const auto xu = x_planes(u), x = x_planes(g);
+    ASSERT_EQ(x.size(), xu.size());
+    EXPECT_EQ(x.front(), xu.front());  // rear end and front end (the gap) where they were: the length is unchanged
+    EXPECT_EQ(x.back(), xu.back());
+    // the gap: where the roll touches the slab's front top edge, x = −sqrt(R² − (R − Δh/2)²)
+    const double dh = 100 * 0.132 / 2;
+    EXPECT_NEAR(x.back(), -std::sqrt(300.0 * 300.0 - (300 - dh) * (300 - dh)), 1e-9);
+    const size_t n = x.size() - 1;
+    for (size_t i = 0; i + 1 < n; ++i) {
+      const double h = x[i + 1] - x[i], next = x[i + 2] - x[i + 1];
+      EXPECT_NEAR(h / next, r, 1e-9) << i;  // each element r times its neighbour nearer the gap
+    }
+    const double smallest = x[n] - x[n - 1], largest = x[1] - x[0];
+    // h_min = L (r − 1) / (r^n − 1): the geometric series of n sizes sums to the slab length
+    EXPECT_NEAR(smallest, 300 * (r - 1) / (std::pow(r, n) - 1), 1e-9);
+    EXPECT_NEAR(largest / smallest, std::pow(r, n - 1), 1e-6);
+    check_element_orientation(g);  // every corner Jacobian positive (throws otherwise)
+    // the contact search still finds the front edge on the roll
+    const auto pairs = search_contacts(graded);
+    double gap = 1e300;
+    for (const ContactPoint& c : pairs[0].points) gap = std::min(gap, c.gap);
+    EXPECT_GE(gap, -1e-9);
+  }
+}
+
+TEST(RollingProcess, BadGradingIsRefusedNamingTheField) {
+  for (const json& bad : {json(0.5), json(3.0), json("x"), json(0.0)}) {
+    const std::string why = refusal({{"type", "rolling"}, {"grading", bad}});
+    EXPECT_NE(why.find("process.grading"), std::string::npos) << why;
+  }
+  EXPECT_NE(refusal({{"type", "rolling"}, {"grading", 0.5}}).find("in [1, 2]"), std::string::npos);
+  // 2^47: the smallest element would be round-off next to the largest
+  const std::string spread = refusal({{"type", "rolling"}, {"grading", 2.0}, {"slab_nx", 48}});
+  EXPECT_NE(spread.find("process.grading: 2 over 48 elements"), std::string::npos) << spread;
+  EXPECT_EQ(spread.find("bodies["), std::string::npos) << spread;  // not repeated under the generated body
 }
