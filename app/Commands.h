@@ -14,6 +14,7 @@ struct RunOptions {
   std::optional<int> threads;
   std::optional<std::string> partition;       // [BODY=]SPEC: overrides that body's (default: the first) partition
   std::optional<std::string> preconditioner;  // none, lumped, dirichlet
+  std::optional<std::string> projector;       // identity, preconditioner
   std::optional<double> cg_tolerance;
   bool quiet = false;
 };

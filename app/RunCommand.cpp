@@ -52,6 +52,11 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
       return "--preconditioner: must be none, lumped or dirichlet, got '" + *o.preconditioner + "'";
     solver["preconditioner"] = *o.preconditioner;
   }
+  if (o.projector) {
+    if (*o.projector != "preconditioner" && *o.projector != "identity")
+      return "--projector: must be identity or preconditioner, got '" + *o.projector + "'";
+    solver["projector"] = *o.projector;
+  }
   if (o.cg_tolerance) {
     if (!(*o.cg_tolerance > 0 && *o.cg_tolerance < 1))
       return "--cg-tolerance: must be a number in (0, 1), got " + std::to_string(*o.cg_tolerance);
@@ -170,7 +175,8 @@ int run_command(const RunOptions& o) {
                options.threads,
                "",
                options.preconditioner,
-               options.multipliers};
+               options.multipliers,
+               options.projector};
   set_library_threads(info.threads);
   const auto dir = output_dir(project, o);
   std::error_code ec;

@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
   cmd_run->add_option("--partition", run.partition,
                       "[BODY=]SPEC: subdomains for feti, e.g. 4x4, 2x2x1, metis:16 (default body: the first)");
   cmd_run->add_option("--preconditioner", run.preconditioner, "feti interface preconditioner: none, lumped, dirichlet");
+  cmd_run->add_option("--projector", run.projector,
+                      "feti rigid-mode projector with a preconditioner: identity (Q = I, the paper's), preconditioner "
+                      "(Q = M^-1: fewer iterations, costlier set-up)");
   cmd_run->add_option("--cg-tolerance", run.cg_tolerance, "relative tolerance of the interface CG (mixed, feti)");
   cmd_run->add_flag("--quiet", run.quiet, "no progress on stderr");
 

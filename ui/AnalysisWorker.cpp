@@ -92,16 +92,6 @@ class ForwardingObserver final : public AnalysisObserver {
   double done_ = 0;
 };
 
-/// The solver section's options (fields the schema does not have yet keep SolverOptions' defaults).
-SolverOptions solver_options(const json& s) {
-  SolverOptions o;
-  o.cg_tolerance = s.value("cg_tolerance", o.cg_tolerance);
-  o.threads = s.value("threads", o.threads);
-  o.preconditioner = s.value("preconditioner", o.preconditioner);
-  o.multipliers = s.value("multipliers", o.multipliers);
-  return o;
-}
-
 }  // namespace
 
 AnalysisWorker::AnalysisWorker(QObject* parent) : QObject(parent) {
@@ -143,10 +133,9 @@ void AnalysisWorker::run(const Project& project) {
     obs.on_stage("build model");
     auto model = std::make_shared<const Model>(build_model(project));
     out.model = model;
-    const json& s = project.data.at("solver");
-    const SolverOptions options = solver_options(s);
+    const SolverOptions options = solver_options(project);
     set_library_threads(options.threads);
-    auto solver = make_solver(s.at("mode").get<std::string>(), options);
+    auto solver = make_solver(project.data.at("solver").at("mode").get<std::string>(), options);
     if (obs.cancel_requested()) {
       out.status = QStringLiteral("cancelled");
     } else {

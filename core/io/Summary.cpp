@@ -74,10 +74,14 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
                  {"threads", run.threads},
                  {"preconditioner", run.preconditioner},
                  {"multipliers", run.multipliers},
+                 {"projector", run.projector},
                  {"blas", blas_description()},
                  {"ordering", st.factor.ordering},
                  {"factor_nnz", st.factor.nnz_factor},
                  {"factor_flops", st.factor.flops}};
+  if (st.cg_lambda_max > 0)
+    s["solver"]["cg_eigenvalue_estimates"] = {
+        {"min", st.cg_lambda_min}, {"max", st.cg_lambda_max}, {"condition", st.cg_lambda_max / st.cg_lambda_min}};
   s["timing"] = {{"total_s", r.timing.total_s},     {"stiffness_s", r.timing.stiffness_s},
                  {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
                  {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};

@@ -17,6 +17,7 @@ struct RunInfo {
   std::string error;                    // message when status is "error"
   std::string preconditioner = "none";  // feti
   std::string multipliers = "nonredundant";
+  std::string projector = "identity";
 };
 
 nlohmann::json make_summary(const Model& model, const Results& results, const SolveStats& stats, const RunInfo& run);

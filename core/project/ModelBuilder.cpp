@@ -356,6 +356,7 @@ SolverOptions solver_options(const Project& project) {
   o.threads = s.at("threads").get<int>();
   o.preconditioner = s.at("preconditioner").get<std::string>();
   o.multipliers = s.at("multipliers").get<std::string>();
+  o.projector = s.at("projector").get<std::string>();
   return o;
 }
 

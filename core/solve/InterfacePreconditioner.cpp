@@ -33,7 +33,8 @@ SparseMatrix select(const SparseMatrix& A, const std::vector<int>& rows, const s
 /// Per group: boundary dofs, C_g on them (scaled by W), K_bb, and for dirichlet K_ib and the factor of K_ii.
 struct GroupBlocks {
   std::vector<int> boundary;
-  SparseMatrix WCb;  // W C_g restricted to the boundary columns
+  SparseMatrix WCb;   // W C_g restricted to the boundary columns
+  SparseMatrix WCbT;  // its transpose, stored: the sparse products of apply_columns need its rows
   SparseMatrix Kbb, Kib;
   std::unique_ptr<Factorization> Kii;
 };
@@ -61,10 +62,33 @@ class BlockPreconditioner final : public InterfacePreconditioner {
         std::vector<int> all(static_cast<size_t>(g.C.rows()));
         for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
         b.WCb = w.asDiagonal() * select(g.C, all, b.boundary);
+        b.WCbT = b.WCb.transpose();
         b.Kbb = select(g.K, b.boundary, b.boundary);
         if (dirichlet_) factor_interior(g, b);
       }
     });
+  }
+
+  SparseMatrix apply_columns(const BlockSystem&, const SparseMatrix& X) const override {
+    const SparseMatrix Xs = scale_columns(X);
+    std::vector<std::vector<Eigen::Triplet<double, int>>> parts(blocks_.size());
+    for_each_group(blocks_.size(), threads_, [&](size_t i) {
+      const GroupBlocks& b = blocks_[i];
+      if (b.boundary.empty()) return;
+      const SparseMatrix V = b.WCbT * Xs;  // boundary dofs × columns, most columns empty
+      for (int j = 0; j < V.outerSize(); ++j) {
+        if (V.outerIndexPtr()[j + 1] == V.outerIndexPtr()[j]) continue;
+        const Eigen::VectorXd sv = schur(b, Eigen::VectorXd(V.col(j)));
+        for (int k = 0; k < b.WCb.outerSize(); ++k)  // W C_b (S v), entry by entry (summed by setFromTriplets)
+          for (SparseMatrix::InnerIterator it(b.WCb, k); it; ++it)
+            parts[i].emplace_back(it.row(), j, it.value() * sv[k]);
+      }
+    });
+    std::vector<Eigen::Triplet<double, int>> all;  // in group order: the sums do not depend on the threads
+    for (const auto& p : parts) all.insert(all.end(), p.begin(), p.end());
+    SparseMatrix Z(X.rows(), X.cols());
+    Z.setFromTriplets(all.begin(), all.end());
+    return scale_columns(Z);
   }
 
   Eigen::VectorXd apply(const BlockSystem&, const Eigen::VectorXd& r_in) const override {
@@ -74,9 +98,7 @@ class BlockPreconditioner final : public InterfacePreconditioner {
     for_each_group(blocks_.size(), threads_, [&](size_t i) {
       const GroupBlocks& b = blocks_[i];
       if (b.boundary.empty()) return;
-      const Eigen::VectorXd v = b.WCb.transpose() * r;
-      s[i] = b.Kbb * v;
-      if (b.Kii) s[i] -= b.Kib.transpose() * b.Kii->solve(b.Kib * v);  // S v = K_bb v − K_bi K_ii⁻¹ K_ib v
+      s[i] = schur(b, b.WCb.transpose() * r);
     });
     Eigen::VectorXd z = Eigen::VectorXd::Zero(r.size());
     for (size_t i = 0; i < blocks_.size(); ++i)
@@ -85,6 +107,13 @@ class BlockPreconditioner final : public InterfacePreconditioner {
   }
 
  private:
+  /// S v = K_bb v − K_bi K_ii⁻¹ K_ib v (dirichlet), K_bb v (lumped)
+  static Eigen::VectorXd schur(const GroupBlocks& b, const Eigen::VectorXd& v) {
+    Eigen::VectorXd s = b.Kbb * v;
+    if (b.Kii) s -= b.Kib.transpose() * b.Kii->solve(b.Kib * v);
+    return s;
+  }
+
   static void factor_interior(const Group& g, GroupBlocks& b) {
     std::vector<char> is_boundary(static_cast<size_t>(g.K.rows()), 0);
     for (int d : b.boundary) is_boundary[d] = 1;
@@ -117,6 +146,21 @@ class BlockPreconditioner final : public InterfacePreconditioner {
     Eigen::VectorXd out = v;
     out.segment(glue_.first, glue_.second) = BBt_->solve(v.segment(glue_.first, glue_.second));
     return out;
+  }
+  /// scale() column by column, kept sparse: B Bᵀ couples only the multipliers of one interface dof, so a
+  /// column's support does not grow (the solve leaves exact zeros outside it)
+  SparseMatrix scale_columns(const SparseMatrix& X) const {
+    if (!BBt_) return X;
+    std::vector<Eigen::Triplet<double, int>> t;
+    for (int j = 0; j < X.outerSize(); ++j) {
+      if (X.outerIndexPtr()[j + 1] == X.outerIndexPtr()[j]) continue;
+      const Eigen::VectorXd c = scale(Eigen::VectorXd(X.col(j)));
+      for (int r = 0; r < c.size(); ++r)
+        if (c[r] != 0.0) t.emplace_back(r, j, c[r]);
+    }
+    SparseMatrix Y(X.rows(), X.cols());
+    Y.setFromTriplets(t.begin(), t.end());
+    return Y;
   }
 
   bool dirichlet_;

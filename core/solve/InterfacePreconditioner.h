@@ -19,6 +19,10 @@ class InterfacePreconditioner {
   virtual void setup(const BlockSystem& sys) = 0;
   /// z = M⁻¹ w
   virtual Eigen::VectorXd apply(const BlockSystem& sys, const Eigen::VectorXd& w) const = 0;
+  /// M⁻¹ X for a sparse block of columns (the rigid modes' G for the Q = M⁻¹ projector of ProjectedCG). Each group
+  /// works only on the columns that touch its interface, so the cost follows the neighbours of each floating
+  /// group, not (columns × groups); the result is as sparse as M⁻¹'s coupling allows.
+  virtual SparseMatrix apply_columns(const BlockSystem& sys, const SparseMatrix& X) const = 0;
 };
 
 /// "none" gives nullptr; "lumped", "dirichlet"; anything else throws std::invalid_argument. `threads`: the groups'

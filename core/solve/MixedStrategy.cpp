@@ -1,5 +1,7 @@
 #include "solve/MixedStrategy.h"
 
+#include <algorithm>
+
 #include "solve/Blas.h"
 #include "solve/Parallel.h"
 #include "solve/Stopwatch.h"
@@ -78,6 +80,25 @@ InterfaceProblem MixedStrategy::interface_problem(const BlockSystem& sys, const 
   return p;
 }
 
+namespace {
+bool same(const SparseMatrix& a, const SparseMatrix& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;
+  const auto nnz = static_cast<size_t>(a.nonZeros());
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.cols() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + nnz, b.innerIndexPtr()) &&
+         std::equal(a.valuePtr(), a.valuePtr() + nnz, b.valuePtr());
+}
+}  // namespace
+
+const SparseMatrix& MixedStrategy::weighted_modes(const BlockSystem& sys, const SparseMatrix& G,
+                                                  bool preconditioner_changed) {
+  if (preconditioner_changed || !same(G, QG_of_)) {
+    QG_ = preconditioner_->apply_columns(sys, G);
+    QG_of_ = G;
+  }
+  return QG_;
+}
+
 BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
   // Several groups: the threads go to the groups and BLAS / CHOLMOD's OpenMP stay on one, whatever --threads is,
   // so that results are bit-identical for any thread count and `--threads 1` uses one core. One group: the
@@ -91,17 +112,22 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   }();
   factorize_changed(sys, observer);
   Stopwatch t;
-  if (preconditioner_ && (refactor || sys.num_multipliers() != preconditioned_rows_)) {
+  const bool new_preconditioner = preconditioner_ && (refactor || sys.num_multipliers() != preconditioned_rows_);
+  if (new_preconditioner) {
     preconditioner_->setup(sys);
     preconditioned_rows_ = sys.num_multipliers();
   }
   std::vector<Eigen::VectorXd> Kf(sys.groups.size());
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) { Kf[g] = groups_[g].apply(sys.groups[g].f); });
-  const InterfaceProblem problem = interface_problem(sys, Kf);
+  InterfaceProblem problem = interface_problem(sys, Kf);
+  if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols())
+    problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
   ProjectedCGOptions cg{options_.cg_tolerance, 10000, {}, solve};
   if (preconditioner_) cg.preconditioner = [&](const Eigen::VectorXd& w) { return preconditioner_->apply(sys, w); };
   last_ = projected_cg(problem, cg, observer);
   stats_.cg_iterations += last_.iterations;
+  stats_.cg_lambda_min = last_.lambda_min;
+  stats_.cg_lambda_max = last_.lambda_max;
   BlockSolution out;
   out.lambda = last_.lambda;
   out.cancelled = last_.cancelled;

@@ -31,11 +31,15 @@ class MixedStrategy final : public SolverStrategy {
   /// options_.threads threads, the products with the sparse C_g added in group order, so the result is
   /// bit-identical for any thread count (and no dense multiplier-length vector is made per group).
   Eigen::VectorXd sum_over_groups(const BlockSystem& sys, const std::function<Eigen::VectorXd(size_t)>& op) const;
+  /// Q G = M⁻¹ G for the weighted projector, kept while neither the preconditioner nor G changes (Newton
+  /// iterations and active-set passes that refactor nothing reuse it).
+  const SparseMatrix& weighted_modes(const BlockSystem& sys, const SparseMatrix& G, bool preconditioner_changed);
 
   SolverOptions options_;
   bool subdomains_;
   std::unique_ptr<InterfacePreconditioner> preconditioner_;
   long preconditioned_rows_ = -1;
+  SparseMatrix QG_, QG_of_;  // weighted_modes() and the G it was computed for
   std::string kind_;
   std::vector<GroupSolver> groups_;
   std::vector<long> factored_version_;

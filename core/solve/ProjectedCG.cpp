@@ -1,36 +1,66 @@
 #include "solve/ProjectedCG.h"
 
 #include <cmath>
+#include <tuple>
 
 #include "solve/Factorization.h"
 
 namespace rollsim {
 
 namespace {
-/// The projector P = I − G(GᵀG)⁻¹Gᵀ with GᵀG factored once. G is sparse: a floating group's modes touch only its
+/// The projectors P = I − QG(GᵀQG)⁻¹Gᵀ (search directions) and Pᵀ = I − G(GᵀQG)⁻¹(QG)ᵀ (residuals), with GᵀQG
+/// factored once; Q = I when no QG is given (then P = Pᵀ). G is sparse: a floating group's modes touch only its
 /// own constraint rows, so in FETI G has a few hundred nonzeros per column out of tens of thousands of rows (3D 40³
 /// in 5×5×5 subdomains: 60k multipliers × 750 modes, 360 MB dense); dense, the products with G and Gᵀ made the
 /// projection the most expensive part of every CG iteration and GᵀG a 30 GFlop product.
 class Projector {
  public:
-  explicit Projector(const SparseMatrix& G) : G_(G) {
+  Projector(const SparseMatrix& G, const SparseMatrix* QG) : G_(G), QG_(QG ? *QG : G) {
     if (G.cols() == 0) return;
-    const Eigen::MatrixXd GtG = Eigen::MatrixXd(SparseMatrix(G.transpose() * G));
-    qr_.compute(GtG);
+    const Eigen::MatrixXd GtQG = Eigen::MatrixXd(SparseMatrix(G.transpose() * QG_));
+    qr_.compute(GtQG);
     qr_.setThreshold(1e-10);
-    if (qr_.rank() < GtG.cols())
-      throw SingularMatrix("GᵀG is singular: the constraints do not hold every rigid mode", -1);
+    if (qr_.rank() < GtQG.cols())
+      throw SingularMatrix("GᵀQG is singular: the constraints do not hold every rigid mode", -1);
   }
-  Eigen::VectorXd apply(const Eigen::VectorXd& w) const {
-    return G_.cols() == 0 ? w : Eigen::VectorXd(w - G_ * coarse(G_.transpose() * w));
+  /// P y: a direction in ker Gᵀ
+  Eigen::VectorXd direction(const Eigen::VectorXd& y) const {
+    return G_.cols() == 0 ? y : Eigen::VectorXd(y - QG_ * coarse(G_.transpose() * y));
   }
-  /// (GᵀG)⁻¹ v
-  Eigen::VectorXd coarse(const Eigen::VectorXd& v) const { return qr_.solve(v); }
+  /// Pᵀ r: the residual seen from ker Gᵀ
+  Eigen::VectorXd residual(const Eigen::VectorXd& r) const {
+    return G_.cols() == 0 ? r : Eigen::VectorXd(r - G_ * coarse(QG_.transpose() * r));
+  }
+  /// λ0 = QG(GᵀQG)⁻¹e, which satisfies Gᵀλ0 = e
+  Eigen::VectorXd start(const Eigen::VectorXd& e, Eigen::Index rows) const {
+    return G_.cols() == 0 ? Eigen::VectorXd(Eigen::VectorXd::Zero(rows)) : Eigen::VectorXd(QG_ * coarse(e));
+  }
+  /// α = −(GᵀQG)⁻¹(QG)ᵀ r, so that r + Gα = b − Fλ + Gα is annihilated by (QG)ᵀ
+  Eigen::VectorXd amplitudes(const Eigen::VectorXd& r) const {
+    return G_.cols() == 0 ? Eigen::VectorXd() : Eigen::VectorXd(-coarse(QG_.transpose() * r));
+  }
 
  private:
+  Eigen::VectorXd coarse(const Eigen::VectorXd& v) const { return qr_.solve(v); }  // (GᵀQG)⁻¹ v
   const SparseMatrix& G_;
+  const SparseMatrix& QG_;
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
 };
+
+/// Extreme eigenvalues of the Lanczos tridiagonal matrix that CG builds implicitly from its step lengths a_k and
+/// direction updates b_k (Saad, Iterative Methods, §6.7.3): T_kk = 1/a_k + b_k/a_{k−1}, T_k,k+1 = √b_{k+1}/a_k.
+std::pair<double, double> lanczos_extremes(const std::vector<double>& a, const std::vector<double>& b) {
+  const auto k = static_cast<Eigen::Index>(a.size());
+  if (k < 2) return {0, 0};
+  Eigen::VectorXd diag(k), off(k - 1);
+  for (Eigen::Index i = 0; i < k; ++i) {
+    diag[i] = 1.0 / a[i] + (i > 0 ? b[i] / a[i - 1] : 0.0);
+    if (i + 1 < k) off[i] = std::sqrt(b[i + 1]) / a[i];
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es;
+  es.computeFromTridiagonal(diag, off, Eigen::EigenvaluesOnly);
+  return {es.eigenvalues()[0], es.eigenvalues()[k - 1]};
+}
 
 /// `g_max` = max |G_ij|, computed once per solve (G does not change during the iterations)
 double constraint_error(const SparseMatrix& G, const Eigen::VectorXd& e, const Eigen::VectorXd& lambda, double g_max) {
@@ -45,32 +75,35 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
   SparseMatrix converted;  // a problem that gives G dense
   if (p.Gs.cols() == 0 && p.G.cols() > 0) converted = p.G.sparseView();
   const SparseMatrix& G = p.Gs.cols() ? p.Gs : converted;
-  const Projector P(G);
+  const Projector P(G, p.QG);
   const double g_max =
       G.nonZeros() ? Eigen::Map<const Eigen::VectorXd>(G.valuePtr(), G.nonZeros()).cwiseAbs().maxCoeff() : 0.0;
   ProjectedCGResult res;
-  res.lambda = G.cols() ? Eigen::VectorXd(G * P.coarse(p.e)) : Eigen::VectorXd::Zero(p.b.size());
+  res.lambda = P.start(p.e, p.b.size());
   Eigen::VectorXd r = p.b - p.F(res.lambda);
-  Eigen::VectorXd w = P.apply(r);
+  Eigen::VectorXd w = P.residual(r);
   const double w0 = w.norm();
   // round-off floor: a projected residual this small relative to the data is zero (e.g. λ fully fixed by Gᵀλ = e)
   const double floor = 1e-14 * std::max(r.norm(), p.b.norm());
   res.residuals.push_back(w0 > floor ? 1.0 : 0.0);
   res.max_constraint_error = constraint_error(G, p.e, res.lambda, g_max);
-  Eigen::VectorXd dir, y_prev;
+  Eigen::VectorXd dir;
   double wy_prev = 0;
+  std::vector<double> steps, updates;  // CG's a_k, b_k for the eigenvalue estimate
   res.converged = w0 <= floor;
   while (!res.converged && res.iterations < o.max_iterations) {
-    const Eigen::VectorXd y = P.apply(o.preconditioner ? o.preconditioner(w) : w);
+    const Eigen::VectorXd y = P.direction(o.preconditioner ? o.preconditioner(w) : w);
     const double wy = w.dot(y);
-    dir = res.iterations == 0 ? y : Eigen::VectorXd(y + (wy / wy_prev) * dir);
+    const double update = res.iterations == 0 ? 0.0 : wy / wy_prev;
+    dir = res.iterations == 0 ? y : Eigen::VectorXd(y + update * dir);
     const Eigen::VectorXd q = p.F(dir);
     const double curvature = dir.dot(q);
     if (!(wy > 0 && curvature > 0)) break;  // breakdown: F not positive definite on ker Gᵀ (or NaN)
     const double step = wy / curvature;
+    steps.push_back(step), updates.push_back(update);
     res.lambda += step * dir;
     r -= step * q;
-    w = P.apply(r);
+    w = P.residual(r);
     wy_prev = wy;
     ++res.iterations;
     const double rel = w.norm() / w0;
@@ -83,8 +116,8 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
       break;
     }
   }
-  // α = (GᵀG)⁻¹Gᵀ(Fλ − b) = −(GᵀG)⁻¹Gᵀ r
-  if (G.cols()) res.alpha = -P.coarse(G.transpose() * r);
+  std::tie(res.lambda_min, res.lambda_max) = lanczos_extremes(steps, updates);
+  res.alpha = P.amplitudes(r);
   return res;
 }
 

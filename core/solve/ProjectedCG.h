@@ -1,9 +1,12 @@
 #pragma once
 // Projected conjugate gradients on the interface problem (paper eqs. (7)-(8)):
 //   F λ − G α = b,   Gᵀ λ = e,
-// minimising ½ λᵀFλ − λᵀb subject to Gᵀλ = e: start from λ0 = G(GᵀG)⁻¹e, project every residual with
-// P = I − G(GᵀG)⁻¹Gᵀ (GᵀG factored once), recover α = (GᵀG)⁻¹Gᵀ(Fλ − b). With no rigid modes (G empty)
-// it is plain CG on F λ = b (paper eq. (2)). Used by `mixed` (bodies) and `feti` (subdomains).
+// minimising ½ λᵀFλ − λᵀb subject to Gᵀλ = e: start from λ0 = QG(GᵀQG)⁻¹e, project every residual with
+// Pᵀ = I − G(GᵀQG)⁻¹(QG)ᵀ and every search direction with P = I − QG(GᵀQG)⁻¹Gᵀ (GᵀQG factored once), recover
+// α = (GᵀQG)⁻¹(QG)ᵀ(Fλ − b). Q = I is the paper's (Euclidean) projector; FETI with a preconditioner may pass
+// QG = M⁻¹G, the projector of Farhat–Roux / Klawonn–Widlund, which keeps the coarse correction in the
+// preconditioner's metric (measured: 3D 24³ Dirichlet 30 → 24 iterations at 4×4×4, docs/BENCHMARKS-FETI.md).
+// With no rigid modes (G empty) it is plain CG on F λ = b (paper eq. (2)). Used by `mixed` and `feti`.
 #include <Eigen/Dense>
 #include <functional>
 #include <vector>
@@ -21,10 +24,11 @@ struct InterfaceProblem {
   Eigen::MatrixXd G;  // multipliers × rigid modes (0 columns: no floating group) …
   SparseMatrix Gs;    // … or the same as a sparse matrix (used when it has columns; FETI: G is very sparse)
   Eigen::VectorXd e;  // one entry per rigid mode
+  const SparseMatrix* QG = nullptr;  // Q G for a weighted projector (same shape as G, kept by the caller); null: Q = I
 };
 
 struct ProjectedCGOptions {
-  double tolerance = 1e-4;  // on ‖P r_k‖ / ‖P r_0‖
+  double tolerance = 1e-4;  // on ‖Pᵀ r_k‖ / ‖Pᵀ r_0‖
   int max_iterations = 10000;
   LinearOperator preconditioner;  // z = M⁻¹ w (empty: identity)
   int solve = 1;                  // the linear solve's number, reported with every iteration
@@ -35,12 +39,15 @@ struct ProjectedCGResult {
   int iterations = 0;
   bool converged = false;
   bool cancelled = false;         // the observer asked to stop: λ, α are the last iterate (Gᵀλ = e holds)
-  std::vector<double> residuals;  // ‖P r_k‖ / ‖P r_0‖, k = 0..iterations
+  std::vector<double> residuals;  // ‖Pᵀ r_k‖ / ‖Pᵀ r_0‖, k = 0..iterations
+  /// Extreme eigenvalues of the (preconditioned, projected) operator estimated from the CG coefficients (the
+  /// Lanczos tridiagonal matrix); 0 when fewer than 2 iterations. Their ratio estimates the condition number.
+  double lambda_min = 0, lambda_max = 0;
   double max_constraint_error = 0;  // max over iterations of ‖Gᵀλ_k − e‖∞ / max(‖e‖∞, max|G| ‖λ_k‖∞)
 };
 
 /// Reports every iteration to `observer` (may be null) and stops early when it asks to cancel.
-/// Throws SingularMatrix (column −1) when GᵀG is singular: the constraints do not hold some rigid mode.
+/// Throws SingularMatrix (column −1) when GᵀQG is singular: the constraints do not hold some rigid mode.
 ProjectedCGResult projected_cg(const InterfaceProblem& problem, const ProjectedCGOptions& options,
                                AnalysisObserver* observer = nullptr);
 

@@ -17,6 +17,8 @@ struct SolverOptions {
   int threads = 1;                           // groups factored and solved concurrently (mixed / feti)
   std::string preconditioner = "none";       // interface preconditioner: none, lumped, dirichlet (feti)
   std::string multipliers = "nonredundant";  // subdomain glue: nonredundant, redundant (feti)
+  std::string projector = "identity";        // metric Q of the rigid-mode projector with a preconditioner:
+                                             // identity (Q = I, the paper's) or preconditioner (Q = M⁻¹)
 };
 
 struct SolveStats {
@@ -25,6 +27,9 @@ struct SolveStats {
   int solves = 0;      // linear solves so far (the number the observer's calls carry)
   FactorStats factor;  // of the global factor (direct strategies)
   double analyze_s = 0, factorize_s = 0, solve_s = 0;
+  /// Extreme eigenvalues of the last interface solve's (preconditioned, projected) operator, estimated from its
+  /// CG coefficients (mixed / feti; 0 when it took fewer than 2 iterations): λ_max / λ_min ≈ condition number.
+  double cg_lambda_min = 0, cg_lambda_max = 0;
 };
 
 class SolverStrategy {

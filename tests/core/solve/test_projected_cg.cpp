@@ -66,3 +66,57 @@ TEST(ProjectedCG, CancelStopsAtTheNextIterationWithAFeasibleIterate) {
     EXPECT_EQ(part.residuals[static_cast<size_t>(k)], full.residuals[static_cast<size_t>(k)]);
   EXPECT_FALSE(full.cancelled);
 }
+
+namespace {
+/// F = diag(1..n) (eigenvalues known), b random; `modes` constraint columns: sums of λ over interleaved blocks.
+InterfaceProblem diagonal(int n, int modes) {
+  InterfaceProblem p;
+  p.F = [](const Eigen::VectorXd& x) {
+    return Eigen::VectorXd(Eigen::VectorXd::LinSpaced(x.size(), 1, x.size()).cwiseProduct(x));
+  };
+  p.b = Eigen::VectorXd::LinSpaced(n, -1, 1).array().sin();
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < n; ++i) t.emplace_back(i, i % modes, 1.0 + 0.01 * i);
+  p.Gs.resize(n, modes);
+  p.Gs.setFromTriplets(t.begin(), t.end());
+  p.e = Eigen::VectorXd::LinSpaced(modes, 1, 2);
+  return p;
+}
+}  // namespace
+
+TEST(ProjectedCG, WeightedProjectorReachesTheSameSolution) {
+  // Q = diag(q) SPD: the constrained minimiser and its multipliers α do not depend on Q, only the path does
+  InterfaceProblem p = diagonal(60, 3);
+  ProjectedCGOptions o;
+  o.tolerance = 1e-12;
+  const ProjectedCGResult euclid = projected_cg(p, o);
+  const Eigen::VectorXd q = Eigen::VectorXd::LinSpaced(60, 0.5, 3.0);
+  const SparseMatrix QG = q.asDiagonal() * p.Gs;
+  p.QG = &QG;
+  o.preconditioner = [&](const Eigen::VectorXd& w) { return Eigen::VectorXd(q.cwiseProduct(w)); };
+  const ProjectedCGResult weighted = projected_cg(p, o);
+  ASSERT_TRUE(euclid.converged && weighted.converged);
+  EXPECT_LT((weighted.lambda - euclid.lambda).norm() / euclid.lambda.norm(), 1e-9);
+  EXPECT_LT((weighted.alpha - euclid.alpha).norm() / euclid.alpha.norm(), 1e-9);
+  EXPECT_LT((p.Gs.transpose() * weighted.lambda - p.e).norm(), 1e-12) << "Gᵀλ = e with the weighted projector";
+  EXPECT_NE(weighted.iterations, 0);
+}
+
+TEST(ProjectedCG, EigenvalueEstimatesBracketTheOperatorsSpectrum) {
+  // unconstrained F = diag(1..40): a full Krylov space gives the extreme eigenvalues 1 and 40
+  InterfaceProblem p = diagonal(40, 1);
+  p.Gs.resize(40, 0);
+  p.e.resize(0);
+  ProjectedCGOptions o;
+  o.tolerance = 1e-14;
+  const ProjectedCGResult r = projected_cg(p, o);
+  ASSERT_GE(r.iterations, 20);
+  EXPECT_NEAR(r.lambda_max, 40.0, 1e-3 * 40);
+  EXPECT_GT(r.lambda_min, 1.0 - 1e-6);
+  EXPECT_LT(r.lambda_min, 1.5);
+  // the Ritz values lie inside the spectrum after any number of iterations
+  o.tolerance = 1e-2;
+  const ProjectedCGResult early = projected_cg(p, o);
+  EXPECT_GE(early.lambda_min, 1.0 - 1e-9);
+  EXPECT_LE(early.lambda_max, 40.0 + 1e-9);
+}
