@@ -1,8 +1,8 @@
 #include "solve/CholmodFactorization.h"
 
 #include <mutex>
-#include <stdexcept>
 
+#include "solve/CholmodView.h"
 #include "solve/Stopwatch.h"
 #include "solve/SupernodalSolve.h"
 
@@ -30,28 +30,10 @@ CholmodFactorization::~CholmodFactorization() {
   cholmod_finish(&common_);
 }
 
-cholmod_sparse CholmodFactorization::view(const SparseMatrix& A) const {
-  if (!A.isCompressed()) throw std::invalid_argument("CHOLMOD needs a compressed sparse matrix");
-  cholmod_sparse s{};
-  s.nrow = static_cast<size_t>(A.rows());
-  s.ncol = static_cast<size_t>(A.cols());
-  s.nzmax = static_cast<size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = -1;  // use the lower triangle; the upper one is ignored
-  s.itype = CHOLMOD_INT;
-  s.xtype = CHOLMOD_REAL;
-  s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 1;
-  s.packed = 1;
-  return s;
-}
-
 void CholmodFactorization::analyze(const SparseMatrix& A) {
   Stopwatch t;
   if (factor_) cholmod_free_factor(&factor_, &common_);
-  cholmod_sparse s = view(A);
+  cholmod_sparse s = cholmod_view(A);
   {
     const std::lock_guard<std::mutex> lock(analyze_mutex);
     factor_ = cholmod_analyze(&s, &common_);
@@ -72,7 +54,7 @@ void CholmodFactorization::analyze(const SparseMatrix& A) {
 void CholmodFactorization::factorize(const SparseMatrix& A) {
   if (!factor_) analyze(A);
   Stopwatch t;
-  cholmod_sparse s = view(A);
+  cholmod_sparse s = cholmod_view(A);
   cholmod_factorize(&s, factor_, &common_);
   stats_.factorize_s += t.seconds();
   ++stats_.factorizations;

@@ -20,7 +20,6 @@ class CholmodFactorization final : public Factorization {
   const FactorStats& stats() const override { return stats_; }
 
  private:
-  cholmod_sparse view(const SparseMatrix& A) const;
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;
   Eigen::VectorXd work_;  // supernodal_solve's scratch

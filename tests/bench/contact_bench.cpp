@@ -28,10 +28,13 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "analysis/LinearStatic.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 #include "solve/Blas.h"
+#include "solve/CholmodView.h"
 #include "solve/Factorization.h"
 #include "solve/GlobalDirect.h"
 #include "solve/SolverStrategy.h"
@@ -320,23 +323,6 @@ std::vector<std::string> rotated(const std::vector<std::string>& v, int r) {
 
 // ============================================================================ factorizations of (1)
 
-cholmod_sparse cholmod_view(const SparseMatrix& A) {
-  cholmod_sparse s{};
-  s.nrow = static_cast<size_t>(A.rows());
-  s.ncol = static_cast<size_t>(A.cols());
-  s.nzmax = static_cast<size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = -1;  // the lower triangle
-  s.itype = CHOLMOD_INT;
-  s.xtype = CHOLMOD_REAL;
-  s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 1;
-  s.packed = 1;
-  return s;
-}
-
 /// CAMD fill-reducing ordering of the symmetric A with its last `trailing` rows (the multipliers) constrained last:
 /// perm[k] = the row eliminated k-th.
 std::vector<int> camd_multipliers_last(const SparseMatrix& A, int trailing, cholmod_common* c) {
@@ -451,21 +437,7 @@ class CholmodLdlt final : public Factorization {
                            static_cast<int>(L_->minor));
     if (c_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorization failed");
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) override {
-    cholmod_dense rhs{};
-    rhs.nrow = static_cast<size_t>(b.size());
-    rhs.ncol = 1;
-    rhs.nzmax = rhs.nrow;
-    rhs.d = rhs.nrow;
-    rhs.x = const_cast<double*>(b.data());
-    rhs.xtype = CHOLMOD_REAL;
-    rhs.dtype = CHOLMOD_DOUBLE;
-    cholmod_dense* x = cholmod_solve(CHOLMOD_A, L_, &rhs, &c_);
-    if (!x) throw std::runtime_error("CHOLMOD solve failed");
-    Eigen::VectorXd out = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(x->x), b.size());
-    cholmod_free_dense(&x, &c_);
-    return out;
-  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) override { return cholmod_solve_vector(*L_, b, c_); }
   const FactorStats& stats() const override { return stats_; }
 
  private:
@@ -1083,26 +1055,15 @@ void Bench::print(std::ostream& os) const {
 
 int main_impl(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--repeat")
-      o.repeat = std::max(1, std::stoi(value()));
-    else if (a == "--samples")
-      o.samples = value();
-    else if (a == "--paper")
-      o.paper = value();
-    else if (a == "--csv")
-      o.csv = value();
-    else if (a == "-h" || a == "--help") {
-      std::cout << "usage: rollsim_contact_bench [--repeat N (5)] [--samples DIR] [--paper DIR] [--csv FILE]\n";
-      return 0;
-    } else
-      throw std::invalid_argument("unknown argument " + a);
-  }
+  CLI::App app{"contact benchmarks: paper Tables I-III, floating bodies, Hertz, factorizations (docs/BENCHMARKS.md)"};
+  std::string samples, paper;
+  app.add_option("--repeat", o.repeat, "timed repeats per measurement (median)")->check(CLI::PositiveNumber);
+  app.add_option("--samples", samples, "directory of the sample projects")->check(CLI::ExistingDirectory);
+  app.add_option("--paper", paper, "directory of the paper's tables as CSV")->check(CLI::ExistingDirectory);
+  app.add_option("--csv", o.csv, "also write the timings as CSV to this file");
+  CLI11_PARSE(app, argc, argv);
+  if (!samples.empty()) o.samples = samples;
+  if (!paper.empty()) o.paper = paper;
   set_blas_threads(1);
   Bench bench(o);
   bench.table1();

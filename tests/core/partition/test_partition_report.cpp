@@ -19,6 +19,7 @@
 #include "partition/PartitionReport.h"
 #include "partition/StructuredPartition.h"
 #include "solve/CholmodFactorization.h"
+#include "solve/CholmodView.h"
 
 using namespace rollsim;
 
@@ -147,18 +148,7 @@ FactorEstimate cholmod_count(const SparseMatrix& K, const std::vector<int>& perm
   c.nmethods = 1;
   c.method[0].ordering = CHOLMOD_GIVEN;
   c.supernodal = CHOLMOD_SIMPLICIAL;
-  cholmod_sparse a{};
-  a.nrow = a.ncol = static_cast<size_t>(K.rows());
-  a.nzmax = static_cast<size_t>(K.nonZeros());
-  a.p = const_cast<int*>(K.outerIndexPtr());
-  a.i = const_cast<int*>(K.innerIndexPtr());
-  a.x = const_cast<double*>(K.valuePtr());
-  a.stype = -1;
-  a.itype = CHOLMOD_INT;
-  a.xtype = CHOLMOD_REAL;
-  a.dtype = CHOLMOD_DOUBLE;
-  a.sorted = 1;
-  a.packed = 1;
+  cholmod_sparse a = cholmod_view(K);
   cholmod_factor* L = cholmod_analyze_p(&a, const_cast<int*>(perm.data()), nullptr, 0, &c);
   EXPECT_NE(L, nullptr);
   const FactorEstimate f{c.lnz, c.fl};

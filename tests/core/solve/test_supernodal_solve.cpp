@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "solve/CholmodFactorization.h"
+#include "solve/CholmodView.h"
 #include "solve/SupernodalSolve.h"
 
 namespace rollsim {
@@ -46,24 +47,10 @@ SparseMatrix grid_matrix(int n, int dim, int dofs, unsigned seed) {
 /// CHOLMOD's own analysis, factorization and solve, for reference.
 Eigen::VectorXd solve_with_cholmod(const SparseMatrix& A, const Eigen::VectorXd& b, cholmod_common& c,
                                    cholmod_factor*& L) {
-  cholmod_sparse s{};
-  s.nrow = s.ncol = static_cast<size_t>(A.rows());
-  s.nzmax = static_cast<size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = -1, s.itype = CHOLMOD_INT, s.xtype = CHOLMOD_REAL, s.dtype = CHOLMOD_DOUBLE, s.sorted = 1, s.packed = 1;
+  cholmod_sparse s = cholmod_view(A);
   L = cholmod_analyze(&s, &c);
   cholmod_factorize(&s, L, &c);
-  cholmod_dense rhs{};
-  rhs.nrow = rhs.nzmax = rhs.d = static_cast<size_t>(b.size());
-  rhs.ncol = 1;
-  rhs.x = const_cast<double*>(b.data());
-  rhs.xtype = CHOLMOD_REAL, rhs.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* x = cholmod_solve(CHOLMOD_A, L, &rhs, &c);
-  Eigen::VectorXd out = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(x->x), b.size());
-  cholmod_free_dense(&x, &c);
-  return out;
+  return cholmod_solve_vector(*L, b, c);
 }
 
 void expect_equal_to_cholmod_and_dense(const SparseMatrix& A, const char* what) {

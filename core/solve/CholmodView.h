@@ -1,0 +1,17 @@
+#pragma once
+// Eigen ↔ CHOLMOD without copies: a cholmod_sparse header over a compressed Eigen matrix, and a dense solve with
+// any CHOLMOD factor (the simplicial LDLᵀ of the benchmarks; CholmodFactorization solves through SupernodalSolve).
+#include <cholmod.h>
+
+#include "solve/Factorization.h"
+
+namespace rollsim {
+
+/// The header of A for CHOLMOD (A must be compressed: throws std::invalid_argument otherwise). `stype` as
+/// CHOLMOD's: −1 symmetric, lower triangle read; 1 symmetric, upper triangle read; 0 unsymmetric.
+cholmod_sparse cholmod_view(const SparseMatrix& A, int stype = -1);
+
+/// x = A⁻¹ b with cholmod_solve and the factor L of A.
+Eigen::VectorXd cholmod_solve_vector(cholmod_factor& L, const Eigen::VectorXd& b, cholmod_common& common);
+
+}  // namespace rollsim
