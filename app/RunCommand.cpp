@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "Commands.h"
+#include "PvdWriter.h"
 #include "VtuWriter.h"
 #include "analysis/LinearStatic.h"
 #include "io/AtomicFile.h"
@@ -24,6 +25,10 @@ class StderrProgress final : public AnalysisObserver {
   explicit StderrProgress(bool quiet) : quiet_(quiet) {}
   void on_stage(const std::string& stage) override {
     if (!quiet_) std::fprintf(stderr, "rollsim: [%7.3f s] %s\n", clock_.seconds(), stage.c_str());
+  }
+  void on_increment_begin(int increment, int count) override {
+    if (!quiet_ && count > 1)
+      std::fprintf(stderr, "rollsim: [%7.3f s] increment %d of %d\n", clock_.seconds(), increment, count);
   }
 
  private:
@@ -186,7 +191,7 @@ int run_command(const RunOptions& o) {
   Results results;
   int code = 0;
   try {
-    results = run_linear_static(model, *solver, &progress);
+    results = run_linear_static(model, *solver, &progress, load_increments(project));
     info.error = non_finite_results(model, results);
   } catch (const AnalysisError& e) {
     info.error = e.what();
@@ -197,8 +202,10 @@ int run_command(const RunOptions& o) {
   }
   progress.on_stage("write results");
   try {
-    if (results.status == "converged" && project.data.at("output").at("vtu").get<bool>())
+    if (results.status == "converged" && project.data.at("output").at("vtu").get<bool>()) {
       write_vtu(dir / "result.vtu", model, results);
+      if (results.load_increments > 1) write_increment_collection(dir / "results.pvd", model, results);
+    }
     results.timing.total_s = wall.seconds();
     write_file_atomically(dir / "summary.json", make_summary(model, results, solver->stats(), info).dump(2) + "\n");
   } catch (const std::exception& e) {

@@ -139,7 +139,7 @@ void AnalysisWorker::run(const Project& project) {
     if (obs.cancel_requested()) {
       out.status = QStringLiteral("cancelled");
     } else {
-      auto results = std::make_shared<Results>(run_linear_static(*model, *solver, &obs));
+      auto results = std::make_shared<Results>(run_linear_static(*model, *solver, &obs, load_increments(project)));
       out.status = QString::fromStdString(results->status);
       out.dofs = results->dofs;
       out.cg_iterations = solver->stats().cg_iterations;

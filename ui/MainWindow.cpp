@@ -132,6 +132,7 @@ void MainWindow::build_menus() {
   file->addAction(tr("Save &As..."), this, &MainWindow::save_as_dialog, QKeySequence::SaveAs);
   file->addSeparator();
   file->addAction(tr("Export &VTU..."), this, &MainWindow::export_vtu);
+  file->addAction(tr("Export run increments as PV&D..."), this, &MainWindow::export_pvd);
   file->addAction(tr("Export &PNG screenshot..."), this, &MainWindow::export_png);
   file->addAction(tr("Export plotted series as &CSV..."), this, &MainWindow::export_csv);
   file->addSeparator();
@@ -337,6 +338,18 @@ void MainWindow::export_vtu() {
   if (file.isEmpty()) return;
   try {
     view_->export_vtu(file.toStdString());
+    log_->info(tr("exported %1").arg(file));
+  } catch (const std::exception& e) {
+    log_->error(tr("cannot export %1: %2").arg(file, QString::fromUtf8(e.what())));
+  }
+}
+
+void MainWindow::export_pvd() {
+  const QString file = QFileDialog::getSaveFileName(this, tr("Export run increments"), QString(),
+                                                    tr("ParaView collection, one VTU per increment (*.pvd)"));
+  if (file.isEmpty()) return;
+  try {
+    view_->export_pvd(file.toStdString());
     log_->info(tr("exported %1").arg(file));
   } catch (const std::exception& e) {
     log_->error(tr("cannot export %1: %2").arg(file, QString::fromUtf8(e.what())));

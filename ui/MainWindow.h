@@ -72,6 +72,7 @@ class MainWindow : public QMainWindow {
   bool save_as_dialog();
   bool maybe_save();
   void export_vtu();
+  void export_pvd();
   void export_png();
   void export_csv();
   void add_recent(const QString& file);

@@ -37,6 +37,7 @@
 #include <cmath>
 
 #include "ModelGrid.h"
+#include "PvdWriter.h"
 #include "VtuWriter.h"
 
 namespace rollsim::ui {
@@ -113,13 +114,30 @@ MeshView::~MeshView() { marker_->SetEnabled(0); }
 void MeshView::set_model(std::shared_ptr<const Model> model) {
   model_ = std::move(model);
   results_.reset();
+  increment_ = -1;
   rebuild_grid();
+  emit incrementChanged(increment_);
 }
 
 void MeshView::set_results(std::shared_ptr<const Model> model, std::shared_ptr<const Results> results) {
   model_ = std::move(model);
   results_ = std::move(results);
+  increment_ = -1;
   rebuild_grid();
+  emit incrementChanged(increment_);
+}
+
+void MeshView::set_increment(int index) {
+  if (index < -1 || index >= increment_count()) index = -1;
+  if (index == increment_) return;
+  increment_ = index;
+  rebuild_grid();
+  emit incrementChanged(increment_);
+}
+
+std::array<double, 2> MeshView::color_range() const {
+  const double* r = mapper_->GetScalarRange();
+  return {r[0], r[1]};
 }
 
 std::array<double, 6> MeshView::bounds() const {
@@ -135,7 +153,10 @@ void MeshView::rebuild_grid() {
     render();
     return;
   }
-  grid_ = make_model_grid(*model_, results_.get());
+  if (results_ && increment_ >= 0)
+    grid_ = make_model_grid(*model_, results_->increments[static_cast<size_t>(increment_)].bodies);
+  else
+    grid_ = make_model_grid(*model_, results_.get());
   warp_->SetInputData(grid_);
   warp_->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "displacement");
   warp_->SetScaleFactor(results_ ? scale_ : 0.0);
@@ -477,6 +498,12 @@ void MeshView::export_vtu(const std::filesystem::path& file) const {
     write_vtu(file, *model_, *results_);
   else
     write_mesh_vtu(file, *model_);
+}
+
+void MeshView::export_pvd(const std::filesystem::path& file) const {
+  if (!model_ || !results_ || results_->increments.empty())
+    throw std::runtime_error("no run with increments to export");
+  write_increment_collection(file, *model_, *results_);
 }
 
 long MeshView::drawn_cells() const { return grid_ && actor_->GetVisibility() ? grid_->GetNumberOfCells() : 0; }

@@ -48,8 +48,16 @@ class MeshView : public QVTKOpenGLNativeWidget {
   /// Shows a model without results (after an edit regenerated the mesh). The camera is kept unless the model's
   /// extent changed.
   void set_model(std::shared_ptr<const Model> model);
-  /// Shows a model with its results (after a run).
+  /// Shows a model with its results (after a run): the final fields (Results::bodies).
   void set_results(std::shared_ptr<const Model> model, std::shared_ptr<const Results> results);
+  /// Shows the fields of load increment `index` (0-based in Results::increments; -1: the final fields); the
+  /// colouring's range and the deformed shape follow.
+  void set_increment(int index);
+  /// The increment shown (-1: the final fields) and how many the results hold.
+  int increment() const { return increment_; }
+  int increment_count() const { return results_ ? static_cast<int>(results_->increments.size()) : 0; }
+  /// The range the continuous colouring maps (the legend's), e.g. of |u| on the shown increment.
+  std::array<double, 2> color_range() const;
   bool has_results() const { return results_ != nullptr; }
   std::shared_ptr<const Model> model() const { return model_; }
   std::shared_ptr<const Results> results() const { return results_; }
@@ -67,6 +75,9 @@ class MeshView : public QVTKOpenGLNativeWidget {
   void reset_camera();
   /// Writes what is shown (model and, after a run, results) as .vtu through vtkio. Throws on failure.
   void export_vtu(const std::filesystem::path& file) const;
+  /// Writes the run's increments as a ParaView collection (`file`.pvd and one .vtu per increment beside it) through
+  /// vtkio. Throws without results or on failure.
+  void export_pvd(const std::filesystem::path& file) const;
   /// Renders the scene now (before a grab of the window).
   void render_now();
   /// Cells currently drawn (tests).
@@ -90,6 +101,8 @@ class MeshView : public QVTKOpenGLNativeWidget {
 
  signals:
   void colorByChanged(rollsim::ui::ColorBy mode);
+  /// Another increment is shown (set_increment, or new results).
+  void incrementChanged(int index);
   /// A paint step on the paint body: `elements` under the brush or in the box; `stroke` groups the steps of one
   /// drag (a new id per press).
   void painted(const std::vector<int>& elements, int stroke);
@@ -126,6 +139,7 @@ class MeshView : public QVTKOpenGLNativeWidget {
   std::shared_ptr<const Model> model_;
   std::shared_ptr<const Results> results_;
   ColorBy color_by_ = ColorBy::Body;
+  int increment_ = -1;
   double scale_ = 0;
   std::array<double, 6> shown_bounds_{0, 0, 0, 0, 0, 0};
   int shown_dim_ = 0;

@@ -4,7 +4,10 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QSignalBlocker>
+#include <QSpinBox>
 #include <QStandardItemModel>
+#include <algorithm>
 
 namespace rollsim::ui {
 
@@ -30,6 +33,14 @@ ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"),
   scale_->setValue(1);
   addWidget(scale_);
   addSeparator();
+  auto* increment_label = new QLabel(tr(" &increment "));
+  increment_ = new QSpinBox;
+  increment_->setObjectName(QStringLiteral("incrementSelector"));
+  increment_->setAccessibleName(tr("load increment shown"));
+  increment_->setToolTip(tr("load increment whose fields the view shows (Alt+I, then the arrow keys)"));
+  increment_label->setBuddy(increment_);  // Alt+I focuses it; Up/Down/PageUp/PageDown step through increments
+  increment_label_action_ = addWidget(increment_label);
+  increment_action_ = addWidget(increment_);
   addAction(tr("Reset camera"), view_, &MeshView::reset_camera);
 
   connect(color_, QOverload<int>::of(&QComboBox::activated), this,
@@ -38,6 +49,9 @@ ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"),
   auto apply = [this] { view_->set_deformation_scale(deformed_->isChecked() ? scale_->value() : 0.0); };
   connect(deformed_, &QCheckBox::toggled, this, apply);
   connect(scale_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, apply);
+  connect(increment_, QOverload<int>::of(&QSpinBox::valueChanged), this,
+          [this](int i) { view_->set_increment(i - 1); });
+  connect(view_, &MeshView::incrementChanged, this, &ViewToolBar::refresh);
   refresh();
 }
 
@@ -50,6 +64,13 @@ void ViewToolBar::refresh() {
     if (color_->itemData(i).value<ColorBy>() == view_->color_by()) color_->setCurrentIndex(i);
   deformed_->setEnabled(results);
   scale_->setEnabled(results);
+  const int count = view_->increment_count();
+  const QSignalBlocker quiet(increment_);  // showing the view's state is not a request to change it
+  increment_->setRange(1, std::max(count, 1));
+  increment_->setValue(view_->increment() < 0 ? count : view_->increment() + 1);
+  increment_->setSuffix(tr(" of %1").arg(count));
+  increment_label_action_->setVisible(count > 1);
+  increment_action_->setVisible(count > 1);
 }
 
 }  // namespace rollsim::ui

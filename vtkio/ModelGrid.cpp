@@ -30,7 +30,7 @@ vtkNew<vtkIntArray> int_array(const char* name, vtkIdType tuples) {
   return a;
 }
 
-void add_results(vtkUnstructuredGrid* grid, const Model& model, const Results& r) {
+void add_results(vtkUnstructuredGrid* grid, const Model& model, const std::vector<BodyResults>& fields) {
   const vtkIdType np = model.total_nodes(), nc = model.total_elements();
   auto u = array("displacement", 3, np), sp = array("stress", 6, np), vp = array("von_mises", 1, np);
   auto sc = array("stress", 6, nc), vc = array("von_mises", 1, nc);
@@ -41,7 +41,7 @@ void add_results(vtkUnstructuredGrid* grid, const Model& model, const Results& r
   vtkIdType pn = 0, cn = 0;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     const Mesh& m = model.bodies[b].mesh;
-    const BodyResults& br = r.bodies[b];
+    const BodyResults& br = fields[b];
     for (int n = 0; n < m.num_nodes(); ++n, ++pn) {
       double d[3] = {0, 0, 0};
       for (int c = 0; c < m.dim; ++c) d[c] = br.displacement[n * m.dim + c];
@@ -70,6 +70,11 @@ void add_results(vtkUnstructuredGrid* grid, const Model& model, const Results& r
 }  // namespace
 
 vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const Results* results) {
+  static const std::vector<BodyResults> none;
+  return make_model_grid(model, results ? results->bodies : none);
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const std::vector<BodyResults>& fields) {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -95,7 +100,7 @@ vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const R
   grid->SetPoints(points);
   grid->GetCellData()->AddArray(body_id);
   grid->GetCellData()->AddArray(subdomain_id);
-  if (results && results->bodies.size() == model.bodies.size()) add_results(grid, model, *results);
+  if (!fields.empty() && fields.size() == model.bodies.size()) add_results(grid, model, fields);
   return grid;
 }
 

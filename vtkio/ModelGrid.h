@@ -17,4 +17,8 @@ namespace rollsim {
 /// slave nodes, 0 elsewhere); cell data: stress (element mean), von_mises, and subdomain_id from the results.
 vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const Results* results = nullptr);
 
+/// The same grid with the fields of one state, e.g. a load increment's (Results::increments[i].bodies), one entry per
+/// body (none: the mesh alone).
+vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const std::vector<BodyResults>& fields);
+
 }  // namespace rollsim

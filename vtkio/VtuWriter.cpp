@@ -29,6 +29,10 @@ void write_vtu(const std::filesystem::path& file, const Model& model, const Resu
   write(file, make_model_grid(model, &results));
 }
 
+void write_vtu(const std::filesystem::path& file, const Model& model, const std::vector<BodyResults>& fields) {
+  write(file, make_model_grid(model, fields));
+}
+
 void write_mesh_vtu(const std::filesystem::path& file, const Model& model) { write(file, make_model_grid(model)); }
 
 }  // namespace rollsim

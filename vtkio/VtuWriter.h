@@ -12,6 +12,9 @@ namespace rollsim {
 /// cell data: stress (element mean), von_mises, body_id, subdomain_id. Written atomically.
 void write_vtu(const std::filesystem::path& file, const Model& model, const Results& results);
 
+/// The same arrays for one state's fields, e.g. a load increment's (Results::increments[i].bodies).
+void write_vtu(const std::filesystem::path& file, const Model& model, const std::vector<BodyResults>& fields);
+
 /// Mesh only (no results): body_id and subdomain_id per cell.
 void write_mesh_vtu(const std::filesystem::path& file, const Model& model);
 

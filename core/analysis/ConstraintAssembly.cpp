@@ -3,7 +3,7 @@
 namespace rollsim {
 
 BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
-                                 const std::vector<std::unique_ptr<DofMap>>& dofs) {
+                                 const std::vector<std::unique_ptr<DofMap>>& dofs, double load_factor) {
   std::vector<std::vector<Eigen::Triplet<double, int>>> t(dofs.size());
   std::vector<double> d;
   BodyConstraints out;
@@ -14,7 +14,7 @@ BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
       const DofMap& map = *dofs[term.body];
       const int eq = map.equation(term.node, term.comp);
       if (eq < 0) {
-        rhs -= term.coef * map.prescribed(term.node, term.comp);
+        rhs -= term.coef * (load_factor * map.prescribed(term.node, term.comp));
       } else {
         free = true;
         t[term.body].emplace_back(static_cast<int>(d.size()), eq, term.coef);

@@ -1,6 +1,7 @@
 #pragma once
 // Constraint rows written in body terms (body, node, component) become blocks on each body's free dofs:
-// free dofs get their coefficient, prescribed dofs move their known part to the right-hand side d.
+// free dofs get their coefficient, prescribed dofs move their known part (times the increment's load factor) to the
+// right-hand side d.
 #include <memory>
 #include <vector>
 
@@ -17,6 +18,6 @@ struct BodyConstraints {
 };
 
 BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
-                                 const std::vector<std::unique_ptr<DofMap>>& dofs);
+                                 const std::vector<std::unique_ptr<DofMap>>& dofs, double load_factor = 1.0);
 
 }  // namespace rollsim

@@ -38,7 +38,10 @@ std::string describe_singular(const Model& model, const std::vector<std::unique_
 }  // namespace
 
 namespace {
-constexpr int kMaxActiveSetIterations = 50;
+constexpr int kMaxActiveSetIterations = 50;  // per increment
+
+/// Load factor of increment i of n: i / n, exactly 1 for the last.
+double load_factor(int i, int n) { return i == n ? 1.0 : static_cast<double>(i) / n; }
 
 BlockSolution solve_checked(const Model& model, const std::vector<std::unique_ptr<DofMap>>& dofs,
                             SolverStrategy& solver, const BlockSystem& sys, AnalysisObserver& obs) {
@@ -56,9 +59,9 @@ BlockSolution solve_checked(const Model& model, const std::vector<std::unique_pt
 }
 
 std::vector<Eigen::VectorXd> full_displacements(const std::vector<std::unique_ptr<DofMap>>& dofs,
-                                                const std::vector<Eigen::VectorXd>& free) {
+                                                const std::vector<Eigen::VectorXd>& free, double load_factor) {
   std::vector<Eigen::VectorXd> u;
-  for (size_t b = 0; b < dofs.size(); ++b) u.push_back(dofs[b]->expand(free[b]));
+  for (size_t b = 0; b < dofs.size(); ++b) u.push_back(dofs[b]->expand(free[b], load_factor));
   return u;
 }
 
@@ -111,11 +114,15 @@ Multipliers multiplier_choice(const SolverOptions& o) {
 }
 }  // namespace
 
-Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer) {
+Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer, int increments) {
+  if (increments < 1 || increments > kMaxIncrements)
+    throw AnalysisError("increments must be an integer in [1, " + std::to_string(kMaxIncrements) + "], got " +
+                        std::to_string(increments));
   AnalysisObserver quiet;
   AnalysisObserver& obs = observer ? *observer : quiet;
   Stopwatch total;
   Results res;
+  res.load_increments = increments;
   obs.on_stage("assemble");
   Stopwatch t;
   GroupLayout layout(model, solver.uses_subdomains(), multiplier_choice(solver.options()));
@@ -133,43 +140,81 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   } catch (const std::runtime_error& e) {
     throw AnalysisError(e.what());
   }
+  std::vector<Eigen::VectorXd> full_load;  // every group's f at load factor 1 (only needed to scale it)
+  if (increments > 1)
+    for (const Group& g : sys.groups) full_load.push_back(g.f);
   std::vector<ConstraintRow> rows;
   BodyConstraints contact;
   BlockSolution sol;
   std::vector<Eigen::VectorXd> u;
-  obs.on_increment_begin(1, 1);  // a linear analysis is one increment
-  for (int it = 1;; ++it) {
-    if (obs.cancel_requested()) {  // before every solve: the last one's (u, λ, rows) stay the results
-      res.status = "cancelled";
-      if (it == 1) return res;  // nothing solved: no fields
-      break;
+  double factor = 1.0;  // load factor of (u, λ, rows)
+  // Fields and contact resultants of the current (u, λ, rows) at `factor`.
+  auto recover_state = [&](Results& into) {
+    into.bodies.clear();
+    for (size_t b = 0; b < model.bodies.size(); ++b) {
+      into.bodies.push_back(recover(model, static_cast<int>(b), u[b], factor));
+      if (!model.bodies[b].partition.element_subdomain.empty())
+        into.bodies.back().subdomain = model.bodies[b].partition.element_subdomain;
     }
-    rows = contact_rows(model, pairs);
-    contact = body_constraints(rows, dofs);
-    layout.set_contact(contact);
-    check_floating_groups_held(sys);
-    obs.on_stage("solve");
-    sol = solve_checked(model, dofs, solver, sys, obs);
-    u = full_displacements(dofs, layout.body_solution(sol));
-    res.active_set_iterations = it;
-    if (sol.cancelled) {  // stopped between CG iterations: the fields of that iterate
+    contact_results(model, pairs, rows, contact.kept, sol.lambda.head(contact.d.size()), into);
+  };
+  bool last_fields_pending = false;  // the last completed increment's fields are recovered after the loop
+  for (int inc = 1; inc <= increments; ++inc) {
+    if (inc > 1 && obs.cancel_requested()) {  // before every increment: the previous one stays the result
       res.status = "cancelled";
       break;
     }
-    if (!has_unilateral(model)) break;
-    std::vector<ConstraintRow> kept_rows;
-    for (int r : contact.kept) kept_rows.push_back(rows[r]);
-    const int changed = update_active_set(model, kept_rows, sol.lambda.head(contact.d.size()), u, pairs);
-    obs.on_active_set_iteration(it, changed);
-    if (changed == 0) break;
-    if (it == kMaxActiveSetIterations) {
-      res.status = "diverged";
-      break;
+    const double lf = load_factor(inc, increments);
+    if (increments > 1)
+      for (size_t g = 0; g < sys.groups.size(); ++g) sys.groups[g].f = lf * full_load[g];
+    obs.on_increment_begin(inc, increments);
+    IncrementResults step;
+    step.load_factor = lf;
+    const long cg_before = solver.stats().cg_iterations;
+    for (int it = 1;; ++it) {
+      if (obs.cancel_requested()) {  // before every solve: the last one's (u, λ, rows) stay the results
+        res.status = "cancelled";
+        if (it == 1 && inc == 1) return res;  // nothing solved: no fields
+        break;
+      }
+      rows = contact_rows(model, pairs);
+      contact = body_constraints(rows, dofs, lf);
+      layout.set_contact(contact);
+      check_floating_groups_held(sys);
+      obs.on_stage("solve");
+      sol = solve_checked(model, dofs, solver, sys, obs);
+      u = full_displacements(dofs, layout.body_solution(sol), lf);
+      factor = lf;
+      ++res.active_set_iterations;
+      step.active_set_iterations = it;
+      if (sol.cancelled) {  // stopped between CG iterations: the fields of that iterate
+        res.status = "cancelled";
+        break;
+      }
+      if (!has_unilateral(model)) break;
+      std::vector<ConstraintRow> kept_rows;
+      for (int r : contact.kept) kept_rows.push_back(rows[r]);
+      const int changed = update_active_set(model, kept_rows, sol.lambda.head(contact.d.size()), u, pairs);
+      obs.on_active_set_iteration(it, changed);
+      if (changed == 0) break;
+      if (it == kMaxActiveSetIterations) {
+        res.status = "diverged";
+        break;
+      }
     }
-  }
-  if (res.status != "cancelled") {
-    obs.on_increment_end(1, 1);
-    obs.on_progress(1.0);
+    if (res.status == "cancelled") break;  // an interrupted increment is not listed
+    obs.on_increment_end(inc, increments);
+    obs.on_progress(static_cast<double>(inc) / increments);
+    step.cg_iterations = solver.stats().cg_iterations - cg_before;
+    last_fields_pending = inc == increments || res.status != "converged";
+    if (!last_fields_pending) {
+      Results fields;
+      recover_state(fields);
+      step.bodies = std::move(fields.bodies);
+      step.contacts = std::move(fields.contacts);
+    }
+    res.increments.push_back(std::move(step));
+    if (res.status != "converged") break;  // diverged: later increments would start from an unsettled set
   }
   res.multipliers = contact.d.size();
   const SolveStats& st = solver.stats();
@@ -178,12 +223,11 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   res.timing.solve_s = st.solve_s;
   obs.on_stage("recover");
   Stopwatch tr;
-  for (size_t b = 0; b < model.bodies.size(); ++b) {
-    res.bodies.push_back(recover(model, static_cast<int>(b), u[b]));
-    if (!model.bodies[b].partition.element_subdomain.empty())
-      res.bodies.back().subdomain = model.bodies[b].partition.element_subdomain;
+  recover_state(res);
+  if (last_fields_pending) {
+    res.increments.back().bodies = res.bodies;
+    res.increments.back().contacts = res.contacts;
   }
-  contact_results(model, pairs, rows, contact.kept, sol.lambda.head(contact.d.size()), res);
   res.timing.recovery_s = tr.seconds();
   res.timing.total_s = total.seconds();
   return res;

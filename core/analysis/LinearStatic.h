@@ -1,7 +1,7 @@
 #pragma once
-// Linear static analysis: assemble each body's group, search contact, solve the block system with the chosen
-// strategy (repeated while the active set of frictionless contact changes), recover displacements, stresses,
-// reactions and contact forces.
+// Linear static analysis: assemble each body's group, search contact, then for each load increment solve the block
+// system with the chosen strategy (repeated while the active set of frictionless contact changes), recover
+// displacements, stresses, reactions and contact forces.
 #include <stdexcept>
 
 #include "analysis/Observer.h"
@@ -17,6 +17,13 @@ struct AnalysisError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer = nullptr);
+/// The most load increments an analysis takes (the schema's range of analysis.increments).
+constexpr int kMaxIncrements = 1000;
+
+/// `increments` (1…1000) equal proportional steps: increment i solves with every load and prescribed displacement
+/// times i / N, its active-set loop starting from increment i − 1's active set; the stiffness (and every factor) is
+/// the same for all. One increment is the plain linear solve. Results::increments keeps the fields of each.
+Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer = nullptr,
+                          int increments = 1);
 
 }  // namespace rollsim

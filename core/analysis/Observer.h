@@ -3,13 +3,13 @@
 // event, for today's linear analysis and for the incremental Newton driver to come. An analysis reports, in order:
 //
 //   on_stage("assemble")
-//   on_increment_begin(i, n)                 load increment i of n (the linear analysis: 1 of 1)
+//   on_increment_begin(i, n)                 load increment i of n (analysis.increments; 1 of 1 by default)
 //     on_newton_iteration(i, k, residual)    Newton driver only, after each iteration (none emits it yet)
 //     on_factorization(group)                each numeric factorization, named by group
 //     on_cg_iteration(solve, k, residual)    each (projected) CG iteration of linear solve `solve`
 //     on_solve_end(solve, cg_iterations)     a linear solve is complete (0 CG iterations for direct strategies)
-//     on_active_set_iteration(it, changed)   frictionless contact: statuses changed after solve `it`
-//   on_increment_end(i, n), on_progress(i / n)
+//     on_active_set_iteration(it, changed)   frictionless contact: statuses changed after the increment's solve `it`
+//   on_increment_end(i, n), on_progress(i / n)  … then increment i + 1 from on_increment_begin
 //   on_stage("recover")
 //
 // Linear solves are numbered 1, 2, ... over the whole run (active-set iterations, later Newton iterations of every
@@ -39,7 +39,8 @@ class AnalysisObserver {
   /// A numeric factorization of `group` (a body, or `body/<id>` subdomain; a global factorization reports every
   /// group it holds), as counted in summary.json's solver.factorizations.
   virtual void on_factorization(const std::string& /*group*/) {}
-  /// Active-set iteration `iteration` (= its linear solve) changed `changed` contact statuses (0: settled).
+  /// Active-set iteration `iteration` (1-based within the increment; with one increment, its linear solve) changed
+  /// `changed` contact statuses (0: settled).
   virtual void on_active_set_iteration(int /*iteration*/, int /*changed*/) {}
   /// Fraction of the increments done, in [0, 1].
   virtual void on_progress(double /*fraction*/) {}

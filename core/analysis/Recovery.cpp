@@ -39,11 +39,12 @@ void recover_elements(const Body& body, BodyResults& r) {
 }
 }  // namespace
 
-BodyResults recover(const Model& model, int b, Eigen::VectorXd displacement) {
+BodyResults recover(const Model& model, int b, Eigen::VectorXd displacement, double load_factor) {
   const Body& body = model.bodies[b];
   BodyResults r;
   r.displacement = std::move(displacement);
   r.nodal_force = -external_nodal_load(model, b);
+  if (load_factor != 1.0) r.nodal_force *= load_factor;
   if (body.mesh.dim == 2)
     recover_elements<2>(body, r);
   else

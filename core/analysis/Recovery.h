@@ -6,7 +6,8 @@
 
 namespace rollsim {
 
-BodyResults recover(const Model& model, int body_index, Eigen::VectorXd displacement);
+/// `load_factor` scales the external loads the nodal forces are taken against (a load increment's i / N).
+BodyResults recover(const Model& model, int body_index, Eigen::VectorXd displacement, double load_factor = 1.0);
 
 /// Sum of nodal forces over a node set, per component.
 std::array<double, 3> set_resultant(const BodyResults& r, int dim, const std::vector<int>& nodes);

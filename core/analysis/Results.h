@@ -29,6 +29,16 @@ struct ContactResult {
   int active_nodes = 0, candidate_nodes = 0;
 };
 
+/// One load increment: every load and prescribed displacement times `load_factor`, solved to equilibrium (its own
+/// active-set loop), with the fields and contact resultants of that state.
+struct IncrementResults {
+  double load_factor = 1;         // i / N
+  int active_set_iterations = 0;  // linear solves of this increment's active-set loop
+  long cg_iterations = 0;         // interface CG iterations of those solves (0 for direct strategies)
+  std::vector<BodyResults> bodies;
+  std::vector<ContactResult> contacts;
+};
+
 struct Timing {
   double total_s = 0, stiffness_s = 0, analyze_s = 0, factorize_s = 0, solve_s = 0, recovery_s = 0;
 };
@@ -45,8 +55,13 @@ struct Results {
   long rigid_modes = 0;  // floating-body and floating-subdomain modes handled by the solver
   long subdomains = 0;   // groups of the block system (bodies, or their subdomains under feti)
   long interface_multipliers = 0, paper_convention_multipliers = 0;
-  int active_set_iterations = 0;
+  int active_set_iterations = 0;  // linear solves of every increment's active-set loop together
   std::vector<ContactResult> contacts;
+  // Load increments requested (analysis.increments) and the ones completed, in order, each with its fields. After a
+  // converged (or diverged) run the last entry equals `bodies` / `contacts` — what the writers of a single state
+  // read; after a cancel `bodies` may hold an interrupted increment that `increments` does not list.
+  int load_increments = 1;
+  std::vector<IncrementResults> increments;
   Timing timing;
 };
 

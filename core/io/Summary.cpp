@@ -56,6 +56,23 @@ json results_section(const Model& m, const Results& r) {
                        {"active_nodes", c.active_nodes}, {"candidate_nodes", c.candidate_nodes}};
   return {{"probes", probes}, {"max_abs_displacement", umax}, {"reactions", reactions}, {"contact", contact}};
 }
+
+// One entry per completed load increment: its load factor, solves, CG iterations and contact resultants.
+json increments_section(const Results& r) {
+  json list = json::array();
+  for (size_t i = 0; i < r.increments.size(); ++i) {
+    const IncrementResults& inc = r.increments[i];
+    json contact = json::object();
+    for (const ContactResult& c : inc.contacts)
+      contact[c.name] = {{"normal_force", c.normal_force}, {"active_nodes", c.active_nodes}};
+    list.push_back({{"increment", i + 1},
+                    {"load_factor", inc.load_factor},
+                    {"active_set_iterations", inc.active_set_iterations},
+                    {"cg_iterations", inc.cg_iterations},
+                    {"contact", contact}});
+  }
+  return list;
+}
 }  // namespace
 
 json make_summary(const Model& model, const Results& r, const SolveStats& st, const RunInfo& run) {
@@ -68,7 +85,7 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
                  {"cg_tolerance", run.cg_tolerance},
                  {"cg_iterations_total", st.cg_iterations},
                  {"newton_iterations", r.status == "converged" ? 1 : 0},
-                 {"increments", 1},
+                 {"increments", r.load_increments},
                  {"active_set_iterations", r.active_set_iterations},
                  {"factorizations", factorizations},
                  {"threads", run.threads},
@@ -85,6 +102,7 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
   s["timing"] = {{"total_s", r.timing.total_s},     {"stiffness_s", r.timing.stiffness_s},
                  {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
                  {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};
+  s["increments"] = increments_section(r);
   if (r.status == "converged") s["results"] = results_section(model, r);
   return s;
 }

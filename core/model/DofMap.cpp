@@ -17,9 +17,10 @@ DofMap::DofMap(const Body& body, int body_index, const std::vector<DisplacementB
     if (e == 0) e = num_free_++;
 }
 
-Eigen::VectorXd DofMap::expand(const Eigen::VectorXd& free) const {
+Eigen::VectorXd DofMap::expand(const Eigen::VectorXd& free, double load_factor) const {
   Eigen::VectorXd u(static_cast<Eigen::Index>(eq_.size()));
-  for (size_t i = 0; i < eq_.size(); ++i) u[static_cast<Eigen::Index>(i)] = eq_[i] >= 0 ? free[eq_[i]] : up_[i];
+  for (size_t i = 0; i < eq_.size(); ++i)
+    u[static_cast<Eigen::Index>(i)] = eq_[i] >= 0 ? free[eq_[i]] : load_factor * up_[i];  // exact for 1
   return u;
 }
 

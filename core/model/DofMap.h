@@ -18,8 +18,8 @@ class DofMap {
   /// Equation number of dof (node, component), or -1 if prescribed.
   int equation(int node, int comp) const { return eq_[static_cast<size_t>(node) * dim_ + comp]; }
   double prescribed(int node, int comp) const { return up_[static_cast<size_t>(node) * dim_ + comp]; }
-  /// Full nodal displacement vector (node-major) from the free solution.
-  Eigen::VectorXd expand(const Eigen::VectorXd& free) const;
+  /// Full nodal displacement vector (node-major) from the free solution, prescribed values times `load_factor`.
+  Eigen::VectorXd expand(const Eigen::VectorXd& free, double load_factor = 1.0) const;
   /// Free-dof part of a full nodal vector.
   Eigen::VectorXd restrict_to_free(const Eigen::VectorXd& full) const;
 

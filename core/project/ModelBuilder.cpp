@@ -360,6 +360,11 @@ SolverOptions solver_options(const Project& project) {
   return o;
 }
 
+int load_increments(const Project& project) {
+  const auto a = project.data.find("analysis");
+  return a == project.data.end() ? 1 : a->value("increments", 1);
+}
+
 Model build_model(const Project& project) {
   const json d = expand_process(project.data);
   Model model;

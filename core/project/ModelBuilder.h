@@ -16,6 +16,9 @@ void check_references(const Project& project, std::vector<Issue>& issues);
 /// The solver section as strategy options (validated values).
 SolverOptions solver_options(const Project& project);
 
+/// analysis.increments: the load increments of the run (validated, 1 by default).
+int load_increments(const Project& project);
+
 /// Builds the model. Throws ProjectError for problems only visible on the mesh (inverted elements).
 Model build_model(const Project& project);
 

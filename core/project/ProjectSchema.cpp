@@ -302,6 +302,17 @@ const ObjectSchema& solver_schema() {
   return s;
 }
 
+const ObjectSchema kAnalysis{
+    "analysis",
+    "How the loads are applied. The analysis is linear: every increment solves the same stiffness with the loads "
+    "and prescribed displacements times its load factor i / N; frictionless contact makes the sequence meaningful "
+    "(each increment's active set starts from the previous one's, so the contact zone grows with the load).",
+    {def(count("increments", "load increments N: equal proportional steps of every load and prescribed displacement",
+               1000),
+         1)},
+    "",
+    {}};
+
 const ObjectSchema kProbe{"probe",
                           "A named point whose nearest node's displacement is reported in summary.json.",
                           {req(str("name", "probe name, unique")), req(vec("at", "length", "position")),
@@ -352,8 +363,8 @@ const ObjectSchema& project_schema() {
          return f;
        }(),
        objects("boundary_conditions", kBC, "supports and loads"), objects("contacts", kContact, "contact pairs"),
-       object("solver", solver_schema(), "solver settings"), objects("probes", kProbe, "reported points"),
-       object("output", kOutput, "outputs")},
+       object("analysis", kAnalysis, "load increments"), object("solver", solver_schema(), "solver settings"),
+       objects("probes", kProbe, "reported points"), object("output", kOutput, "outputs")},
       "",
       {}};
   return root;

@@ -1,16 +1,20 @@
 // The whole window under Xvfb: the view draws the project's meshes, an edit in the property editor updates the
 // status-bar counts and the view, a run from the Run button converges and colours the view by displacement,
-// Cancel ends a run "cancelled", and the window's screenshot is not blank.
+// Cancel ends a run "cancelled", the window's screenshot is not blank, and after a run of three load increments the
+// view toolbar's increment selector offers 1…3 and recolours the view with the chosen increment's fields.
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "MainWindow.h"
 #include "MeshView.h"
@@ -39,6 +43,11 @@ double grey_spread(const QImage& image) {
     }
   const double mean = sum / static_cast<double>(n);
   return std::sqrt(std::max(0.0, sum2 / static_cast<double>(n) - mean * mean));
+}
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 }  // namespace
 
@@ -144,6 +153,58 @@ class TestMainWindow : public QObject {
     QVERIFY(!w.view()->has_results());
     QCOMPARE(w.view()->drawn_cells(), 32L * 24);  // the mesh is still shown
     QVERIFY(w.run_panel()->run_button()->isEnabled());
+  }
+  void increment_selector_steps_through_a_three_increment_run() {
+    // the Hertz sample, coarse (mesh size about 0.04 near the contact), in three load increments
+    std::ifstream in(ROLLSIM_SOURCE_DIR "/samples/cylinder-indent-2d.json");
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["bodies"][0]["mesh"]["nx"] = 38;
+    j["bodies"][0]["mesh"]["ny"] = 38;
+    j["bodies"][1]["mesh"]["n_around"] = 39;
+    j["bodies"][1]["mesh"]["n_radial"] = 22;
+    j["boundary_conditions"][3]["fy"] = -2.16 / 23;
+    j["analysis"] = {{"increments", 3}};
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("hertz-3.json"));
+    std::ofstream(file.toStdString()) << j.dump(2);
+    MainWindow w;
+    QVERIFY(w.open_file(file));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    auto* selector = w.findChild<QSpinBox*>(QStringLiteral("incrementSelector"));
+    QVERIFY(selector);
+    QVERIFY(!selector->isVisible());  // no results yet
+    QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
+    QVERIFY(w.start_run());
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(w.run_status(), QStringLiteral("converged"));
+    QCOMPARE(w.view()->increment_count(), 3);
+    QCOMPARE(selector->maximum(), 3);
+    QTRY_VERIFY(selector->isVisible());  // the toolbar lays its widgets out on the next event loop pass
+    QCOMPARE(selector->minimum(), 1);
+    QCOMPARE(selector->maximum(), 3);
+    QCOMPARE(selector->value(), 3);
+    QCOMPARE(w.view()->color_by(), ColorBy::Displacement);
+    const double full = w.view()->color_range()[1];
+    selector->setValue(1);
+    QCOMPARE(w.view()->increment(), 0);
+    const double first = w.view()->color_range()[1];
+    QVERIFY2(first < 0.9 * full, "increment 1 shows a smaller |u| range than the last");
+    selector->setFocus();
+    QTest::keyClick(selector, Qt::Key_Up);  // keyboard: one increment on
+    QCOMPARE(w.view()->increment(), 1);
+    const double second = w.view()->color_range()[1];
+    QVERIFY(second > first && second < full);
+    QTemporaryDir out;
+    const auto pvd = out.filePath(QStringLiteral("run.pvd")).toStdString();
+    w.view()->export_pvd(pvd);
+    QVERIFY(QFileInfo::exists(out.filePath(QStringLiteral("run_0003.vtu"))));
+    QVERIFY(read_all(pvd).find("timestep=\"1\"") != std::string::npos);
+    // a run of one increment hides the selector again
+    QVERIFY(w.open_file(kSample));
+    QVERIFY(w.start_run());
+    QVERIFY(finished.wait(60000));
+    QTRY_VERIFY(!selector->isVisible());
   }
 };
 
