@@ -301,6 +301,7 @@ void MainWindow::run_finished(const RunOutcome& o) {
                              .arg(o.dofs)
                              .arg(o.cg_iterations)
                              .arg(o.seconds, 0, 'f', 3));
+  statusBar()->showMessage(tr("run %1 in %2 s").arg(o.status).arg(o.seconds, 0, 'f', 3));  // not the last stage
   log_->info(tr("run %1: %2 dofs, %3 CG iterations, %4 s")
                  .arg(o.status)
                  .arg(o.dofs)

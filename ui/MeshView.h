@@ -4,6 +4,8 @@
 // (continuous map), with a colour legend, orientation axes and an optional deformed shape.
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkNew.h>
+
+class vtkIntArray;
 #include <vtkSmartPointer.h>
 
 #include <QColor>
@@ -119,6 +121,9 @@ class MeshView : public QVTKOpenGLNativeWidget {
   long cell_offset(int body) const;
   void rebuild_grid();
   void apply_coloring();
+  /// Writes a changed subdomain_id of the grid into the drawn faces; false if they are not there (then the
+  /// caller marks the grid modified and the filters run again).
+  bool recolour_faces(vtkIntArray& cell_ids);
   void render();
   std::array<double, 6> bounds() const;
 
