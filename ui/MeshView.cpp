@@ -320,12 +320,15 @@ void MeshView::reset_camera() {
   renderer_->ResetCamera();
   if (model_ && model_->dim == 2 && width() > 0 && height() > 0) {  // fit width and height, 8 % margin
     const auto b = bounds();
-    const double aspect = 0.8 * width() / height();  // the legend takes the right fifth
+    // the legend with its names (drawn left of the swatches) takes the right 30 %: the mesh is fitted into and
+    // centred on the rest
+    constexpr double legend = 0.3;
+    const double aspect = (1.0 - legend) * width() / height();
     cam->SetParallelScale(1.08 * std::max(0.5 * (b[3] - b[2]), 0.5 * (b[1] - b[0]) / aspect));
     double focal[3], position[3];
     cam->GetFocalPoint(focal);
     cam->GetPosition(position);
-    const double shift = 0.1 * width() / height() * cam->GetParallelScale();  // centre the mesh left of the legend
+    const double shift = legend * width() / height() * cam->GetParallelScale();
     cam->SetFocalPoint(focal[0] + shift, focal[1], focal[2]);
     cam->SetPosition(position[0] + shift, position[1], position[2]);
   } else {
