@@ -55,7 +55,8 @@ constexpr std::array<std::array<double, 3>, 10> kCategories{{{0.306, 0.475, 0.65
                                                              {1.000, 0.616, 0.655},
                                                              {0.612, 0.459, 0.373},
                                                              {0.729, 0.690, 0.675}}};
-constexpr long kEdgesUpTo = 40000;  // cell edges are drawn on meshes up to this many cells
+constexpr long kEdgesUpTo = 40000;    // cell edges are drawn on meshes up to this many cells
+constexpr int kNamedCategories = 16;  // the legend names bodies / subdomains up to this many
 
 }  // namespace
 
@@ -261,9 +262,14 @@ void MeshView::apply_coloring() {
     mapper_->SelectColorArray(body ? "body_id" : "subdomain_id");
     mapper_->SetScalarRange(0, n - 1);
     mapper_->ScalarVisibilityOn();
-    legend_->SetLookupTable(categories_);
+    // up to 16 categories each gets its name beside its colour; more (a 4×4×4 FETI partition has 64) would
+    // overflow the view, so the bar shows the id range with numbered ticks instead
+    const bool named = n <= kNamedCategories;
+    legend_->SetLookupTable(named ? categories_.GetPointer() : colours_.GetPointer());
     legend_->SetTitle(body ? "body" : "subdomain");
-    legend_->SetDrawAnnotations(1);
+    legend_->SetDrawAnnotations(named ? 1 : 0);
+    legend_->SetDrawTickLabels(named ? 0 : 1);
+    legend_->SetLabelFormat("%-.0f");
   } else {
     const bool disp = color_by_ == ColorBy::Displacement;
     const char* name = result_array(color_by_);
@@ -281,6 +287,8 @@ void MeshView::apply_coloring() {
     legend_->SetLookupTable(continuous_);
     legend_->SetTitle(disp ? "|u|" : color_by_ == ColorBy::VonMises ? "von Mises" : "contact p");
     legend_->SetDrawAnnotations(0);
+    legend_->SetDrawTickLabels(1);
+    legend_->SetLabelFormat("%-#8.3g");
   }
   render();
 }
