@@ -9,6 +9,7 @@
 #include "VtuWriter.h"
 #include "analysis/LinearStatic.h"
 #include "io/AtomicFile.h"
+#include "io/OutputFolder.h"
 #include "io/Summary.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
@@ -108,8 +109,8 @@ std::string non_finite_results(const Model& model, const Results& r) {
     for (const auto& s : br.nodal_stress) ok = ok && finite(s);
     if (!ok)
       return "bodies[" + std::to_string(b) + "]: the results of body '" + model.bodies[b].name +
-             "' are not finite numbers (overflow or underflow): the loads, prescribed displacements, material "
-             "constants or dimensions are out of the range double precision can handle";
+             "' are not finite numbers: the loads, prescribed displacements, material constants or dimensions are "
+             "out of the range double precision can handle";
   }
   return "";
 }
@@ -174,13 +175,9 @@ int run_command(const RunOptions& o) {
   }
   for (const auto& w : model.warnings) std::fprintf(stderr, "rollsim: warning: %s\n", w.c_str());
   const SolverOptions options = solver_options(project);
-  RunInfo info{project.name(),
-               project.data.at("solver").at("mode").get<std::string>(),
-               options.cg_tolerance,
-               options.threads,
-               "",
-               options.preconditioner,
-               options.multipliers,
+  RunInfo info{project.name(),         project.data.at("solver").at("mode").get<std::string>(),
+               options.cg_tolerance,   options.threads,
+               options.preconditioner, options.multipliers,
                options.projector};
   set_library_threads(info.threads);
   const auto dir = output_dir(project, o);
@@ -189,20 +186,19 @@ int run_command(const RunOptions& o) {
   if (ec) return invalid("cannot create output directory " + dir.string() + ": " + ec.message());
   auto solver = make_solver(info.mode, options);
   Results results;
-  int code = 0;
   try {
-    results = run_linear_static(model, *solver, &progress, load_increments(project));
-    info.error = non_finite_results(model, results);
+    results =
+        run_linear_static(model, *solver, &progress, load_increments(project), max_active_set_iterations(project));
+    if (results.status.ok())
+      if (auto bad = non_finite_results(model, results); !bad.empty())
+        results.status = {Status::error, Reason::none, bad};
   } catch (const AnalysisError& e) {
-    info.error = e.what();
-  }
-  if (!info.error.empty()) {
-    results.status = "error";
-    code = 2;
+    results.status = {Status::error, Reason::none, e.what()};
   }
   progress.on_stage("write results");
   try {
-    if (results.status == "converged" && project.data.at("output").at("vtu").get<bool>()) {
+    clear_run_outputs(dir);  // the folder holds this run only: no result.vtu of an earlier run beside a failure
+    if (results.status.ok() && project.data.at("output").at("vtu").get<bool>()) {
       write_vtu(dir / "result.vtu", model, results);
       if (results.load_increments > 1) write_increment_collection(dir / "results.pvd", model, results);
     }
@@ -211,11 +207,16 @@ int run_command(const RunOptions& o) {
   } catch (const std::exception& e) {
     return invalid("cannot write the results into " + dir.string() + ": " + e.what());
   }
-  if (code) return invalid(info.error + " (summary written to " + (dir / "summary.json").string() + ")");
+  const auto summary = (dir / "summary.json").string();
+  if (!results.status.ok()) {
+    std::cerr << "rollsim: " << (results.status.status == Status::error ? "error" : to_string(results.status.status))
+              << ": " << results.status.message << " (summary written to " << summary << ")\n";
+    return exit_code(results.status.status);
+  }
   if (!o.quiet)
     std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s, %.3f s; results in %s/\n", project.name().c_str(),
                  results.dofs, info.mode.c_str(), results.timing.total_s, dir.string().c_str());
-  std::cout << (dir / "summary.json").string() << "\n";
+  std::cout << summary << "\n";
   return 0;
 }
 

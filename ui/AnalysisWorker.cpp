@@ -139,8 +139,10 @@ void AnalysisWorker::run(const Project& project) {
     if (obs.cancel_requested()) {
       out.status = QStringLiteral("cancelled");
     } else {
-      auto results = std::make_shared<Results>(run_linear_static(*model, *solver, &obs, load_increments(project)));
-      out.status = QString::fromStdString(results->status);
+      auto results = std::make_shared<Results>(
+          run_linear_static(*model, *solver, &obs, load_increments(project), max_active_set_iterations(project)));
+      out.status = QString::fromUtf8(to_string(results->status.status));
+      if (!results->status.ok()) out.error = QString::fromStdString(results->status.message);
       out.dofs = results->dofs;
       out.cg_iterations = solver->stats().cg_iterations;
       out.solves = solver->stats().solves;

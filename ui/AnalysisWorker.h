@@ -24,8 +24,8 @@ struct CgIteration {
 
 /// How a run ended, with what it produced.
 struct RunOutcome {
-  QString status;  // converged / diverged / cancelled / error
-  QString error;   // the message when status is "error"
+  QString status;  // converged / not_converged / diverged / cancelled / error (solve/RunStatus.h)
+  QString error;   // what stopped the run, when it did not converge
   std::shared_ptr<const Model> model;
   // null on error or when cancelled before the first solve; after a cancel, the last iterate's fields
   // (Results::status)

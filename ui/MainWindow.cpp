@@ -290,9 +290,10 @@ void MainWindow::run_finished(const RunOutcome& o) {
   run_status_ = o.status;
   status_->setText(o.status);
   run_panel_->set_running(false);
-  if (o.status == QLatin1String("error")) {
-    run_panel_->set_status(tr("error"));
-    log_->error(tr("run failed: %1").arg(o.error));
+  const bool failed = o.status != QLatin1String("converged") && o.status != QLatin1String("cancelled");
+  if (failed) {
+    run_panel_->set_status(o.status);
+    log_->error(tr("run %1: %2").arg(o.status, o.error));
     statusBar()->showMessage(o.error, 15000);
     return;
   }

@@ -19,8 +19,13 @@ void write(const std::filesystem::path& file, vtkUnstructuredGrid* grid) {
   w->SetInputData(grid);
   w->SetDataModeToAppended();
   w->SetCompressorTypeToNone();  // zlib cost 5x the write time for a 2x smaller file
-  if (w->Write() != 1) throw std::runtime_error("cannot write " + file.string());
-  std::filesystem::rename(tmp, file);
+  std::error_code ec;
+  const bool written = w->Write() == 1;
+  if (written) std::filesystem::rename(tmp, file, ec);
+  if (!written || ec) {
+    std::filesystem::remove(tmp, ec);  // no temporary left behind
+    throw std::runtime_error("cannot write " + file.string());
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "analysis/LinearStatic.h"
 
 #include <memory>
+#include <set>
 
 #include "analysis/ConstraintAssembly.h"
 #include "analysis/ContactResults.h"
@@ -13,8 +14,10 @@
 namespace rollsim {
 
 namespace {
-// Names the body, node and component of global equation `col` (groups stacked in order).
-std::string describe_singular(const Model& model, const std::vector<std::unique_ptr<DofMap>>& dofs, int col) {
+// Names the body, node and component of global equation `col` (groups stacked in order), and what the factorization
+// found (`what`).
+std::string describe_singular(const Model& model, const std::vector<std::unique_ptr<DofMap>>& dofs, int col,
+                              const std::string& what) {
   std::string where;
   int offset = 0;
   for (size_t b = 0; b < dofs.size() && where.empty(); ++b) {
@@ -32,13 +35,14 @@ std::string describe_singular(const Model& model, const std::vector<std::unique_
     }
     offset += d.num_free();
   }
-  return "the stiffness matrix is singular" + where +
-         ": a body is not held against rigid-body motion (add displacement or symmetry conditions)";
+  return "the stiffness matrix is singular" + where + " (to working precision: " + what +
+         "): a body or part of it is not held against rigid-body motion (add displacement or symmetry conditions), "
+         "or its material is nearly incompressible (Poisson's ratio close to 0.5 needs the B-bar formulation) or "
+         "its stiffnesses differ by more than 1e12";
 }
 }  // namespace
 
 namespace {
-constexpr int kMaxActiveSetIterations = 50;  // per increment
 
 /// Load factor of increment i of n: i / n, exactly 1 for the last.
 double load_factor(int i, int n) { return i == n ? 1.0 : static_cast<double>(i) / n; }
@@ -50,9 +54,10 @@ BlockSolution solve_checked(const Model& model, const std::vector<std::unique_pt
   } catch (const SingularMatrix& e) {
     if (sys.num_rigid_modes() > 0)
       throw AnalysisError("the system is singular: the contact constraints do not hold the floating bodies (" +
-                          std::to_string(sys.num_rigid_modes()) +
-                          " rigid modes) — check that the contact surfaces meet and hold every free direction");
-    throw AnalysisError(describe_singular(model, dofs, e.column));
+                          std::to_string(sys.num_rigid_modes()) + " rigid modes; " + e.what() +
+                          ") — check that the contact surfaces meet and hold every free direction");
+    const bool one_body_per_group = sys.groups.size() == model.bodies.size();
+    throw AnalysisError(describe_singular(model, dofs, one_body_per_group ? e.column : -1, e.what()));
   } catch (const std::invalid_argument& e) {
     throw AnalysisError(e.what());
   }
@@ -114,10 +119,104 @@ Multipliers multiplier_choice(const SolverOptions& o) {
 }
 }  // namespace
 
-Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer, int increments) {
+namespace {
+/// The run's state between solves: the block system, the contact search and the last solution (u, λ, rows).
+struct DriverState {
+  const Model& model;
+  SolverStrategy& solver;
+  AnalysisObserver& obs;
+  GroupLayout& layout;
+  std::vector<PairState> pairs;
+  std::vector<ConstraintRow> rows;
+  BodyConstraints contact;
+  BlockSolution sol;
+  std::vector<Eigen::VectorXd> u;
+  double factor = 1.0;  // load factor of (u, λ, rows)
+
+  /// Fields and contact resultants of the current (u, λ, rows) at `factor`.
+  void recover_into(Results& into) const {
+    into.bodies.clear();
+    for (size_t b = 0; b < model.bodies.size(); ++b) {
+      into.bodies.push_back(recover(model, static_cast<int>(b), u[b], factor));
+      if (!model.bodies[b].partition.element_subdomain.empty())
+        into.bodies.back().subdomain = model.bodies[b].partition.element_subdomain;
+    }
+    contact_results(model, pairs, rows, contact.kept, sol.lambda.head(contact.d.size()), into);
+  }
+
+  /// One linear solve with the active set as it stands, at load factor `lf`.
+  RunStatus solve_once(double lf) {
+    rows = contact_rows(model, pairs);
+    contact = body_constraints(rows, layout.body_dofs(), lf);
+    layout.set_contact(contact);
+    check_floating_groups_held(layout.system());
+    obs.on_stage("solve");
+    sol = solve_checked(model, layout.body_dofs(), solver, layout.system(), obs);
+    u = full_displacements(layout.body_dofs(), layout.body_solution(sol), lf);
+    factor = lf;
+    return sol.status;
+  }
+
+  /// The frictionless statuses of every pair, concatenated: what the cycling test compares.
+  std::vector<char> active_set() const {
+    std::vector<char> all;
+    for (const PairState& p : pairs) all.insert(all.end(), p.active.begin(), p.active.end());
+    return all;
+  }
+
+  /// Updates the active set from (u, λ); returns the number of points that changed.
+  int update_contact_statuses() {
+    std::vector<ConstraintRow> kept_rows;
+    for (int r : contact.kept) kept_rows.push_back(rows[r]);
+    return update_active_set(model, kept_rows, sol.lambda.head(contact.d.size()), u, pairs,
+                             solver.multiplier_tolerance());
+  }
+};
+
+std::string where(int inc, int count, int it) {
+  std::string w = count > 1 ? "increment " + std::to_string(inc) + " of " + std::to_string(count) + ", " : "";
+  return w + "active-set iteration " + std::to_string(it) + ": ";
+}
+
+/// Increment `inc` of `count` at load factor `lf`: solves while the frictionless active set changes. Counts its
+/// solves into `step`; ends converged, cancelled, or not_converged (a CG that stopped short, an active set that
+/// cycles or reaches `max_iterations`).
+RunStatus solve_increment(DriverState& st, int inc, int count, double lf, IncrementResults& step, int& solves,
+                          int max_iterations) {
+  std::set<std::vector<char>> tried{st.active_set()};
+  for (int it = 1;; ++it) {
+    if (st.obs.cancel_requested())  // before every solve: the last one's (u, λ, rows) stay the results
+      return {Status::cancelled, Reason::none, "cancelled before a linear solve"};
+    const RunStatus solved = st.solve_once(lf);
+    ++solves;
+    step.active_set_iterations = it;
+    if (!solved.ok()) return {solved.status, solved.reason, where(inc, count, it) + solved.message};
+    if (!has_unilateral(st.model)) return {};
+    const int changed = st.update_contact_statuses();
+    st.obs.on_active_set_iteration(it, changed);
+    if (changed == 0) return {};
+    if (!tried.insert(st.active_set()).second)
+      return {Status::not_converged, Reason::active_set_cycling,
+              where(inc, count, it) + "the frictionless active set returned to a set already tried (" +
+                  std::to_string(changed) +
+                  " points changed status): the contact cannot decide between them at this load step — try more "
+                  "increments or a tighter CG tolerance"};
+    if (it == max_iterations)
+      return {Status::not_converged, Reason::iteration_limit,
+              where(inc, count, it) + "the frictionless active set still changed (" + std::to_string(changed) +
+                  " points) after " + std::to_string(max_iterations) + " solves (analysis.max_active_set_iterations)"};
+  }
+}
+}  // namespace
+
+Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer, int increments,
+                          int max_active_set_iterations) {
   if (increments < 1 || increments > kMaxIncrements)
     throw AnalysisError("increments must be an integer in [1, " + std::to_string(kMaxIncrements) + "], got " +
                         std::to_string(increments));
+  if (max_active_set_iterations < 1)
+    throw AnalysisError("max_active_set_iterations must be a positive integer, got " +
+                        std::to_string(max_active_set_iterations));
   AnalysisObserver quiet;
   AnalysisObserver& obs = observer ? *observer : quiet;
   Stopwatch total;
@@ -127,41 +226,25 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   Stopwatch t;
   GroupLayout layout(model, solver.uses_subdomains(), multiplier_choice(solver.options()));
   BlockSystem& sys = layout.system();
-  const auto& dofs = layout.body_dofs();
   res.dofs = sys.num_dofs();
   res.rigid_modes = sys.num_rigid_modes();
   res.subdomains = layout.subdomains();
   res.interface_multipliers = layout.interface_multipliers();
   res.paper_convention_multipliers = layout.paper_convention_multipliers();
   res.timing.stiffness_s = t.seconds();
-  std::vector<PairState> pairs;
+  DriverState st{model, solver, obs, layout, {}, {}, {}, {}, {}, 1.0};
   try {
-    pairs = search_contacts(model);
+    st.pairs = search_contacts(model);
   } catch (const std::runtime_error& e) {
     throw AnalysisError(e.what());
   }
   std::vector<Eigen::VectorXd> full_load;  // every group's f at load factor 1 (only needed to scale it)
   if (increments > 1)
     for (const Group& g : sys.groups) full_load.push_back(g.f);
-  std::vector<ConstraintRow> rows;
-  BodyConstraints contact;
-  BlockSolution sol;
-  std::vector<Eigen::VectorXd> u;
-  double factor = 1.0;  // load factor of (u, λ, rows)
-  // Fields and contact resultants of the current (u, λ, rows) at `factor`.
-  auto recover_state = [&](Results& into) {
-    into.bodies.clear();
-    for (size_t b = 0; b < model.bodies.size(); ++b) {
-      into.bodies.push_back(recover(model, static_cast<int>(b), u[b], factor));
-      if (!model.bodies[b].partition.element_subdomain.empty())
-        into.bodies.back().subdomain = model.bodies[b].partition.element_subdomain;
-    }
-    contact_results(model, pairs, rows, contact.kept, sol.lambda.head(contact.d.size()), into);
-  };
-  bool last_fields_pending = false;  // the last completed increment's fields are recovered after the loop
-  for (int inc = 1; inc <= increments; ++inc) {
+  int solves = 0;
+  for (int inc = 1; inc <= increments && res.status.ok(); ++inc) {
     if (inc > 1 && obs.cancel_requested()) {  // before every increment: the previous one stays the result
-      res.status = "cancelled";
+      res.status = {Status::cancelled, Reason::none, "cancelled before increment " + std::to_string(inc)};
       break;
     }
     const double lf = load_factor(inc, increments);
@@ -171,60 +254,31 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
     IncrementResults step;
     step.load_factor = lf;
     const long cg_before = solver.stats().cg_iterations;
-    for (int it = 1;; ++it) {
-      if (obs.cancel_requested()) {  // before every solve: the last one's (u, λ, rows) stay the results
-        res.status = "cancelled";
-        if (it == 1 && inc == 1) return res;  // nothing solved: no fields
-        break;
-      }
-      rows = contact_rows(model, pairs);
-      contact = body_constraints(rows, dofs, lf);
-      layout.set_contact(contact);
-      check_floating_groups_held(sys);
-      obs.on_stage("solve");
-      sol = solve_checked(model, dofs, solver, sys, obs);
-      u = full_displacements(dofs, layout.body_solution(sol), lf);
-      factor = lf;
-      ++res.active_set_iterations;
-      step.active_set_iterations = it;
-      if (sol.cancelled) {  // stopped between CG iterations: the fields of that iterate
-        res.status = "cancelled";
-        break;
-      }
-      if (!has_unilateral(model)) break;
-      std::vector<ConstraintRow> kept_rows;
-      for (int r : contact.kept) kept_rows.push_back(rows[r]);
-      const int changed = update_active_set(model, kept_rows, sol.lambda.head(contact.d.size()), u, pairs);
-      obs.on_active_set_iteration(it, changed);
-      if (changed == 0) break;
-      if (it == kMaxActiveSetIterations) {
-        res.status = "diverged";
-        break;
-      }
-    }
-    if (res.status == "cancelled") break;  // an interrupted increment is not listed
+    res.status = solve_increment(st, inc, increments, lf, step, solves, max_active_set_iterations);
+    if (!res.status.ok()) break;  // an increment that did not converge is not listed
     obs.on_increment_end(inc, increments);
     obs.on_progress(static_cast<double>(inc) / increments);
     step.cg_iterations = solver.stats().cg_iterations - cg_before;
-    last_fields_pending = inc == increments || res.status != "converged";
-    if (!last_fields_pending) {
+    if (inc < increments) {  // the last increment's fields are recovered once, below
       Results fields;
-      recover_state(fields);
+      st.recover_into(fields);
       step.bodies = std::move(fields.bodies);
       step.contacts = std::move(fields.contacts);
     }
     res.increments.push_back(std::move(step));
-    if (res.status != "converged") break;  // diverged: later increments would start from an unsettled set
   }
-  res.multipliers = contact.d.size();
-  const SolveStats& st = solver.stats();
-  res.timing.analyze_s = st.analyze_s;
-  res.timing.factorize_s = st.factorize_s;
-  res.timing.solve_s = st.solve_s;
+  res.active_set_iterations = solves;
+  res.multipliers = st.contact.d.size();
+  const SolveStats& ss = solver.stats();
+  res.timing.analyze_s = ss.analyze_s;
+  res.timing.factorize_s = ss.factorize_s;
+  res.timing.solve_s = ss.solve_s;
+  // no fields before the first solve, nor of an iterate that is no solution (a CG stopped short may hold NaN)
+  if (solves == 0 || (!res.status.ok() && res.status.status != Status::cancelled)) return res;
   obs.on_stage("recover");
   Stopwatch tr;
-  recover_state(res);
-  if (last_fields_pending) {
+  st.recover_into(res);
+  if (res.status.ok()) {
     res.increments.back().bodies = res.bodies;
     res.increments.back().contacts = res.contacts;
   }

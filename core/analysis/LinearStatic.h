@@ -19,11 +19,15 @@ struct AnalysisError : std::runtime_error {
 
 /// The most load increments an analysis takes (the schema's range of analysis.increments).
 constexpr int kMaxIncrements = 1000;
+/// Linear solves an increment's active-set loop takes by default (analysis.max_active_set_iterations).
+constexpr int kMaxActiveSetIterations = 50;
 
 /// `increments` (1…1000) equal proportional steps: increment i solves with every load and prescribed displacement
 /// times i / N, its active-set loop starting from increment i − 1's active set; the stiffness (and every factor) is
-/// the same for all. One increment is the plain linear solve. Results::increments keeps the fields of each.
+/// the same for all. One increment is the plain linear solve. Results::increments keeps the fields of each. An
+/// increment whose active set still changes after `max_active_set_iterations` solves, or returns to a set it already
+/// tried, ends the run not_converged; so does an interface CG that stops short of its tolerance (Results::status).
 Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer = nullptr,
-                          int increments = 1);
+                          int increments = 1, int max_active_set_iterations = kMaxActiveSetIterations);
 
 }  // namespace rollsim

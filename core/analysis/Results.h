@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "solve/RunStatus.h"
+
 namespace rollsim {
 
 struct BodyResults {
@@ -44,11 +46,12 @@ struct Timing {
 };
 
 struct Results {
-  // converged / diverged / cancelled / error. A cancelled run holds the fields of its last iterate: the last
-  // completed linear solve when the cancel came between solves, or the interrupted CG's current iterate (every group
-  // in equilibrium with it, Gᵀλ = e met, the constraints C u = d not yet to tolerance); no bodies when it came before
-  // the first solve.
-  std::string status = "converged";
+  // How the run ended (solve/RunStatus.h); only a converged run is a result. A cancelled run holds the fields of its
+  // last iterate: the last completed linear solve when the cancel came between solves, or the interrupted CG's current
+  // iterate (every group in equilibrium with it, Gᵀλ = e met, the constraints C u = d not yet to tolerance); no bodies
+  // when it came before the first solve. A run that did not converge holds the increments it completed and no fields of
+  // the failed one.
+  RunStatus status;
   std::vector<BodyResults> bodies;
   long dofs = 0;
   long multipliers = 0;  // contact multipliers of the last solve

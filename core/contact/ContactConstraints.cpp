@@ -63,14 +63,15 @@ std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<Pa
 }
 
 int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
-                      const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs) {
+                      const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs, double tolerance) {
   int changed = 0;
+  const double tensile = tolerance * (lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0);
   std::vector<std::vector<char>> next(pairs.size());
   for (size_t i = 0; i < pairs.size(); ++i) next[i] = pairs[i].active;
   // leaving: the normal row's multiplier is tensile (force on the slave −λ n pulls it towards the master)
   for (size_t r = 0; r < rows.size(); ++r) {
     const ConstraintRow& row = rows[r];
-    if (model.contacts[row.pair].kind == ContactKind::Frictionless && lambda[static_cast<Eigen::Index>(r)] > 0)
+    if (model.contacts[row.pair].kind == ContactKind::Frictionless && lambda[static_cast<Eigen::Index>(r)] > tensile)
       next[row.pair][row.point] = 0;
   }
   // entering: an inactive point whose gap after deformation is negative (beyond round-off)

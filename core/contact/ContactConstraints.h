@@ -36,9 +36,11 @@ std::vector<PairState> search_contacts(const Model& model);
 std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<PairState>& pairs);
 
 /// Active-set update of the frictionless pairs from the displacements (node-major per body) and the multiplier
-/// of each row: a point leaves when its multiplier is tensile, enters when it penetrates. Returns the number of
-/// points that changed status.
+/// of each row: a point leaves when its multiplier is tensile beyond `tolerance` × the largest |λ| of the rows (the
+/// relative accuracy of λ: round-off for a direct solve, the CG tolerance for an iterative one — a λ that is zero
+/// to that accuracy keeps its point), enters when it penetrates. Returns the number of points that changed status.
 int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
-                      const std::vector<Eigen::VectorXd>& displacement, std::vector<PairState>& pairs);
+                      const std::vector<Eigen::VectorXd>& displacement, std::vector<PairState>& pairs,
+                      double tolerance = 0.0);
 
 }  // namespace rollsim

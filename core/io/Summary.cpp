@@ -78,13 +78,16 @@ json increments_section(const Results& r) {
 json make_summary(const Model& model, const Results& r, const SolveStats& st, const RunInfo& run) {
   json factorizations = json::object();
   for (const auto& [g, n] : st.factorizations) factorizations[g] = n;
-  json s = {{"status", r.status}, {"project", run.project}, {"units", "consistent, as in the project file"}};
-  if (!run.error.empty()) s["error"] = run.error;
+  json s = {{"status", to_string(r.status.status)},
+            {"project", run.project},
+            {"units", "consistent, as in the project file"}};
+  if (r.status.reason != Reason::none) s["reason"] = to_string(r.status.reason);
+  if (!r.status.message.empty()) s["message"] = r.status.message;
   s["model"] = model_section(model, r);
   s["solver"] = {{"mode", run.mode},
                  {"cg_tolerance", run.cg_tolerance},
                  {"cg_iterations_total", st.cg_iterations},
-                 {"newton_iterations", r.status == "converged" ? 1 : 0},
+                 {"newton_iterations", r.status.ok() ? 1 : 0},
                  {"increments", r.load_increments},
                  {"active_set_iterations", r.active_set_iterations},
                  {"factorizations", factorizations},
@@ -103,7 +106,7 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
                  {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
                  {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};
   s["increments"] = increments_section(r);
-  if (r.status == "converged") s["results"] = results_section(model, r);
+  if (r.status.ok()) s["results"] = results_section(model, r);
   return s;
 }
 

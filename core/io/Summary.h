@@ -14,7 +14,6 @@ struct RunInfo {
   std::string mode;     // solver strategy name
   double cg_tolerance = 1e-4;
   int threads = 1;
-  std::string error;                    // message when status is "error"
   std::string preconditioner = "none";  // feti
   std::string multipliers = "nonredundant";
   std::string projector = "identity";

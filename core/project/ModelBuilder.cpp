@@ -365,6 +365,11 @@ int load_increments(const Project& project) {
   return a == project.data.end() ? 1 : a->value("increments", 1);
 }
 
+int max_active_set_iterations(const Project& project) {
+  const auto a = project.data.find("analysis");
+  return a == project.data.end() ? 50 : a->value("max_active_set_iterations", 50);
+}
+
 Model build_model(const Project& project) {
   const json d = expand_process(project.data);
   Model model;

@@ -18,6 +18,8 @@ SolverOptions solver_options(const Project& project);
 
 /// analysis.increments: the load increments of the run (validated, 1 by default).
 int load_increments(const Project& project);
+/// analysis.max_active_set_iterations (1…1000; 50 when absent).
+int max_active_set_iterations(const Project& project);
 
 /// Builds the model. Throws ProjectError for problems only visible on the mesh (inverted elements).
 Model build_model(const Project& project);

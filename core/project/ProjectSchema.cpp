@@ -309,7 +309,12 @@ const ObjectSchema kAnalysis{
     "(each increment's active set starts from the previous one's, so the contact zone grows with the load).",
     {def(count("increments", "load increments N: equal proportional steps of every load and prescribed displacement",
                1000),
-         1)},
+         1),
+     def(count("max_active_set_iterations",
+               "linear solves an increment may take while the frictionless contact statuses change; the run ends "
+               "not_converged (iteration_limit) when they still change after that many",
+               1000),
+         50)},
     "",
     {}};
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "solve/Factorization.h"
+#include "solve/RunStatus.h"
 
 namespace rollsim {
 
@@ -45,7 +46,9 @@ struct BlockSystem {
 struct BlockSolution {
   std::vector<Eigen::VectorXd> u;
   Eigen::VectorXd lambda;
-  bool cancelled = false;  // an iterative solve stopped on the observer's request: (u, λ) is its last iterate
+  // converged; cancelled when an iterative solve stopped on the observer's request ((u, λ) is its last iterate);
+  // not_converged when its CG stopped short of the tolerance ((u, λ) is then no solution)
+  RunStatus status;
 };
 
 }  // namespace rollsim

@@ -16,9 +16,19 @@ struct FactorStats {
   double flops = 0;                                    // floating-point operations of one numeric factorization
   double analyze_s = 0, factorize_s = 0, solve_s = 0;  // accumulated wall times
   long factorizations = 0;
+  // smallest pivot of the last factorization relative to its column's diagonal, d_j / A_jj (positive definite
+  // factorizations; 1 until one ran): a lower bound of λ_min / λ_max, the reciprocal of the condition number
+  double min_pivot_ratio = 1;
 };
 
-/// Thrown when a pivot is zero or (for Cholesky) not positive. `column` is in the caller's numbering.
+/// Smallest pivot a positive definite factorization accepts, relative to its column's own diagonal. Every pivot d_j
+/// is at least λ_min(A) and every A_jj at most λ_max(A), so d_j / A_jj below 1e-12 means a condition number above
+/// 1e12 — fewer than 4 of double precision's 16 digits left in the solution: singular to working precision
+/// (a body or mechanism held by nothing, a near-incompressible material without B-bar, stiffnesses 1e12 apart).
+constexpr double kMinPivotRatio = 1e-12;
+
+/// Thrown when a pivot is zero, (for Cholesky) not positive, or below kMinPivotRatio of its diagonal. `column` is in
+/// the caller's numbering (−1: unknown).
 struct SingularMatrix : std::runtime_error {
   SingularMatrix(const std::string& what, int col) : std::runtime_error(what), column(col) {}
   int column;

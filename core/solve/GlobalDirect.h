@@ -16,9 +16,9 @@ class GlobalDirect final : public SolverStrategy {
   std::unique_ptr<Factorization> factor_;
   SparseMatrix global_;
   void add_times(const FactorStats& s);
-  long factor_size_ = 0, trailing_ = 0;
-  FactorStats earlier_;  // times of factors replaced by a new pattern (active-set changes)  // a new size or number of
-                         // multipliers needs a new analysis
+  SparseMatrix analyzed_;  // the matrix of the last analysis: a new pattern (not only a new size) needs a new one
+  long trailing_ = 0;
+  FactorStats earlier_;  // times of factors replaced by a new pattern (active-set changes)
   SolveStats stats_;
 };
 

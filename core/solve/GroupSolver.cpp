@@ -29,6 +29,15 @@ SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& kept) {
 }  // namespace
 
 void GroupSolver::factorize(const Group& g) {
+  try {
+    factorize_values(g);
+  } catch (const SingularMatrix& e) {  // name the group; the column in its own numbering
+    const int col = e.column >= 0 && !kept_.empty() ? kept_[static_cast<size_t>(e.column)] : e.column;
+    throw SingularMatrix(std::string(e.what()) + " of group '" + g.name + "'", col);
+  }
+}
+
+void GroupSolver::factorize_values(const Group& g) {
   if (g.K.rows() != size_) {
     size_ = g.K.rows();
     fixed_ = g.R.cols() ? fixing_dofs(g.R) : std::vector<int>{};

@@ -15,6 +15,7 @@ class GroupSolver {
   /// `kind`: a factorization name of make_factorization ("cholmod", "skyline").
   explicit GroupSolver(std::string kind) : kind_(std::move(kind)) {}
   /// Analyzes on the first call (or when the size changes) and factors K (or Kpp).
+  /// Throws SingularMatrix naming the group, its column in the group's own numbering.
   void factorize(const Group& g);
   /// K⁺ b
   Eigen::VectorXd apply(const Eigen::VectorXd& b);
@@ -27,6 +28,7 @@ class GroupSolver {
   std::vector<int> fixed_;  // dofs set to zero in K⁺ (floating groups)
   std::vector<int> kept_;   // kept_[i]: dof of row i of Kpp; empty when nothing is fixed
   long size_ = -1;
+  void factorize_values(const Group& g);
 };
 
 }  // namespace rollsim

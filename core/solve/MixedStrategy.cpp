@@ -4,6 +4,7 @@
 
 #include "solve/Blas.h"
 #include "solve/Parallel.h"
+#include "solve/SparseCompare.h"
 #include "solve/Stopwatch.h"
 
 namespace rollsim {
@@ -38,7 +39,15 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
     if (factored_version_[g] != sys.groups[g].version) todo.push_back(g);
   // independent groups are factored concurrently (BLAS on one thread: see solve()); a failure (e.g. a subdomain
   // that is not positive definite) is rethrown here instead of terminating the process from a worker thread
-  for_each_group(todo.size(), options_.threads, [&](size_t i) { groups_[todo[i]].factorize(sys.groups[todo[i]]); });
+  for_each_group(todo.size(), options_.threads, [&](size_t i) {
+    try {
+      groups_[todo[i]].factorize(sys.groups[todo[i]]);
+    } catch (const SingularMatrix& e) {  // the column in the groups' stacked numbering, as the global strategies
+      long offset = 0;
+      for (size_t g = 0; g < todo[i]; ++g) offset += sys.groups[g].K.rows();
+      throw SingularMatrix(e.what(), e.column < 0 ? -1 : static_cast<int>(offset + e.column));
+    }
+  });
   for (size_t g : todo) {
     factored_version_[g] = sys.groups[g].version;
     ++stats_.factorizations[sys.groups[g].name];
@@ -80,23 +89,20 @@ InterfaceProblem MixedStrategy::interface_problem(const BlockSystem& sys, const 
   return p;
 }
 
-namespace {
-bool same(const SparseMatrix& a, const SparseMatrix& b) {
-  if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;
-  const auto nnz = static_cast<size_t>(a.nonZeros());
-  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.cols() + 1, b.outerIndexPtr()) &&
-         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + nnz, b.innerIndexPtr()) &&
-         std::equal(a.valuePtr(), a.valuePtr() + nnz, b.valuePtr());
-}
-}  // namespace
-
 const SparseMatrix& MixedStrategy::weighted_modes(const BlockSystem& sys, const SparseMatrix& G,
                                                   bool preconditioner_changed) {
-  if (preconditioner_changed || !same(G, QG_of_)) {
+  if (preconditioner_changed || !same_matrix(G, QG_of_)) {
     QG_ = preconditioner_->apply_columns(sys, G);
     QG_of_ = G;
   }
   return QG_;
+}
+
+bool MixedStrategy::same_constraints(const BlockSystem& sys) const {
+  if (preconditioned_C_.size() != sys.groups.size()) return false;
+  for (size_t g = 0; g < sys.groups.size(); ++g)
+    if (!same_matrix(preconditioned_C_[g], sys.groups[g].C)) return false;
+  return true;
 }
 
 BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
@@ -112,10 +118,11 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   }();
   factorize_changed(sys, observer);
   Stopwatch t;
-  const bool new_preconditioner = preconditioner_ && (refactor || sys.num_multipliers() != preconditioned_rows_);
+  const bool new_preconditioner = preconditioner_ && (refactor || !same_constraints(sys));
   if (new_preconditioner) {
     preconditioner_->setup(sys);
-    preconditioned_rows_ = sys.num_multipliers();
+    preconditioned_C_.clear();
+    for (const Group& g : sys.groups) preconditioned_C_.push_back(g.C);
   }
   std::vector<Eigen::VectorXd> Kf(sys.groups.size());
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) { Kf[g] = groups_[g].apply(sys.groups[g].f); });
@@ -130,7 +137,7 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   stats_.cg_lambda_max = last_.lambda_max;
   BlockSolution out;
   out.lambda = last_.lambda;
-  out.cancelled = last_.cancelled;
+  out.status = cg_status(last_, cg);
   std::vector<long> first_mode(sys.groups.size(), 0);  // column of group g's modes in α
   for (size_t g = 1; g < sys.groups.size(); ++g) first_mode[g] = first_mode[g - 1] + sys.groups[g - 1].R.cols();
   out.u.resize(sys.groups.size());

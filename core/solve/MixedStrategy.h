@@ -20,6 +20,8 @@ class MixedStrategy final : public SolverStrategy {
   const SolveStats& stats() const override { return stats_; }
   bool uses_subdomains() const override { return subdomains_; }
   const SolverOptions& options() const override { return options_; }
+  /// λ is as accurate as the interface CG's relative tolerance
+  double multiplier_tolerance() const override { return options_.cg_tolerance; }
   /// The last interface solve (residual history, constraint error), for tests and reports.
   const ProjectedCGResult& last_interface_solve() const { return last_; }
 
@@ -33,13 +35,16 @@ class MixedStrategy final : public SolverStrategy {
   Eigen::VectorXd sum_over_groups(const BlockSystem& sys, const std::function<Eigen::VectorXd(size_t)>& op) const;
   /// Q G = M⁻¹ G for the weighted projector, kept while neither the preconditioner nor G changes (Newton
   /// iterations and active-set passes that refactor nothing reuse it).
+  /// True when every group's constraint block is the one the preconditioner was set up with (an active set that
+  /// swaps rows while keeping their count is a change).
+  bool same_constraints(const BlockSystem& sys) const;
   const SparseMatrix& weighted_modes(const BlockSystem& sys, const SparseMatrix& G, bool preconditioner_changed);
 
   SolverOptions options_;
   bool subdomains_;
   std::unique_ptr<InterfacePreconditioner> preconditioner_;
-  long preconditioned_rows_ = -1;
-  SparseMatrix QG_, QG_of_;  // weighted_modes() and the G it was computed for
+  std::vector<SparseMatrix> preconditioned_C_;  // every group's C when the preconditioner was set up
+  SparseMatrix QG_, QG_of_;                     // weighted_modes() and the G it was computed for
   std::string kind_;
   std::vector<GroupSolver> groups_;
   std::vector<long> factored_version_;

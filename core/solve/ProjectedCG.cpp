@@ -1,6 +1,7 @@
 #include "solve/ProjectedCG.h"
 
 #include <cmath>
+#include <cstdio>
 #include <tuple>
 
 #include "solve/Factorization.h"
@@ -71,6 +72,26 @@ double constraint_error(const SparseMatrix& G, const Eigen::VectorXd& e, const E
 }
 }  // namespace
 
+RunStatus cg_status(const ProjectedCGResult& r, const ProjectedCGOptions& o) {
+  if (r.converged) return {};
+  if (r.cancelled) return {Status::cancelled, Reason::none, "cancelled between CG iterations"};
+  char reached[160];
+  std::snprintf(reached, sizeof reached, "relative residual %.3g after %d iterations, tolerance %.3g",
+                r.residuals.back(), r.iterations, o.tolerance);
+  if (r.round_off)
+    return {Status::not_converged, Reason::round_off,
+            std::string("the interface CG reached the round-off level of its data before the tolerance (") + reached +
+                "): ask for a tolerance above it"};
+  if (r.breakdown)
+    return {Status::not_converged, Reason::breakdown,
+            std::string("the interface CG broke down (no positive curvature left: round-off, or an operator that is "
+                        "not positive definite) at ") +
+                reached};
+  return {Status::not_converged, Reason::iteration_limit,
+          std::string("the interface CG reached its iteration limit (") + std::to_string(o.max_iterations) + ") at " +
+              reached};
+}
+
 ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptions& o, AnalysisObserver* observer) {
   SparseMatrix converted;  // a problem that gives G dense
   if (p.Gs.cols() == 0 && p.G.cols() > 0) converted = p.G.sparseView();
@@ -98,7 +119,10 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
     dir = res.iterations == 0 ? y : Eigen::VectorXd(y + update * dir);
     const Eigen::VectorXd q = p.F(dir);
     const double curvature = dir.dot(q);
-    if (!(wy > 0 && curvature > 0)) break;  // breakdown: F not positive definite on ker Gᵀ (or NaN)
+    if (!(wy > 0 && curvature > 0)) {  // breakdown: F not positive definite on ker Gᵀ (or NaN)
+      res.breakdown = true;
+      break;
+    }
     const double step = wy / curvature;
     steps.push_back(step), updates.push_back(update);
     res.lambda += step * dir;
@@ -110,7 +134,11 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
     res.residuals.push_back(rel);
     res.max_constraint_error = std::max(res.max_constraint_error, constraint_error(G, p.e, res.lambda, g_max));
     if (observer) observer->on_cg_iteration(o.solve, res.iterations, rel);
-    res.converged = rel <= o.tolerance || w.norm() <= floor;
+    res.converged = rel <= o.tolerance;
+    if (!res.converged && w.norm() <= floor) {  // no digit left to gain: the tolerance is below round-off here
+      res.round_off = true;
+      break;
+    }
     if (!res.converged && observer && observer->cancel_requested()) {
       res.cancelled = true;  // a safe point: λ is a feasible iterate, r its residual
       break;

@@ -13,6 +13,7 @@
 
 #include "analysis/Observer.h"
 #include "solve/Factorization.h"
+#include "solve/RunStatus.h"
 
 namespace rollsim {
 
@@ -38,6 +39,8 @@ struct ProjectedCGResult {
   Eigen::VectorXd lambda, alpha;
   int iterations = 0;
   bool converged = false;
+  bool breakdown = false;         // stopped on non-positive curvature or a NaN (F not positive definite on ker Gᵀ)
+  bool round_off = false;         // stopped at the round-off floor (1e-14 of the data) above the tolerance
   bool cancelled = false;         // the observer asked to stop: λ, α are the last iterate (Gᵀλ = e holds)
   std::vector<double> residuals;  // ‖Pᵀ r_k‖ / ‖Pᵀ r_0‖, k = 0..iterations
   /// Extreme eigenvalues of the (preconditioned, projected) operator estimated from the CG coefficients (the
@@ -45,6 +48,10 @@ struct ProjectedCGResult {
   double lambda_min = 0, lambda_max = 0;
   double max_constraint_error = 0;  // max over iterations of ‖Gᵀλ_k − e‖∞ / max(‖e‖∞, max|G| ‖λ_k‖∞)
 };
+
+/// How a CG that did not converge ended, for the user: not_converged with iteration_limit or breakdown, the
+/// iterations, the relative residual reached and the tolerance asked for; converged (or cancelled) otherwise.
+RunStatus cg_status(const ProjectedCGResult& result, const ProjectedCGOptions& options);
 
 /// Reports every iteration to `observer` (may be null) and stops early when it asks to cancel.
 /// Throws SingularMatrix (column −1) when GᵀQG is singular: the constraints do not hold some rigid mode.

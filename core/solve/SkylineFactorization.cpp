@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
+#include <string>
 
 #include "solve/ReverseCuthillMcKee.h"
 #include "solve/Stopwatch.h"
@@ -35,7 +37,18 @@ inline void dot_block(const double* x, const std::array<const double*, B>& y, in
     for (int b = 0; b < B; ++b) s[b] += x[k] * y[b][k];
 }
 
-constexpr double kPivotTolerance = 1e-13;  // relative to the largest |A_jj| seen so far
+constexpr double kPivotTolerance = 1e-13;  // multiplier rows: relative to the largest |A_jj| seen so far
+
+std::string pivot_message(double d, double ajj, int col, int k, int n) {
+  char what[200];
+  if (d > 0 && ajj > 0)
+    std::snprintf(what, sizeof what, "pivot %.3g of its diagonal in skyline LDL^T at column %d (pivot %d of %d)",
+                  d / ajj, col, k, n);
+  else
+    std::snprintf(what, sizeof what, "non-positive pivot %.3g in skyline LDL^T at column %d (pivot %d of %d)", d, col,
+                  k, n);
+  return what;
+}
 
 }  // namespace
 
@@ -85,6 +98,8 @@ void SkylineFactorization::scatter(const SparseMatrix& A) {
       if (i < first_[j]) throw std::invalid_argument("SkylineFactorization: pattern differs from the analyzed one");
       a_[diag_[j] - (j - i)] = it.value();
     }
+  original_diag_.resize(static_cast<size_t>(n_));
+  for (int j = 0; j < n_; ++j) original_diag_[j] = a_[diag_[j]];
 }
 
 /// Rows i < j0 of the block of columns j0 .. j0 + nb - 1 (all columns i already factored): u_ij -= l_i . u_j over
@@ -148,7 +163,15 @@ int SkylineFactorization::eliminate() {
       largest = std::max(largest, std::abs(a_[diag_[j]]));
       flops += finish_column(j0, j);
       const double d = a_[diag_[j]];
-      if (!std::isfinite(d) || std::abs(d) <= kPivotTolerance * largest) {
+      bool bad = !std::isfinite(d);
+      if (j < n_ - trailing_) {  // the stiffness part: positive definite, pivots checked against their diagonal
+        const double ratio = original_diag_[j] > 0 ? d / original_diag_[j] : 0.0;
+        stats_.min_pivot_ratio = std::min(stats_.min_pivot_ratio, ratio);
+        bad = bad || !(ratio > kMinPivotRatio);
+      } else {
+        bad = bad || std::abs(d) <= kPivotTolerance * largest;
+      }
+      if (bad) {
         failed = j;
         break;
       }
@@ -163,12 +186,12 @@ void SkylineFactorization::factorize(const SparseMatrix& A) {
   Stopwatch t;
   factored_ = false;
   scatter(A);
+  stats_.min_pivot_ratio = 1;
   const int failed = eliminate();
   stats_.factorize_s += t.seconds();
   ++stats_.factorizations;
   if (failed >= 0)
-    throw SingularMatrix("zero pivot in skyline LDL^T at column " + std::to_string(perm_[failed]) + " (pivot " +
-                             std::to_string(failed) + " of " + std::to_string(n_) + ")",
+    throw SingularMatrix(pivot_message(a_[diag_[failed]], original_diag_[failed], perm_[failed], failed, n_),
                          perm_[failed]);
   factored_ = true;
 }

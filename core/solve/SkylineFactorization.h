@@ -43,6 +43,7 @@ class SkylineFactorization final : public Factorization {
   std::vector<int> perm_, inverse_, first_;  // first_[j]: first stored row of column j
   std::vector<long> diag_;                   // ACTCOL's JDIAG: position of the diagonal of each column
   std::vector<double> a_;                    // the skyline; overwritten by U = L^T (unit) and D on the diagonal
+  std::vector<double> original_diag_;        // A_jj before the reduction, for the pivot test
   double counted_flops_ = 0;
   FactorStats stats_;
 };

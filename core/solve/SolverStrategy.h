@@ -42,6 +42,8 @@ class SolverStrategy {
   virtual const SolveStats& stats() const = 0;
   /// True when the strategy wants partitioned bodies torn into subdomain groups (feti).
   virtual bool uses_subdomains() const { return false; }
+  /// Relative accuracy of the multipliers it returns (of the largest |λ|): what decides that a multiplier is zero.
+  virtual double multiplier_tolerance() const { return 1e-10; }
   virtual const SolverOptions& options() const {
     static const SolverOptions defaults;
     return defaults;

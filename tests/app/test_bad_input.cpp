@@ -536,7 +536,7 @@ TEST(BadInputUnsolvable, ExitTwoWithAnErrorSummaryAndNoNaN) {
     const json summary = json::parse(text);
     EXPECT_EQ(summary["status"], "error");
     EXPECT_FALSE(summary.contains("results"));
-    EXPECT_NE(summary.value("error", std::string()), "");
+    EXPECT_NE(summary.value("message", std::string()), "");
     for (const char* bad : {"NaN", "nan", "Infinity", "inf", "null"})
       EXPECT_EQ(text.find(bad), std::string::npos) << bad;
     fs::remove_all(dir);

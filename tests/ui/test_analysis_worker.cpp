@@ -136,7 +136,7 @@ class TestAnalysisWorker : public QObject {
     QCOMPARE(outcome.cg_iterations, 1L);
     // the fields of that iterate: every body, finite, contact resultants from the same multipliers
     QVERIFY(outcome.results);
-    QCOMPARE(outcome.results->status, std::string("cancelled"));
+    QCOMPARE(std::string(to_string(outcome.results->status.status)), std::string("cancelled"));
     QCOMPARE(outcome.results->bodies.size(), outcome.model->bodies.size());
     for (const BodyResults& b : outcome.results->bodies) {
       QVERIFY(b.displacement.allFinite());

@@ -43,7 +43,7 @@ TEST(ContactPressure, IntegratesToTheNormalForceOfTheHertzPair) {
   const Model model = sample("cylinder-indent-2d.json");
   auto solver = make_solver("mixed", {1e-8, 1});
   const Results res = run_linear_static(model, *solver);
-  ASSERT_EQ(res.status, "converged");
+  ASSERT_EQ(to_string(res.status.status), std::string("converged"));
   ASSERT_EQ(res.contacts.size(), 1u);
   const ContactResult& c = res.contacts[0];
   EXPECT_NEAR(c.normal_force, 4.32 / 2, 0.01 * 4.32 / 2) << "the half model carries half the line force";

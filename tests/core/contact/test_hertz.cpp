@@ -34,7 +34,7 @@ Row solve_at(double h) {
   const Model model = build_model(parse_project(j.dump(), "hertz"));
   auto solver = make_solver("mixed", {1e-10, 1});
   const Results r = run_linear_static(model, *solver);
-  EXPECT_EQ(r.status, "converged");
+  EXPECT_EQ(to_string(r.status.status), std::string("converged"));
   const ContactResult& c = r.contacts.at(0);
   const double P = 2 * c.normal_force, R = 1.0, E = 1000.0, nu = 0.3;  // whole cylinder (half model)
   const double Estar = 1.0 / (2 * (1 - nu * nu) / E);

@@ -1,0 +1,17 @@
+#pragma once
+// The output folder of `rollsim run` holds one run: before a run writes, every file an earlier run wrote there
+// (summary.json, result.vtu, results.pvd and its results_NNNN.vtu, and the hidden temporaries of an interrupted
+// write) is removed, so a failed run never leaves an older result beside its own summary. Other files are kept.
+#include <filesystem>
+
+namespace rollsim {
+
+/// True for the names a run writes: summary.json, result.vtu, results.pvd, results_<digits>.vtu and `.<any of
+/// those>.tmp`.
+bool is_run_output(const std::filesystem::path& name);
+
+/// Removes the run outputs (is_run_output) directly inside `dir`; throws std::runtime_error naming a file that
+/// cannot be removed.
+void clear_run_outputs(const std::filesystem::path& dir);
+
+}  // namespace rollsim
