@@ -1,0 +1,136 @@
+// How `rollsim run` ends when it does not converge (issue: never report a failed solve as a success): the status,
+// its reason and message in summary.json, the exit code (0 only for converged), the message on stderr, no result
+// files; a near-singular stiffness refused naming the body; an output folder holding one run only.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "RunBinary.h"
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+const std::string kSamples = ROLLSIM_SOURCE_DIR "/samples/";
+
+json sample(const std::string& name) { return json::parse(read_text(kSamples + name + ".json")); }
+
+/// Writes `project` into a fresh folder and runs it with `extra` arguments into <folder>/out.
+struct ProjectRun {
+  std::string dir, out;
+  RunResult result;
+  json summary;
+};
+
+ProjectRun run_project(const json& project, const std::vector<std::string>& extra, const std::string& out = "") {
+  ProjectRun r;
+  r.dir = make_temp_dir("statuses");
+  r.out = out.empty() ? r.dir + "/out" : out;
+  write_text(r.dir + "/p.json", project.dump(1));
+  std::vector<std::string> args{"run", r.dir + "/p.json", "--out", r.out, "--quiet"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  r.result = run_rollsim(args);
+  const std::string text = read_text(r.out + "/summary.json");
+  if (!text.empty()) r.summary = json::parse(text);
+  return r;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+/// The coarse cantilever with Poisson's ratio `nu` and full integration.
+json cantilever(double nu) {
+  json j = sample("cantilever-2d-120x120");
+  j["materials"][0]["nu"] = nu;
+  auto& mesh = j["bodies"][0]["mesh"];
+  mesh["nx"] = 40, mesh["ny"] = 10, mesh["lx"] = 40.0, mesh["ly"] = 10.0;
+  j["bodies"][0]["node_sets"][0]["nearest"] = {40, 10};
+  return j;
+}
+
+}  // namespace
+
+// The reported case: a tolerance no double-precision CG can meet ended "converged" with exit 0.
+TEST(RunStatuses, CgStoppedAtRoundOffAboveTheToleranceIsNotConverged) {
+  const ProjectRun r = run_project(sample("block-indent-2d-50x30"), {"--solver", "mixed", "--cg-tolerance", "1e-300"});
+  EXPECT_EQ(r.result.exit_code, 3) << r.result.err;
+  EXPECT_EQ(r.summary.value("status", ""), "not_converged");
+  EXPECT_EQ(r.summary.value("reason", ""), "round_off");
+  EXPECT_TRUE(contains(r.summary.value("message", ""), "interface CG")) << r.summary.dump(1);
+  EXPECT_TRUE(contains(r.summary.value("message", ""), "tolerance 1e-300")) << r.summary.dump(1);
+  EXPECT_EQ(r.result.err.rfind("rollsim: not_converged: ", 0), 0u) << r.result.err;
+  EXPECT_EQ(r.result.out, "");
+  EXPECT_FALSE(r.summary.contains("results"));
+  EXPECT_EQ(list_dir(r.out), std::vector<std::string>{"summary.json"}) << "no result.vtu of a failed solve";
+  fs::remove_all(r.dir);
+}
+
+TEST(RunStatuses, ReachableCgToleranceStillConverges) {
+  const ProjectRun r = run_project(sample("block-indent-2d-50x30"), {"--solver", "mixed", "--cg-tolerance", "1e-10"});
+  EXPECT_EQ(r.result.exit_code, 0) << r.result.err;
+  EXPECT_EQ(r.summary.value("status", ""), "converged");
+  EXPECT_FALSE(r.summary.contains("reason"));
+  fs::remove_all(r.dir);
+}
+
+// The reported case: an active set still changing at its limit said "diverged" and exited 0.
+TEST(RunStatuses, ActiveSetAtItsIterationLimitIsNotConvergedWithExitThree) {
+  json j = sample("cylinder-indent-2d");  // its frictionless active set settles after several solves
+  j["analysis"] = {{"max_active_set_iterations", 1}};
+  for (const std::string solver : {"direct", "mixed"}) {
+    SCOPED_TRACE(solver);
+    const ProjectRun r = run_project(j, {"--solver", solver});
+    EXPECT_EQ(r.result.exit_code, 3) << r.result.err;
+    EXPECT_EQ(r.summary.value("status", ""), "not_converged");
+    EXPECT_EQ(r.summary.value("reason", ""), "iteration_limit");
+    EXPECT_TRUE(contains(r.summary.value("message", ""), "analysis.max_active_set_iterations")) << r.summary.dump(1);
+    EXPECT_EQ(list_dir(r.out), std::vector<std::string>{"summary.json"});
+    fs::remove_all(r.dir);
+  }
+  j["analysis"] = {{"max_active_set_iterations", 50}};
+  const ProjectRun ok = run_project(j, {"--solver", "direct"});
+  EXPECT_EQ(ok.result.exit_code, 0) << ok.result.err;
+  EXPECT_GT(ok.summary["solver"].value("active_set_iterations", 0), 1) << "the case must need more than one solve";
+  fs::remove_all(ok.dir);
+}
+
+// The reported case: ν = 0.5 − 1e-14 with full integration factored "successfully" (pivots of 1e-14 of their
+// diagonal) and returned garbage as converged.
+TEST(RunStatuses, StiffnessSingularToWorkingPrecisionIsRefusedNamingTheBody) {
+  for (const std::string solver : {"direct", "skyline", "mixed"}) {
+    SCOPED_TRACE(solver);
+    const ProjectRun r = run_project(cantilever(0.49999999999999), {"--solver", solver});
+    EXPECT_EQ(r.result.exit_code, 2) << r.result.err;
+    EXPECT_EQ(r.summary.value("status", ""), "error");
+    const std::string m = r.summary.value("message", "");
+    EXPECT_TRUE(contains(m, "singular at body 'beam', node ")) << m;
+    EXPECT_TRUE(contains(m, "of its diagonal")) << m;
+    EXPECT_TRUE(contains(m, "nearly incompressible")) << m;
+    EXPECT_EQ(list_dir(r.out), std::vector<std::string>{"summary.json"});
+    fs::remove_all(r.dir);
+  }
+  const ProjectRun ok = run_project(cantilever(0.4999), {"--solver", "direct"});  // ill-conditioned, still solvable
+  EXPECT_EQ(ok.result.exit_code, 0) << ok.result.err;
+  fs::remove_all(ok.dir);
+}
+
+// The reported case: a failed run into a folder used before left the old result.vtu beside its error summary.
+TEST(RunStatuses, OutputFolderHoldsOneRunOnly) {
+  json hertz = sample("cylinder-indent-2d");
+  hertz["analysis"] = {{"increments", 3}};
+  const ProjectRun first = run_project(hertz, {"--solver", "direct"});
+  ASSERT_EQ(first.result.exit_code, 0) << first.result.err;
+  ASSERT_TRUE(fs::exists(first.out + "/results_0003.vtu"));
+  write_text(first.out + "/notes.txt", "the user's own file");
+  hertz["analysis"] = {{"increments", 1}};  // a converged run writing fewer files
+  const ProjectRun second = run_project(hertz, {"--solver", "direct"}, first.out);
+  ASSERT_EQ(second.result.exit_code, 0) << second.result.err;
+  EXPECT_EQ(list_dir(first.out), (std::vector<std::string>{"notes.txt", "result.vtu", "summary.json"}));
+  const ProjectRun failed =
+      run_project(sample("block-indent-2d-50x30"), {"--solver", "mixed", "--cg-tolerance", "1e-300"}, first.out);
+  EXPECT_EQ(failed.result.exit_code, 3) << failed.result.err;
+  EXPECT_EQ(list_dir(first.out), (std::vector<std::string>{"notes.txt", "summary.json"}));
+  EXPECT_EQ(failed.summary.value("status", ""), "not_converged");
+  for (const ProjectRun* r : {&first, &second, &failed}) fs::remove_all(r->dir);
+}

@@ -1,0 +1,60 @@
+// The output folder holds one run: the files a run writes (and the temporaries of an interrupted write) are
+// recognised and removed before the next run writes, other files are kept; a failed atomic write leaves no
+// temporary behind.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <filesystem>
+
+#include <algorithm>
+#include <fstream>
+
+#include "io/AtomicFile.h"
+#include "io/OutputFolder.h"
+
+using namespace rollsim;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path fresh_dir(const std::string& tag) {
+  const fs::path d = fs::temp_directory_path() / ("rollsim-" + tag + "-" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+void touch(const fs::path& p) { std::ofstream(p) << "x"; }
+}  // namespace
+
+TEST(OutputFolder, RecognisesWhatARunWrites) {
+  for (const char* name : {"summary.json", "result.vtu", "results.pvd", "results_0001.vtu", "results_12345.vtu",
+                           ".summary.json.tmp", ".results_0002.vtu.tmp"})
+    EXPECT_TRUE(is_run_output(name)) << name;
+  for (const char* name : {"mesh.vtu", "notes.txt", "results_.vtu", "results_00a1.vtu", "summary.json.bak",
+                           ".notes.txt.tmp", "result.vtu.tmp", "my_results_0001.vtu"})
+    EXPECT_FALSE(is_run_output(name)) << name;
+}
+
+TEST(OutputFolder, ClearRemovesAnEarlierRunAndKeepsOtherFiles) {
+  const fs::path d = fresh_dir("clear");
+  for (const char* name :
+       {"summary.json", "result.vtu", "results.pvd", "results_0003.vtu", ".result.vtu.tmp", "notes.txt", "mesh.vtu"})
+    touch(d / name);
+  fs::create_directories(d / "results_0004.vtu");  // a folder is never removed
+  clear_run_outputs(d);
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(d)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"mesh.vtu", "notes.txt", "results_0004.vtu"}));
+  fs::remove_all(d);
+}
+
+TEST(OutputFolder, FailedAtomicWriteLeavesNoTemporary) {
+  const fs::path d = fresh_dir("atomic");
+  fs::create_directories(d / "summary.json" / "occupied");  // the rename onto a non-empty folder fails
+  EXPECT_THROW(write_file_atomically(d / "summary.json", "{}\n"), std::runtime_error);
+  EXPECT_FALSE(fs::exists(d / ".summary.json.tmp"));
+  write_file_atomically(d / "other.json", "{}\n");
+  EXPECT_TRUE(fs::exists(d / "other.json"));
+  EXPECT_FALSE(fs::exists(d / ".other.json.tmp"));
+  fs::remove_all(d);
+}
