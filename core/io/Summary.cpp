@@ -99,6 +99,7 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
                  {"ordering", st.factor.ordering},
                  {"factor_nnz", st.factor.nnz_factor},
                  {"factor_flops", st.factor.flops}};
+  if (st.factor.min_pivot_ratio > 0) s["solver"]["min_pivot_ratio"] = st.factor.min_pivot_ratio;
   if (st.cg_lambda_max > 0)
     s["solver"]["cg_eigenvalue_estimates"] = {
         {"min", st.cg_lambda_min}, {"max", st.cg_lambda_max}, {"condition", st.cg_lambda_max / st.cg_lambda_min}};

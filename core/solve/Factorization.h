@@ -17,8 +17,8 @@ struct FactorStats {
   double analyze_s = 0, factorize_s = 0, solve_s = 0;  // accumulated wall times
   long factorizations = 0;
   // smallest pivot of the last factorization relative to its column's diagonal, d_j / A_jj (positive definite
-  // factorizations; 1 until one ran): a lower bound of λ_min / λ_max, the reciprocal of the condition number
-  double min_pivot_ratio = 1;
+  // factorizations; 0: not measured): a lower bound of λ_min / λ_max, the reciprocal of the condition number
+  double min_pivot_ratio = 0;
 };
 
 /// Smallest pivot a positive definite factorization accepts, relative to its column's own diagonal. Every pivot d_j
