@@ -178,7 +178,7 @@ int run_command(const RunOptions& o) {
   RunInfo info{project.name(),         project.data.at("solver").at("mode").get<std::string>(),
                options.cg_tolerance,   options.threads,
                options.preconditioner, options.multipliers,
-               options.projector};
+               options.projector,      blas_description()};
   set_library_threads(info.threads);
   const auto dir = output_dir(project, o);
   std::error_code ec;
@@ -203,7 +203,7 @@ int run_command(const RunOptions& o) {
       if (results.load_increments > 1) write_increment_collection(dir / "results.pvd", model, results);
     }
     results.timing.total_s = wall.seconds();
-    write_file_atomically(dir / "summary.json", make_summary(model, results, solver->stats(), info).dump(2) + "\n");
+    write_file_atomically(dir / "summary.json", make_summary(model, results, info).dump(2) + "\n");
   } catch (const std::exception& e) {
     return invalid("cannot write the results into " + dir.string() + ": " + e.what());
   }

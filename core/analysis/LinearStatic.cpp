@@ -269,7 +269,8 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   }
   res.active_set_iterations = solves;
   res.multipliers = st.contact.d.size();
-  const SolveStats& ss = solver.stats();
+  res.solver = solver.stats();
+  const SolveStats& ss = res.solver;
   res.timing.analyze_s = ss.analyze_s;
   res.timing.factorize_s = ss.factorize_s;
   res.timing.solve_s = ss.solve_s;

@@ -4,9 +4,9 @@
 // displacements, stresses, reactions and contact forces.
 #include <stdexcept>
 
-#include "analysis/Observer.h"
 #include "analysis/Results.h"
 #include "model/Model.h"
+#include "solve/Observer.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {

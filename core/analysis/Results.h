@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "solve/RunStatus.h"
+#include "solve/SolveStats.h"
 
 namespace rollsim {
 
@@ -66,6 +67,7 @@ struct Results {
   int load_increments = 1;
   std::vector<IncrementResults> increments;
   Timing timing;
+  SolveStats solver;  // what the solver strategy counted over the whole run (factorizations, CG iterations, …)
 };
 
 }  // namespace rollsim

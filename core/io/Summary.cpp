@@ -4,7 +4,6 @@
 #include <set>
 
 #include "analysis/Recovery.h"
-#include "solve/Blas.h"
 
 namespace rollsim {
 
@@ -75,7 +74,8 @@ json increments_section(const Results& r) {
 }
 }  // namespace
 
-json make_summary(const Model& model, const Results& r, const SolveStats& st, const RunInfo& run) {
+json make_summary(const Model& model, const Results& r, const RunInfo& run) {
+  const SolveStats& st = r.solver;
   json factorizations = json::object();
   for (const auto& [g, n] : st.factorizations) factorizations[g] = n;
   json s = {{"status", to_string(r.status.status)},
@@ -95,7 +95,7 @@ json make_summary(const Model& model, const Results& r, const SolveStats& st, co
                  {"preconditioner", run.preconditioner},
                  {"multipliers", run.multipliers},
                  {"projector", run.projector},
-                 {"blas", blas_description()},
+                 {"blas", run.blas},
                  {"ordering", st.factor.ordering},
                  {"factor_nnz", st.factor.nnz_factor},
                  {"factor_flops", st.factor.flops}};

@@ -5,7 +5,6 @@
 
 #include "analysis/Results.h"
 #include "model/Model.h"
-#include "solve/SolverStrategy.h"
 
 namespace rollsim {
 
@@ -17,8 +16,9 @@ struct RunInfo {
   std::string preconditioner = "none";  // feti
   std::string multipliers = "nonredundant";
   std::string projector = "identity";
+  std::string blas;  // the BLAS library found at run time
 };
 
-nlohmann::json make_summary(const Model& model, const Results& results, const SolveStats& stats, const RunInfo& run);
+nlohmann::json make_summary(const Model& model, const Results& results, const RunInfo& run);
 
 }  // namespace rollsim

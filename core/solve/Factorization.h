@@ -6,20 +6,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "solve/SolveStats.h"
+
 namespace rollsim {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-
-struct FactorStats {
-  std::string ordering;                                // e.g. "RCM", "AMD", "METIS"
-  double nnz_factor = 0;                               // stored entries of L (skyline: profile incl. diagonal)
-  double flops = 0;                                    // floating-point operations of one numeric factorization
-  double analyze_s = 0, factorize_s = 0, solve_s = 0;  // accumulated wall times
-  long factorizations = 0;
-  // smallest pivot of the last factorization relative to its column's diagonal, d_j / A_jj (positive definite
-  // factorizations; 0: not measured): a lower bound of λ_min / λ_max, the reciprocal of the condition number
-  double min_pivot_ratio = 0;
-};
 
 /// Smallest pivot a positive definite factorization accepts, relative to its column's own diagonal. Every pivot d_j
 /// is at least λ_min(A) and every A_jj at most λ_max(A), so d_j / A_jj below 1e-12 means a condition number above

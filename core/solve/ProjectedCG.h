@@ -11,8 +11,8 @@
 #include <functional>
 #include <vector>
 
-#include "analysis/Observer.h"
 #include "solve/Factorization.h"
+#include "solve/Observer.h"
 #include "solve/RunStatus.h"
 
 namespace rollsim {

@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/Observer.h"
 #include "solve/BlockSystem.h"
+#include "solve/Observer.h"
+#include "solve/SolveStats.h"
 
 namespace rollsim {
 
@@ -19,17 +20,6 @@ struct SolverOptions {
   std::string multipliers = "nonredundant";  // subdomain glue: nonredundant, redundant (feti)
   std::string projector = "identity";        // metric Q of the rigid-mode projector with a preconditioner:
                                              // identity (Q = I, the paper's) or preconditioner (Q = M⁻¹)
-};
-
-struct SolveStats {
-  std::map<std::string, long> factorizations;  // per group name
-  long cg_iterations = 0;
-  int solves = 0;      // linear solves so far (the number the observer's calls carry)
-  FactorStats factor;  // of the global factor (direct strategies)
-  double analyze_s = 0, factorize_s = 0, solve_s = 0;
-  /// Extreme eigenvalues of the last interface solve's (preconditioned, projected) operator, estimated from its
-  /// CG coefficients (mixed / feti; 0 when it took fewer than 2 iterations): λ_max / λ_min ≈ condition number.
-  double cg_lambda_min = 0, cg_lambda_max = 0;
 };
 
 class SolverStrategy {
