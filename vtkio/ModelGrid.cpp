@@ -9,7 +9,7 @@
 #include <vtkPoints.h>
 #include <vtkUnstructuredGrid.h>
 
-#include "material/LinearElastic.h"
+#include "material/Material.h"
 
 namespace rollsim {
 

@@ -16,12 +16,13 @@ void recover_elements(const Body& body, BodyResults& r) {
   std::vector<int> count(static_cast<size_t>(m.num_nodes()), 0);
   typename El::Dofs ue, fe;
   std::array<typename El::Stress6, El::NGP> gp;
+  const auto material = make_material(body.material);
   for (int e = 0; e < ne; ++e) {
     const int* conn = m.element(e);
     for (int a = 0; a < El::NN; ++a)
       for (int i = 0; i < D; ++i) ue(a * D + i) = r.displacement[conn[a] * D + i];
     const auto x = element_coords<D>(m, e);
-    El::stresses_and_force(x, body.material, body.formulation, ue, gp, fe);
+    El::stresses_and_force(x, *material, body.formulation, ue, gp, fe);
     for (int a = 0; a < El::NN; ++a)
       for (int i = 0; i < D; ++i) r.nodal_force[conn[a] * D + i] += fe(a * D + i);
     for (int c = 0; c < 6; ++c) {

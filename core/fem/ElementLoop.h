@@ -17,10 +17,11 @@ typename SolidElement<D>::Coords element_coords(const Mesh& m, int e) {
 /// Calls f(e, Ke) with each element stiffness, column-major, node-major dof order.
 template <class F>
 void for_each_element_stiffness(const Body& b, F&& f) {
+  const auto material = make_material(b.material);
   auto run = [&]<int D>() {
     typename SolidElement<D>::Stiffness Ke;
     for (int e = 0; e < b.mesh.num_elements(); ++e) {
-      SolidElement<D>::stiffness(element_coords<D>(b.mesh, e), b.material, b.formulation, Ke);
+      SolidElement<D>::stiffness(element_coords<D>(b.mesh, e), *material, b.formulation, Ke);
       f(e, Ke.data());
     }
   };

@@ -93,18 +93,16 @@ bool gauss_B(const typename SolidElement<D>::Coords& x, Formulation f,
   return true;
 }
 
+/// The material's tangent in the element's strain components (plane strain: xx, yy, zz, xy).
 template <int D>
-Eigen::Matrix<double, SolidElement<D>::NS, SolidElement<D>::NS> tangent(const LinearElastic& m) {
-  if constexpr (D == 2)
-    return m.tangent_plane_strain();
-  else
-    return m.tangent3d();
+Eigen::Matrix<double, SolidElement<D>::NS, SolidElement<D>::NS> tangent(const Material& m) {
+  return m.initial_tangent().template topLeftCorner<SolidElement<D>::NS, SolidElement<D>::NS>();
 }
 
 }  // namespace
 
 template <int D>
-void SolidElement<D>::stiffness(const Coords& x, const LinearElastic& mat, Formulation f, Stiffness& Ke) {
+void SolidElement<D>::stiffness(const Coords& x, const Material& mat, Formulation f, Stiffness& Ke) {
   std::array<GaussData<D>, NGP> g;
   Ke.setZero();
   if (!gauss_B<D>(x, f, g)) return;  // inverted elements are rejected when the model is built
@@ -113,19 +111,19 @@ void SolidElement<D>::stiffness(const Coords& x, const LinearElastic& mat, Formu
 }
 
 template <int D>
-bool SolidElement<D>::stresses_and_force(const Coords& x, const LinearElastic& mat, Formulation f, const Dofs& ue,
+bool SolidElement<D>::stresses_and_force(const Coords& x, const Material& mat, Formulation f, const Dofs& ue,
                                          std::array<Stress6, NGP>& out, Dofs& fe) {
   std::array<GaussData<D>, NGP> g;
   fe.setZero();
   if (!gauss_B<D>(x, f, g)) return false;
-  const auto C = tangent<D>(mat);
+  Deformation d;  // ε in all six components (plane strain: yz = zx = 0)
+  Voigt6 stress;
+  Tangent6 C;
   for (int p = 0; p < NGP; ++p) {
-    const Eigen::Matrix<double, NS, 1> s = C * (g[p].B * ue);
-    fe.noalias() += g[p].B.transpose() * (s * g[p].dv);
-    if constexpr (D == 2)
-      out[p] = {s(0), s(1), s(2), s(3), 0.0, 0.0};
-    else
-      out[p] = {s(0), s(1), s(2), s(3), s(4), s(5)};
+    d.strain.template head<NS>() = g[p].B * ue;
+    mat.update(d, nullptr, nullptr, stress, C);
+    fe.noalias() += g[p].B.transpose() * (stress.template head<NS>() * g[p].dv);
+    for (int c = 0; c < 6; ++c) out[p][c] = stress(c);
   }
   return true;
 }

@@ -4,11 +4,9 @@
 #include <Eigen/Dense>
 #include <array>
 
-#include "material/LinearElastic.h"
+#include "material/Material.h"
 
 namespace rollsim {
-
-enum class Formulation { Full, BBar };
 
 template <int D>
 struct SolidElement {
@@ -21,11 +19,11 @@ struct SolidElement {
   using Dofs = Eigen::Matrix<double, NDOF, 1>;
   using Stress6 = std::array<double, 6>;  // xx, yy, zz, xy, yz, zx
 
-  /// Element stiffness K_e = sum_gp B^T C B det J w.
-  static void stiffness(const Coords& x, const LinearElastic& mat, Formulation f, Stiffness& Ke);
-  /// Stresses at the Gauss points for element displacements ue, and the internal force
-  /// f_e = sum_gp B^T sigma det J w; returns false if the element is inverted.
-  static bool stresses_and_force(const Coords& x, const LinearElastic& mat, Formulation f, const Dofs& ue,
+  /// Element stiffness K_e = sum_gp B^T C B det J w, C the material's initial tangent.
+  static void stiffness(const Coords& x, const Material& mat, Formulation f, Stiffness& Ke);
+  /// Stresses at the Gauss points for element displacements ue (the material's update of ε = B ue), and the
+  /// internal force f_e = sum_gp B^T sigma det J w; returns false if the element is inverted.
+  static bool stresses_and_force(const Coords& x, const Material& mat, Formulation f, const Dofs& ue,
                                  std::array<Stress6, NGP>& out, Dofs& fe);
   /// Corner-node value from Gauss-point values (bilinear/trilinear extrapolation).
   static double extrapolate_to_node(const std::array<double, NGP>& gp, int node);

@@ -1,23 +1,24 @@
 #pragma once
-// Linear isotropic elasticity (Hooke), Voigt notation with engineering shear strains.
-#include <Eigen/Dense>
+// Linear isotropic elasticity (Hooke), Voigt notation with engineering shear strains: the first Material.
+#include "material/Material.h"
 
 namespace rollsim {
 
-struct LinearElastic {
-  double E = 1.0;   // Young's modulus [stress]
-  double nu = 0.3;  // Poisson's ratio [-]
+class LinearElastic final : public Material {
+ public:
+  LinearElastic(double E, double nu) : E_(E), nu_(nu) {}
+  std::string name() const override { return "linear_elastic"; }
+  /// σ = C ε, tangent C; no state.
+  void update(const Deformation& d, const double* committed, double* trial, Voigt6& stress,
+              Tangent6& tangent) const override;
 
-  double lambda() const { return E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)); }
-  double mu() const { return E / (2.0 * (1.0 + nu)); }
-
+  double lambda() const { return E_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_)); }
+  double mu() const { return E_ / (2.0 * (1.0 + nu_)); }
   /// 6x6 constitutive matrix, Voigt order xx, yy, zz, xy, yz, zx.
-  Eigen::Matrix<double, 6, 6> tangent3d() const;
-  /// 4x4 plane-strain matrix, order xx, yy, zz, xy (eps_zz is carried for B-bar; it is 0 with full integration).
-  Eigen::Matrix<double, 4, 4> tangent_plane_strain() const;
-};
+  Tangent6 tangent3d() const;
 
-/// Von Mises equivalent stress of a 6-component stress (xx, yy, zz, xy, yz, zx).
-double von_mises(const double* s6);
+ private:
+  double E_, nu_;  // Young's modulus [stress], Poisson's ratio [-]
+};
 
 }  // namespace rollsim

@@ -6,18 +6,17 @@
 #include <string>
 #include <vector>
 
-#include "fem/SolidElement.h"
-#include "material/LinearElastic.h"
 #include "mesh/Mesh.h"
-#include "partition/Partition.h"
+#include "model/BodyPartition.h"
+#include "model/MaterialData.h"
 
 namespace rollsim {
 
 struct Body {
   std::string name;
   Mesh mesh;
-  LinearElastic material;
-  std::string material_name;
+  MaterialData material;      // its parameters (material/ makes the behaviour from them)
+  std::string material_name;  // the project's name of that material
   Formulation formulation = Formulation::Full;
   Partition partition;  // subdomains for `feti` (one subdomain: undivided)
 };

@@ -5,14 +5,9 @@
 #include <string>
 #include <vector>
 
-namespace rollsim {
+#include "model/BodyPartition.h"
 
-/// element -> subdomain id in [0, num_subdomains).
-struct Partition {
-  int num_subdomains = 1;
-  std::vector<int> element_subdomain;
-  std::string description;  // how it was made: "4x4", "metis:16", "explicit" (messages, summaries)
-};
+namespace rollsim {
 
 /// One problem of a partition, with the path of the offending entry (maps 1:1 onto the project's Issue).
 struct PartitionProblem {

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "analysis/LinearStatic.h"
+#include "material/LinearElastic.h"
 #include "mesh/StructuredBlock.h"
 #include "solve/SolverStrategy.h"
 
@@ -61,7 +62,7 @@ void check_patch(int dim, Formulation f) {
   for (int n = 0; n < mesh.num_nodes(); ++n)
     for (int c = 0; c < dim; ++c) EXPECT_NEAR(r.bodies[0].displacement[n * dim + c], field(mesh.nodes[n], c), 1e-13);
   // constant stress: sigma = lambda tr(eps) I + 2 mu eps
-  const LinearElastic& mat = m.bodies[0].material;
+  const LinearElastic mat(m.bodies[0].material.E, m.bodies[0].material.nu);
   double eps[3][3], tr = 0;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) eps[i][j] = (i < dim && j < dim) ? 0.5 * (G[i][j] + G[j][i]) : 0.0;
