@@ -1,4 +1,5 @@
 // `rollsim run`, `rollsim check` and `rollsim mesh`: project -> model (-> analysis -> results) -> writers.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "io/Summary.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
+#include "project/RunProject.h"
 #include "solve/Blas.h"
 #include "solve/Stopwatch.h"
 
@@ -37,6 +39,10 @@ class StderrProgress final : public AnalysisObserver {
   Stopwatch clock_;
 };
 
+bool is_one_of(const std::string& word, const std::vector<std::string>& words) {
+  return std::find(words.begin(), words.end(), word) != words.end();
+}
+
 int invalid(const std::string& message) {
   std::cerr << "rollsim: error: " << message << "\n";
   return 2;
@@ -54,13 +60,13 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
     solver["mode"] = *o.solver;
   }
   if (o.preconditioner) {
-    if (*o.preconditioner != "none" && *o.preconditioner != "lumped" && *o.preconditioner != "dirichlet")
-      return "--preconditioner: must be none, lumped or dirichlet, got '" + *o.preconditioner + "'";
+    if (!is_one_of(*o.preconditioner, preconditioner_names()))
+      return "--preconditioner: must be " + one_of(preconditioner_names()) + ", got '" + *o.preconditioner + "'";
     solver["preconditioner"] = *o.preconditioner;
   }
   if (o.projector) {
-    if (*o.projector != "preconditioner" && *o.projector != "identity")
-      return "--projector: must be identity or preconditioner, got '" + *o.projector + "'";
+    if (!is_one_of(*o.projector, projector_names()))
+      return "--projector: must be " + one_of(projector_names()) + ", got '" + *o.projector + "'";
     solver["projector"] = *o.projector;
   }
   if (o.cg_tolerance) {
@@ -91,26 +97,6 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
     if (*o.threads < 1 || *o.threads > 256)
       return "--threads: must be an integer in [1, 256], got " + std::to_string(*o.threads);
     solver["threads"] = *o.threads;
-  }
-  return "";
-}
-
-/// Names the first body whose results hold a NaN or an infinity (input magnitudes beyond double precision); "" if none.
-std::string non_finite_results(const Model& model, const Results& r) {
-  auto finite = [](const auto& values) {
-    for (const double v : values)
-      if (!std::isfinite(v)) return false;
-    return true;
-  };
-  for (size_t b = 0; b < r.bodies.size(); ++b) {
-    const BodyResults& br = r.bodies[b];
-    bool ok = br.displacement.allFinite() && br.nodal_force.allFinite();
-    for (const auto& s : br.element_stress) ok = ok && finite(s);
-    for (const auto& s : br.nodal_stress) ok = ok && finite(s);
-    if (!ok)
-      return "bodies[" + std::to_string(b) + "]: the results of body '" + model.bodies[b].name +
-             "' are not finite numbers: the loads, prescribed displacements, material constants or dimensions are "
-             "out of the range double precision can handle";
   }
   return "";
 }
@@ -179,19 +165,13 @@ int run_command(const RunOptions& o) {
                options.cg_tolerance,   options.threads,
                options.preconditioner, options.multipliers,
                options.projector,      blas_description()};
-  set_library_threads(info.threads);
   const auto dir = output_dir(project, o);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return invalid("cannot create output directory " + dir.string() + ": " + ec.message());
-  auto solver = make_solver(info.mode, options);
   Results results;
   try {
-    results =
-        run_linear_static(model, *solver, &progress, load_increments(project), max_active_set_iterations(project));
-    if (results.status.ok())
-      if (auto bad = non_finite_results(model, results); !bad.empty())
-        results.status = {Status::error, Reason::none, bad};
+    results = run_project(project, model, &progress);
   } catch (const AnalysisError& e) {
     results.status = {Status::error, Reason::none, e.what()};
   }

@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
   cmd_run->add_option("--threads", run.threads, "threads for factorizations");
   cmd_run->add_option("--partition", run.partition,
                       "[BODY=]SPEC: subdomains for feti, e.g. 4x4, 2x2x1, metis:16 (default body: the first)");
-  cmd_run->add_option("--preconditioner", run.preconditioner, "feti interface preconditioner: none, lumped, dirichlet");
+  cmd_run->add_option("--preconditioner", run.preconditioner,
+                      "feti interface preconditioner: " + rollsim::one_of(rollsim::preconditioner_names()));
   cmd_run->add_option("--projector", run.projector,
                       "feti rigid-mode projector with a preconditioner: identity (Q = I, the paper's), preconditioner "
                       "(Q = M^-1: fewer iterations, costlier set-up)");

@@ -5,8 +5,7 @@
 
 #include "analysis/LinearStatic.h"
 #include "project/ModelBuilder.h"
-#include "solve/Blas.h"
-#include "solve/SolverStrategy.h"
+#include "project/RunProject.h"
 
 namespace rollsim::ui {
 
@@ -133,19 +132,15 @@ void AnalysisWorker::run(const Project& project) {
     obs.on_stage("build model");
     auto model = std::make_shared<const Model>(build_model(project));
     out.model = model;
-    const SolverOptions options = solver_options(project);
-    set_library_threads(options.threads);
-    auto solver = make_solver(project.data.at("solver").at("mode").get<std::string>(), options);
     if (obs.cancel_requested()) {
       out.status = QStringLiteral("cancelled");
     } else {
-      auto results = std::make_shared<Results>(
-          run_linear_static(*model, *solver, &obs, load_increments(project), max_active_set_iterations(project)));
+      auto results = std::make_shared<Results>(run_project(project, *model, &obs));
       out.status = QString::fromUtf8(to_string(results->status.status));
       if (!results->status.ok()) out.error = QString::fromStdString(results->status.message);
       out.dofs = results->dofs;
-      out.cg_iterations = solver->stats().cg_iterations;
-      out.solves = solver->stats().solves;
+      out.cg_iterations = results->solver.cg_iterations;
+      out.solves = results->solver.solves;
       if (results->bodies.size() == model->bodies.size()) out.results = std::move(results);
     }
   } catch (const std::exception& e) {  // AnalysisError, ProjectError, std::invalid_argument: said to the user

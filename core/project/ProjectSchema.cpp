@@ -2,6 +2,7 @@
 #include "project/ProjectSchema.h"
 
 #include "project/RollingProcess.h"
+#include "project/RunProject.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {
@@ -280,13 +281,13 @@ const ObjectSchema& solver_schema() {
       "Linear solver settings.",
       {choice("mode", solver_names(), "direct", "solver strategy (see docs/ARCHITECTURE.md)"),
        def(count("threads", "threads for the factorization (BLAS) and parallel groups", 256), 1),
-       choice("preconditioner", {"none", "lumped", "dirichlet"}, "none",
+       choice("preconditioner", preconditioner_names(), "none",
               "interface preconditioner of `feti` (none: the paper's unpreconditioned projected CG)"),
-       choice("multipliers", {"nonredundant", "redundant"}, "nonredundant",
+       choice("multipliers", multiplier_names(), "nonredundant",
               "subdomain glue of `feti`: nonredundant (k − 1 constraints per dof shared by k subdomains, the paper's) "
               "or redundant (all k(k − 1)/2 pairs)"),
        choice(
-           "projector", {"identity", "preconditioner"}, "identity",
+           "projector", projector_names(), "identity",
            "metric Q of the rigid-mode projector P = I − QG(GᵀQG)⁻¹Gᵀ of `feti` with a preconditioner: identity "
            "(Q = I, the paper's; always without a preconditioner) or preconditioner (Q = M⁻¹: 15–25 % fewer "
            "iterations, but M⁻¹G costs a preconditioner solve per floating neighbour's mode, once per factorization)"),
@@ -307,7 +308,8 @@ const ObjectSchema kAnalysis{
     "How the loads are applied. The analysis is linear: every increment solves the same stiffness with the loads "
     "and prescribed displacements times its load factor i / N; frictionless contact makes the sequence meaningful "
     "(each increment's active set starts from the previous one's, so the contact zone grows with the load).",
-    {def(count("increments", "load increments N: equal proportional steps of every load and prescribed displacement",
+    {choice("type", analysis_names(), "linear", "analysis (the nonlinear layer adds Newton with plasticity)"),
+     def(count("increments", "load increments N: equal proportional steps of every load and prescribed displacement",
                1000),
          1),
      def(count("max_active_set_iterations",

@@ -4,6 +4,7 @@
 
 #include "solve/Factorization.h"
 #include "solve/Parallel.h"
+#include "solve/SolverStrategy.h"
 
 namespace rollsim {
 
@@ -175,9 +176,7 @@ std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(const std
   if (name == "none") return nullptr;
   if (name == "lumped") return std::make_unique<BlockPreconditioner>(false, threads);
   if (name == "dirichlet") return std::make_unique<BlockPreconditioner>(true, threads);
-  throw std::invalid_argument("unknown preconditioner '" + name + "' (valid: none, lumped, dirichlet)");
+  throw std::invalid_argument("unknown preconditioner '" + name + "' (valid: " + one_of(preconditioner_names()) + ")");
 }
-
-std::vector<std::string> interface_preconditioner_names() { return {"none", "lumped", "dirichlet"}; }
 
 }  // namespace rollsim

@@ -28,7 +28,5 @@ class InterfacePreconditioner {
 /// "none" gives nullptr; "lumped", "dirichlet"; anything else throws std::invalid_argument. `threads`: the groups'
 /// blocks are set up and applied concurrently (summed in group order: the result does not depend on it).
 std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(const std::string& name, int threads = 1);
-/// The names above, for validation and help.
-std::vector<std::string> interface_preconditioner_names();
 
 }  // namespace rollsim

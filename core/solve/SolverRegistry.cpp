@@ -27,6 +27,27 @@ const std::vector<StrategyInfo>& solver_registry() {
   return registry;
 }
 
+const std::vector<std::string>& preconditioner_names() {
+  static const std::vector<std::string> names{"none", "lumped", "dirichlet"};
+  return names;
+}
+
+const std::vector<std::string>& multiplier_names() {
+  static const std::vector<std::string> names{"nonredundant", "redundant"};
+  return names;
+}
+
+const std::vector<std::string>& projector_names() {
+  static const std::vector<std::string> names{"identity", "preconditioner"};
+  return names;
+}
+
+std::string one_of(const std::vector<std::string>& words) {
+  std::string s;
+  for (size_t i = 0; i < words.size(); ++i) s += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];
+  return s;
+}
+
 std::vector<std::string> solver_names() {
   std::vector<std::string> names;
   for (const auto& s : solver_registry()) names.push_back(s.name);

@@ -46,6 +46,13 @@ struct StrategyInfo {
   std::function<std::unique_ptr<SolverStrategy>(const SolverOptions&)> make;
 };
 
+/// The words of each solver option, named once: the schema, the CLI's checks and help, and the strategies read them.
+const std::vector<std::string>& preconditioner_names();  // none, lumped, dirichlet
+const std::vector<std::string>& multiplier_names();      // nonredundant, redundant
+const std::vector<std::string>& projector_names();       // identity (Q = I), preconditioner (Q = M⁻¹)
+/// "a, b or c": for messages that list the valid words.
+std::string one_of(const std::vector<std::string>& words);
+
 /// All strategies, in the order shown to users.
 const std::vector<StrategyInfo>& solver_registry();
 std::vector<std::string> solver_names();

@@ -1,0 +1,69 @@
+#include "project/RunProject.h"
+
+#include <cmath>
+
+#include "analysis/LinearStatic.h"
+#include "project/ModelBuilder.h"
+#include "solve/Blas.h"
+
+namespace rollsim {
+
+namespace {
+/// Names the first body whose results hold a NaN or an infinity (input magnitudes beyond double precision); "" if none.
+std::string non_finite_results(const Model& model, const Results& r) {
+  auto finite = [](const auto& values) {
+    for (const double v : values)
+      if (!std::isfinite(v)) return false;
+    return true;
+  };
+  for (size_t b = 0; b < r.bodies.size(); ++b) {
+    const BodyResults& br = r.bodies[b];
+    bool ok = br.displacement.allFinite() && br.nodal_force.allFinite();
+    for (const auto& s : br.element_stress) ok = ok && finite(s);
+    for (const auto& s : br.nodal_stress) ok = ok && finite(s);
+    if (!ok)
+      return "bodies[" + std::to_string(b) + "]: the results of body '" + model.bodies[b].name +
+             "' are not finite numbers: the loads, prescribed displacements, material constants or dimensions are "
+             "out of the range double precision can handle";
+  }
+  return "";
+}
+
+Results run_linear(const Project& project, const Model& model, AnalysisObserver* observer) {
+  const SolverOptions options = solver_options(project);
+  set_library_threads(options.threads);
+  const auto solver = make_solver(project.data.at("solver").at("mode").get<std::string>(), options);
+  return run_linear_static(model, *solver, observer, load_increments(project), max_active_set_iterations(project));
+}
+}  // namespace
+
+const std::vector<AnalysisInfo>& analysis_registry() {
+  static const std::vector<AnalysisInfo> registry = {
+      {"linear",
+       "small-strain linear elasticity with contact: load increments, each solved to a settled frictionless active "
+       "set",
+       run_linear},
+  };
+  return registry;
+}
+
+std::vector<std::string> analysis_names() {
+  std::vector<std::string> names;
+  for (const AnalysisInfo& a : analysis_registry()) names.push_back(a.name);
+  return names;
+}
+
+Results run_project(const Project& project, const Model& model, AnalysisObserver* observer) {
+  const auto a = project.data.find("analysis");
+  const std::string type = a == project.data.end() ? "linear" : a->value("type", "linear");
+  for (const AnalysisInfo& info : analysis_registry())
+    if (info.name == type) {
+      Results r = info.run(project, model, observer);
+      if (r.status.ok())  // never a NaN in a result: a converged run whose fields overflowed is an error
+        if (auto bad = non_finite_results(model, r); !bad.empty()) r.status = {Status::error, Reason::none, bad};
+      return r;
+    }
+  throw AnalysisError("analysis.type: no analysis named '" + type + "'");
+}
+
+}  // namespace rollsim

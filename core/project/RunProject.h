@@ -1,0 +1,33 @@
+#pragma once
+// The one run entry point: project -> (model) -> analysis -> results, called by `rollsim run`, the window's worker
+// and anything else that runs a project, so that none of them assembles the pipeline for itself. The analysis is
+// chosen by name from a registry (analysis.type: `linear` today; the nonlinear issue adds `newton`), the solver
+// strategy by name from the solver registry, with the library threads set from solver.threads.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analysis/Results.h"
+#include "model/Model.h"
+#include "project/Project.h"
+#include "solve/Observer.h"
+
+namespace rollsim {
+
+/// One kind of analysis: what it does, and how it runs a built model with the project's settings.
+struct AnalysisInfo {
+  std::string name;
+  std::string description;
+  std::function<Results(const Project&, const Model&, AnalysisObserver*)> run;
+};
+
+/// Every analysis, in the order shown to users, and their names (analysis.type).
+const std::vector<AnalysisInfo>& analysis_registry();
+std::vector<std::string> analysis_names();
+
+/// Runs `model` (built from `project` by build_model) with the project's analysis and solver, reporting to
+/// `observer` (may be null; it also carries the cancel request). Results::status says how it ended; throws
+/// AnalysisError for a model that cannot be solved as given.
+Results run_project(const Project& project, const Model& model, AnalysisObserver* observer = nullptr);
+
+}  // namespace rollsim
