@@ -10,6 +10,7 @@
 #include "contact/ContactConstraints.h"
 #include "model/DofMap.h"
 #include "solve/Stopwatch.h"
+#include "solve/UpdatePolicy.h"
 
 namespace rollsim {
 
@@ -226,6 +227,7 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   Stopwatch t;
   GroupLayout layout(model, solver.uses_subdomains(), multiplier_choice(solver.options()));
   BlockSystem& sys = layout.system();
+  mark_updated(sys, AlwaysUpdate().select(sys, {}));  // every group assembled: factored on first use, then kept
   res.dofs = sys.num_dofs();
   res.rigid_modes = sys.num_rigid_modes();
   res.subdomains = layout.subdomains();

@@ -18,7 +18,8 @@ struct Group {
   SparseMatrix K;     // free-free stiffness, both triangles stored
   Eigen::VectorXd f;  // external load plus the load of prescribed dofs
   SparseMatrix C;     // multipliers × free dofs of this group (paper's C_j / B_i); 0 × n without constraints
-  long version = 0;   // changes whenever K changes: strategies refactor a group only then
+  long version = 0;   // bumped by mark_updated (solve/UpdatePolicy) when K is re-assembled: strategies refactor
+                      // a group only then
   Eigen::MatrixXd R;  // basis of ker K_g (rigid modes left free by the supports); n × 0 when K_g is regular
 };
 

@@ -70,21 +70,15 @@ void GlobalDirect::add_times(const FactorStats& s) {
   earlier_.solve_s += s.solve_s;
 }
 
-BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver* observer) {
-  const long n = sys.num_dofs(), m = sys.num_multipliers();
-  if (kind_ == "skyline" && sys.num_rigid_modes() > 0)
-    throw std::invalid_argument("solver 'skyline' eliminates without pivoting and cannot factor a floating body (" +
-                                std::to_string(sys.num_rigid_modes()) +
-                                " rigid modes held only by contact): use 'direct' or 'mixed'");
-  const bool single = sys.groups.size() == 1 && m == 0;
-  const SparseMatrix& A = single ? sys.groups[0].K : (global_ = global_matrix(sys));
-  Eigen::VectorXd f(n + m);
-  long offset = 0;
-  for (const Group& g : sys.groups) {
-    f.segment(offset, g.f.size()) = g.f;
-    offset += g.f.size();
-  }
-  f.tail(m) = sys.d;
+bool GlobalDirect::factored(const BlockSystem& sys) const {
+  if (!factor_ || factored_versions_.size() != sys.groups.size()) return false;
+  for (size_t g = 0; g < sys.groups.size(); ++g)
+    if (factored_versions_[g] != sys.groups[g].version || !same_matrix(factored_C_[g], sys.groups[g].C)) return false;
+  return true;
+}
+
+void GlobalDirect::factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer) {
+  const long m = sys.num_multipliers();
   if (!factor_ || trailing_ != m || !same_pattern(analyzed_, A)) {  // an active-set swap changes the pattern
     if (factor_) add_times(factor_->stats());                       // a new pattern: keep what the old spent
     factor_ = make_factorization(kind_, static_cast<int>(m));
@@ -92,14 +86,38 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver* obse
     trailing_ = m;
     factor_->analyze(A);
   }
+  factored_versions_.clear();
+  factored_C_.clear();
   factor_->factorize(A);
-  const Eigen::VectorXd x = factor_->solve(f);
-  check_backward_error(A, x, f);
-  const int solve = ++stats_.solves;
   for (const Group& g : sys.groups) {
+    factored_versions_.push_back(g.version);
+    factored_C_.push_back(g.C);
     ++stats_.factorizations[g.name];
     if (observer) observer->on_factorization(g.name);
   }
+}
+
+BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver* observer) {
+  const long n = sys.num_dofs(), m = sys.num_multipliers();
+  if (kind_ == "skyline" && sys.num_rigid_modes() > 0)
+    throw std::invalid_argument("solver 'skyline' eliminates without pivoting and cannot factor a floating body (" +
+                                std::to_string(sys.num_rigid_modes()) +
+                                " rigid modes held only by contact): use 'direct' or 'mixed'");
+  const bool single = sys.groups.size() == 1 && m == 0;
+  const bool refactor = !factored(sys);  // the update policy's versions, or constraint rows that changed
+  if (refactor && !single) global_ = global_matrix(sys);
+  const SparseMatrix& A = single ? sys.groups[0].K : global_;
+  Eigen::VectorXd f(n + m);
+  long offset = 0;
+  for (const Group& g : sys.groups) {
+    f.segment(offset, g.f.size()) = g.f;
+    offset += g.f.size();
+  }
+  f.tail(m) = sys.d;
+  if (refactor) factorize(sys, A, observer);
+  const Eigen::VectorXd x = factor_->solve(f);
+  check_backward_error(A, x, f);
+  const int solve = ++stats_.solves;
   stats_.factor = factor_->stats();
   stats_.analyze_s = earlier_.analyze_s + stats_.factor.analyze_s;
   stats_.factorize_s = earlier_.factorize_s + stats_.factor.factorize_s;

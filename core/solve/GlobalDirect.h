@@ -1,6 +1,7 @@
 #pragma once
 // Strategies "skyline" and "direct": one global matrix (groups stacked on the diagonal;
-// constraint rows last once contact exists) factored by a single sparse factorization.
+// constraint rows last once contact exists) factored by a single sparse factorization — again only when a group's
+// version (the update policy) or the constraint rows changed.
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {
@@ -16,6 +17,12 @@ class GlobalDirect final : public SolverStrategy {
   std::unique_ptr<Factorization> factor_;
   SparseMatrix global_;
   void add_times(const FactorStats& s);
+  /// True when the factor belongs to `sys`: every group's version and constraint block as when it was made.
+  bool factored(const BlockSystem& sys) const;
+  /// (Re-)analyses when the pattern changed, factors A, records the versions and blocks it holds.
+  void factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer);
+  std::vector<long> factored_versions_;
+  std::vector<SparseMatrix> factored_C_;
   SparseMatrix analyzed_;  // the matrix of the last analysis: a new pattern (not only a new size) needs a new one
   long trailing_ = 0;
   FactorStats earlier_;  // times of factors replaced by a new pattern (active-set changes)
