@@ -27,6 +27,7 @@ struct DisplacementBC {
   std::string set;
   std::vector<int> nodes;
   std::array<std::optional<double>, 3> value;
+  int source = -1;  // its index in the project's boundary_conditions (for messages)
 };
 
 /// Force applied at every node of a set [force].

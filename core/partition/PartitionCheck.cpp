@@ -72,6 +72,46 @@ std::vector<PartitionProblem> check_partition(const Mesh& mesh, const Partition&
   return out;
 }
 
+namespace {
+/// The subdomain id of a "<path>.subdomains[<id>]" path, or −1.
+long subdomain_of(const std::string& path) {
+  const auto open = path.rfind(".subdomains[");
+  return open == std::string::npos ? -1 : std::stol(path.substr(open + 12));
+}
+
+/// A problem's class: its message without the numbers in it.
+std::string class_of(const std::string& message) {
+  std::string key;
+  for (char c : message)
+    if (c < '0' || c > '9') key += c;
+  return key;
+}
+}  // namespace
+
+std::vector<PartitionProblem> one_per_class(const std::vector<PartitionProblem>& problems) {
+  std::vector<PartitionProblem> out;
+  std::map<std::string, std::pair<size_t, std::vector<long>>> classes;  // class -> (index in out, subdomain ids)
+  for (const PartitionProblem& p : problems) {
+    const long s = subdomain_of(p.path);
+    if (s < 0) {
+      out.push_back(p);
+      continue;
+    }
+    auto [it, first] = classes.try_emplace(class_of(p.message), out.size(), std::vector<long>{});
+    it->second.second.push_back(s);
+    if (first) out.push_back(p);
+  }
+  for (const auto& [key, where] : classes) {
+    const std::vector<long>& ids = where.second;
+    if (ids.size() < 2) continue;
+    std::string list;
+    for (size_t i = 1; i < ids.size() && i < 6; ++i) list += (i == 1 ? "" : ", ") + std::to_string(ids[i]);
+    out[where.first].message +=
+        " (so do subdomains " + list + (ids.size() > 6 ? ", …" : "") + ": " + std::to_string(ids.size()) + " in all)";
+  }
+  return out;
+}
+
 std::vector<std::string> split_disconnected(const Mesh& mesh, Partition& p) {
   std::vector<std::string> warnings;
   const auto pieces = subdomain_pieces(mesh, p);

@@ -15,6 +15,11 @@ namespace rollsim {
 std::vector<PartitionProblem> check_partition(const Mesh& mesh, const Partition& p,
                                               const std::string& path = "partition");
 
+/// One problem per class (empty subdomains, subdomains of several pieces, …): the first of each, saying which other
+/// subdomains share it and how many in all — for messages, where a 400-subdomain mistake must not print 400 lines.
+/// Problems that name no subdomain are kept as they are.
+std::vector<PartitionProblem> one_per_class(const std::vector<PartitionProblem>& problems);
+
 /// The facet-connected pieces of every subdomain (element lists), largest first.
 std::vector<std::vector<std::vector<int>>> subdomain_pieces(const Mesh& mesh, const Partition& p);
 

@@ -80,6 +80,24 @@ std::string to_string(const PartitionSpec& spec) {
   return spec.axes == 3 ? s + "x" + std::to_string(spec.slices[2]) : s;
 }
 
+std::string oversized_partition(const Mesh& mesh, const PartitionSpec& spec) {
+  const long long elements = mesh.num_elements();
+  if (spec.kind == PartitionKind::Explicit) {
+    for (size_t e = 0; e < spec.map.size(); ++e)
+      if (spec.map[e] >= elements)
+        return "element " + std::to_string(e) + " has subdomain id " + std::to_string(spec.map[e]) +
+               ", but ids must be below the number of elements (" + std::to_string(elements) +
+               "): every subdomain needs at least one element";
+    return "";
+  }
+  long long asked = spec.kind == PartitionKind::Metis ? spec.parts : 1;
+  if (spec.kind == PartitionKind::Structured)
+    for (int a = 0; a < spec.axes; ++a) asked *= spec.slices[a];  // ≤ (2^31)^3: no overflow in 64 bits
+  if (asked <= elements) return "";
+  return "'" + to_string(spec) + "' asks for " + std::to_string(asked) + " subdomains, but the body has only " +
+         std::to_string(elements) + " elements: every subdomain needs at least one";
+}
+
 Partition make_partition(const Mesh& mesh, const PartitionSpec& spec) {
   if (spec.kind == PartitionKind::Structured) return structured_partition(mesh, spec.slices);
   if (spec.kind == PartitionKind::Metis) return metis_partition(mesh, spec.parts);

@@ -27,6 +27,10 @@ PartitionSpec parse_partition_spec(const std::string& text);
 /// The spelling parse_partition_spec reads back ("explicit" for a map).
 std::string to_string(const PartitionSpec& spec);
 
+/// "" when `spec` asks for no more subdomains than `mesh` has elements (each needs one), else why not — checked in
+/// 64 bits before anything is allocated (a "40000x40000" or an explicit id of 1e6 on a small body).
+std::string oversized_partition(const Mesh& mesh, const PartitionSpec& spec);
+
 /// The partition a spec asks for on this mesh (not yet validated: see check_partition).
 Partition make_partition(const Mesh& mesh, const PartitionSpec& spec);
 

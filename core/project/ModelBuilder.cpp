@@ -9,6 +9,8 @@
 #include "partition/PartitionCheck.h"
 #include "partition/PartitionSpec.h"
 #include "project/MeshFactory.h"
+#include "project/ModelLimits.h"
+#include "project/PrescribedConflicts.h"
 #include "project/ProjectSchema.h"
 #include "project/RollingProcess.h"
 
@@ -199,6 +201,8 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
     issues.push_back({"bodies", "the meshes would have " + std::to_string(static_cast<long long>(elements)) +
                                     " elements, more than this build accepts (" +
                                     std::to_string(static_cast<long long>(kMaxElements)) + ")"});
+  else
+    check_model_limits(elements, dim, "bodies", issues);
   if (!issues.empty()) return;
   for (size_t i = 0; i < d.at("boundary_conditions").size(); ++i)
     check_condition(d["boundary_conditions"][i], at("boundary_conditions", i), d.at("bodies"), dim, issues);
@@ -263,7 +267,7 @@ void add_user_sets(Mesh& m, const json& sets, const std::string& path, std::vect
   }
 }
 
-void add_condition(Model& model, const json& bc, const json& bodies) {
+void add_condition(Model& model, const json& bc, const json& bodies, int source) {
   const int b = find_named(bodies, bc.at("body").get<std::string>());
   const Mesh& m = model.bodies[static_cast<size_t>(b)].mesh;
   const auto type = bc.at("type").get<std::string>();
@@ -280,7 +284,7 @@ void add_condition(Model& model, const json& bc, const json& bodies) {
     model.forces.push_back(std::move(f));
     return;
   }
-  DisplacementBC d{b, set, nodes, {}};
+  DisplacementBC d{b, set, nodes, {}, source};
   if (type == "symmetry") {
     d.value[bc.at("normal").get<std::string>()[0] - 'x'] = 0.0;
   } else {
@@ -299,7 +303,10 @@ Partition body_partition(const json& jb, const Mesh& mesh, const std::string& pa
     spec = parse_partition_spec(jb.at("partition").get<std::string>());
   } else if (jb.contains("partition_map")) {
     spec.kind = PartitionKind::Explicit;
-    for (const auto& v : jb.at("partition_map")) spec.map.push_back(static_cast<int>(v.get<double>()));
+    for (const auto& v : jb.at("partition_map")) {  // beyond int: out of range, said by oversized_partition
+      const double id = v.get<double>();
+      spec.map.push_back(id >= 0 && id < 2147483647.0 ? static_cast<int>(id) : std::numeric_limits<int>::max());
+    }
     where = path + ".partition_map";
   } else {
     Partition whole;
@@ -307,9 +314,15 @@ Partition body_partition(const json& jb, const Mesh& mesh, const std::string& pa
     whole.description = "1";
     return whole;
   }
+  if (const std::string too_many = oversized_partition(mesh, spec); !too_many.empty()) {
+    issues.push_back({where, too_many});
+    Partition whole;
+    whole.element_subdomain.assign(static_cast<size_t>(mesh.num_elements()), 0);
+    return whole;
+  }
   Partition p = make_partition(mesh, spec);
   const auto report = [&](const std::vector<PartitionProblem>& problems) {
-    for (const auto& problem : problems) {
+    for (const auto& problem : one_per_class(problems)) {
       std::string at_path = problem.path;  // "<where>.map[…]" of an explicit map is "<path>.partition_map[…]"
       if (at_path.rfind(where + ".map", 0) == 0) at_path = where + at_path.substr(where.size() + 4);
       issues.push_back({at_path, problem.message});
@@ -399,7 +412,10 @@ Model build_model(const Project& project) {
     model.bodies.push_back(std::move(body));
   }
   if (!issues.empty()) throw ProjectError(project.source, issues);
-  for (const auto& bc : d.at("boundary_conditions")) add_condition(model, bc, d.at("bodies"));
+  const json& conditions = d.at("boundary_conditions");
+  for (size_t i = 0; i < conditions.size(); ++i)
+    add_condition(model, conditions[i], d.at("bodies"), static_cast<int>(i));
+  for (Issue& conflict : prescribed_conflicts(model)) issues.push_back(std::move(conflict));
   add_contacts(model, d);
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     if (in_contact(d, model.bodies[b].name)) continue;  // a floating body: the contact must hold it
