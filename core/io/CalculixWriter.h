@@ -1,6 +1,6 @@
 #pragma once
 // CalculiX (.inp) input for the same model — same mesh, elements (CPE4 / C3D8), materials,
-// supports, nodal forces and pressures — so results and run time can be compared with a peer FE code.
+// supports, nodal forces, pressures and 3D contact pairs — so results and run time can be compared with a peer FE code.
 #include <string>
 
 #include "model/Model.h"
@@ -11,7 +11,8 @@ namespace rollsim {
 std::string calculix_set_name(const Model& model, int body, const std::string& set);
 
 /// The whole .inp: node ids are our node index + 1 (bodies numbered one after the other), element ids likewise.
-/// Throws std::invalid_argument for what has no CalculiX equivalent (the B-bar formulation).
+/// Contact pairs: tied -> *TIE, frictionless -> node-to-surface *CONTACT PAIR with a stiff linear penalty (3D).
+/// Throws std::invalid_argument for what has no CalculiX equivalent (the B-bar formulation; contact in 2D).
 std::string calculix_input(const Model& model);
 
 }  // namespace rollsim

@@ -137,3 +137,19 @@ TEST(ContactInput, FloatingBlockSolvesUnderDirectMixedAndFeti) {
   EXPECT_NEAR(fy[2], fy[0], 1e-8);
   fs::remove_all(dir);
 }
+
+// export-ccx wrote a 2D contact project as unconnected bodies with exit 0; now it refuses (exit 2, the pair named,
+// no file), and a 3D contact project is written with its pair.
+TEST(ContactInput, ExportCcxRefuses2DContactAndWrites3DPairs) {
+  const std::string dir = make_temp_dir("export");
+  const RunResult two =
+      run_rollsim({"export-ccx", ROLLSIM_SOURCE_DIR "/samples/block-indent-2d-50x30.json", dir + "/two.inp"});
+  EXPECT_EQ(two.exit_code, 2) << two.err;
+  EXPECT_NE(two.err.find("contacts[0] ('block-base')"), std::string::npos) << two.err;
+  EXPECT_EQ(list_dir(dir), std::vector<std::string>{}) << "nothing written";
+  const RunResult three =
+      run_rollsim({"export-ccx", ROLLSIM_SOURCE_DIR "/samples/block-indent-3d-10x6x4.json", dir + "/three.inp"});
+  EXPECT_EQ(three.exit_code, 0) << three.err;
+  EXPECT_NE(read_text(dir + "/three.inp").find("\n*TIE, NAME=T_BLOCK_BASE"), std::string::npos);
+  fs::remove_all(dir);
+}
