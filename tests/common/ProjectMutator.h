@@ -8,7 +8,8 @@
 
 namespace fuzz {
 
-/// Small valid projects (tens of elements, so that solving a mutant is cheap): 2D and 3D, every mesh generator.
+/// Small valid projects (tens of elements, so that solving a mutant is cheap): 2D and 3D, every mesh generator, and
+/// partitioned bodies (a structured spelling and an explicit map) under feti.
 inline const char* kSeeds[] = {
     R"({"dimension": 2, "materials": [{"name": "m", "E": 1000, "nu": 0.3}],
  "bodies": [{"name": "b", "material": "m", "formulation": "bbar",
@@ -38,12 +39,23 @@ inline const char* kSeeds[] = {
   {"type": "displacement", "body": "c", "set": "inner", "ux": 0, "uy": 0, "uz": 0},
   {"type": "force", "body": "b", "set": "edge", "fz": -1}, {"type": "pressure", "body": "c", "surface": "outer",
    "value": 2}],
- "solver": {"mode": "direct"}, "probes": [{"name": "A", "at": [2, 2, 2]}], "output": {"vtu": true}})"};
+ "solver": {"mode": "direct"}, "probes": [{"name": "A", "at": [2, 2, 2]}], "output": {"vtu": true}})",
+    R"({"dimension": 2, "name": "fuzzfeti", "materials": [{"name": "m", "E": 1000, "nu": 0.3}],
+ "bodies": [{"name": "b", "material": "m", "mesh": {"type": "block", "nx": 6, "ny": 4, "lx": 6, "ly": 4},
+   "partition": "3x2"},
+  {"name": "q", "material": "m", "mesh": {"type": "block", "nx": 4, "ny": 3, "lx": 4, "ly": 3, "origin": [0, 6]},
+   "partition_map": [0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 2, 2]}],
+ "boundary_conditions": [{"type": "displacement", "body": "b", "set": "xmin", "ux": 0, "uy": 0},
+  {"type": "displacement", "body": "q", "set": "xmin", "ux": 0, "uy": 0},
+  {"type": "force", "body": "b", "set": "xmax", "fy": -1}, {"type": "force", "body": "q", "set": "xmax", "fx": 1}],
+ "solver": {"mode": "feti", "preconditioner": "dirichlet"}, "output": {"vtu": true}})"};
 
 /// Values swapped in for any node of the tree: extremes, wrong types, names that exist elsewhere.
-inline const char* kTokens[] = {"-1",    "0",     "1e308",     "-1e308", "1e-308", "5e-324", "2147483648", "4294967297",
-                                "1e6",   "1000",  "0.5",       "-0.0",   "3",      "\"\"",   "\"x\"",      "\"all\"",
-                                "\"b\"", "\"m\"", "\"block\"", "null",   "true",   "[]",     "{}",         "[1,2,3]"};
+inline const char* kTokens[] = {"-1", "0", "1e308", "-1e308", "1e-308", "5e-324", "2147483648", "4294967297", "1e6",
+                                "1000", "0.5", "-0.0", "3", "\"\"", "\"x\"", "\"all\"", "\"b\"", "\"m\"", "\"block\"",
+                                "null", "true", "[]", "{}", "[1,2,3]",
+                                // partitions: more subdomains than elements, 32-bit overflow, METIS extremes
+                                "\"400x400\"", "\"65536x65536\"", "\"metis:0\"", "\"metis:1000000\"", "\"1x1x1\""};
 
 /// Text spliced in anywhere: literals JSON forbids, numbers beyond double, unbalanced brackets.
 inline const char* kSplices[] = {"NaN", "Infinity", "-Infinity", "1e400", "-1e400", "\"", ",", "}", "]", "\\u0000"};
