@@ -205,6 +205,20 @@ class TestAnalysisWorker : public QObject {
     QVERIFY(!outcome.error.isEmpty());
   }
 
+  void not_converged_is_reported_with_its_reason_and_no_fields() {
+    AnalysisWorker worker;
+    QSignalSpy finished(&worker, &AnalysisWorker::finished);
+    Project p = sample("block-indent-2d-50x30.json");
+    p.data["solver"]["mode"] = "mixed";
+    p.data["solver"]["cg_tolerance"] = 1e-300;  // below round-off: the CG cannot get there
+    QVERIFY(worker.start(p));
+    QVERIFY(finished.wait(60000));
+    const auto outcome = finished.at(0).at(0).value<RunOutcome>();
+    QCOMPARE(outcome.status, QStringLiteral("not_converged"));
+    QVERIFY2(outcome.error.contains(QStringLiteral("round-off")), qPrintable(outcome.error));
+    QVERIFY(!outcome.results);  // nothing to colour the view with
+  }
+
   void destroying_a_running_worker_cancels_and_joins() {
     auto worker = std::make_unique<AnalysisWorker>();
     QVERIFY(worker->start(sample("plate-hole-2d.json")));
