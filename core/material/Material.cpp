@@ -8,9 +8,13 @@
 namespace rollsim {
 
 Tangent6 Material::initial_tangent() const {
-  std::vector<double> committed(static_cast<size_t>(state_size()), 0.0), trial(committed.size());
   Voigt6 stress;
   Tangent6 tangent;
+  if (state_size() == 0) {  // no state to start from (called once per element: no allocation)
+    update(Deformation{}, nullptr, nullptr, stress, tangent);
+    return tangent;
+  }
+  std::vector<double> committed(static_cast<size_t>(state_size()), 0.0), trial(committed.size());
   update(Deformation{}, committed.data(), trial.data(), stress, tangent);
   return tangent;
 }
