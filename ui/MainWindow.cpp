@@ -316,7 +316,7 @@ void MainWindow::run_finished(const RunOutcome& o) {
 
 void MainWindow::show_results_view() {
   if (view_->has_results()) {
-    view_->set_color_by(ColorBy::Displacement);
+    view_->set_color_by(color_by::Displacement);
     view_->set_deformation_scale(0);
   }
   view_bar_->refresh();

@@ -39,6 +39,7 @@
 #include "ModelGrid.h"
 #include "PvdWriter.h"
 #include "VtuWriter.h"
+#include "io/OutputFields.h"
 
 namespace rollsim::ui {
 
@@ -200,28 +201,22 @@ void MeshView::rebuild_grid() {
 }
 
 namespace {
-/// The point array a result colouring shows ("" for the categorical ones).
-const char* result_array(ColorBy mode) {
-  switch (mode) {
-    case ColorBy::Displacement:
-      return "displacement";
-    case ColorBy::VonMises:
-      return "von_mises";
-    case ColorBy::ContactPressure:
-      return "contact_pressure";
-    default:
-      return "";
-  }
+/// The colourable node field of the output registry named `mode` (null for the categorical colourings).
+const OutputField* result_field(const ColorBy& mode) {
+  for (const OutputField& f : output_fields())
+    if (f.colourable && f.location == FieldLocation::Node && QString::fromStdString(f.name) == mode) return &f;
+  return nullptr;
 }
 }  // namespace
 
-bool MeshView::can_color_by(ColorBy mode) const {
-  const char* array = result_array(mode);
-  return !*array || (results_ && grid_ && grid_->GetPointData()->GetArray(array));
+bool MeshView::can_color_by(const ColorBy& mode) const {
+  if (mode == color_by::Body || mode == color_by::Subdomain) return true;
+  const OutputField* f = result_field(mode);
+  return f && results_ && grid_ && grid_->GetPointData()->GetArray(f->name.c_str());
 }
 
-void MeshView::set_color_by(ColorBy mode) {
-  if (!can_color_by(mode)) mode = ColorBy::Body;
+void MeshView::set_color_by(const ColorBy& requested) {
+  const ColorBy mode = can_color_by(requested) ? requested : color_by::Body;
   const bool changed = mode != color_by_;
   color_by_ = mode;
   if (grid_) apply_coloring();
@@ -230,10 +225,10 @@ void MeshView::set_color_by(ColorBy mode) {
 
 void MeshView::apply_coloring() {
   if (!grid_) return;
-  if (!can_color_by(color_by_)) color_by_ = ColorBy::Body;
+  if (!can_color_by(color_by_)) color_by_ = color_by::Body;
   legend_->VisibilityOn();
-  if (color_by_ == ColorBy::Body || color_by_ == ColorBy::Subdomain) {
-    const bool body = color_by_ == ColorBy::Body;
+  if (color_by_ == color_by::Body || color_by_ == color_by::Subdomain) {
+    const bool body = color_by_ == color_by::Body;
     int n = 1;
     if (body) {
       n = static_cast<int>(model_->bodies.size());
@@ -271,11 +266,11 @@ void MeshView::apply_coloring() {
     legend_->SetDrawTickLabels(named ? 0 : 1);
     legend_->SetLabelFormat("%-.0f");
   } else {
-    const bool disp = color_by_ == ColorBy::Displacement;
-    const char* name = result_array(color_by_);
+    const OutputField& field = *result_field(color_by_);
+    const char* name = field.name.c_str();
     vtkDataArray* a = grid_->GetPointData()->GetArray(name);
     double range[2] = {0, 1};
-    if (a) a->GetRange(range, disp ? -1 : 0);  // component -1: the magnitude of the vectors
+    if (a) a->GetRange(range, field.components > 1 ? -1 : 0);  // component -1: the magnitude of the vectors
     if (!(range[1] > range[0])) range[1] = range[0] + 1e-30;
     continuous_->SetVectorModeToMagnitude();
     continuous_->SetRange(range[0], range[1]);
@@ -285,7 +280,7 @@ void MeshView::apply_coloring() {
     mapper_->SetScalarRange(range[0], range[1]);
     mapper_->ScalarVisibilityOn();
     legend_->SetLookupTable(continuous_);
-    legend_->SetTitle(disp ? "|u|" : color_by_ == ColorBy::VonMises ? "von Mises" : "contact p");
+    legend_->SetTitle(field.legend.c_str());
     legend_->SetDrawAnnotations(0);
     legend_->SetDrawTickLabels(1);
     legend_->SetLabelFormat("%-#8.3g");
@@ -499,10 +494,10 @@ void MeshView::set_partition(int body, const std::vector<int>& map) {
     sub->Modified();
     grid_->Modified();  // the warp and surface filters pass the new ids to the mapper
   }
-  if (color_by_ == ColorBy::Subdomain)
+  if (color_by_ == color_by::Subdomain)
     apply_coloring();
   else
-    set_color_by(ColorBy::Subdomain);
+    set_color_by(color_by::Subdomain);
 }
 
 bool MeshView::recolour_faces(vtkIntArray& cell_ids) {

@@ -32,7 +32,16 @@ class QRubberBand;
 
 namespace rollsim::ui {
 
-enum class ColorBy { Body, Subdomain, Displacement, VonMises, ContactPressure };
+/// What the view is coloured by: "body", "subdomain" (categorical) or the name of a colourable node field of the
+/// output registry (io/OutputFields) — the toolbar lists them from there, so a new field needs no code here.
+using ColorBy = QString;
+namespace color_by {
+inline const ColorBy Body = QStringLiteral("body");
+inline const ColorBy Subdomain = QStringLiteral("subdomain");
+inline const ColorBy Displacement = QStringLiteral("displacement");
+inline const ColorBy VonMises = QStringLiteral("von_mises");
+inline const ColorBy ContactPressure = QStringLiteral("contact_pressure");
+}  // namespace color_by
 
 /// The categorical colour of body / subdomain `i` in the view (Tableau 10, repeating).
 QColor category_color(int i);
@@ -66,8 +75,8 @@ class MeshView : public QVTKOpenGLNativeWidget {
 
   /// Displacement, von Mises and contact pressure need results (contact pressure a model with contacts);
   /// without them the view falls back to bodies.
-  void set_color_by(ColorBy mode);
-  bool can_color_by(ColorBy mode) const;
+  void set_color_by(const ColorBy& mode);
+  bool can_color_by(const ColorBy& mode) const;
   ColorBy color_by() const { return color_by_; }
   /// Displacement magnification of the deformed shape (0: undeformed).
   void set_deformation_scale(double scale);
@@ -102,7 +111,7 @@ class MeshView : public QVTKOpenGLNativeWidget {
   void set_partition(int body, const std::vector<int>& map);
 
  signals:
-  void colorByChanged(rollsim::ui::ColorBy mode);
+  void colorByChanged(const QString& mode);
   /// Another increment is shown (set_increment, or new results).
   void incrementChanged(int index);
   /// A paint step on the paint body: `elements` under the brush or in the box; `stroke` groups the steps of one
@@ -143,7 +152,7 @@ class MeshView : public QVTKOpenGLNativeWidget {
   vtkSmartPointer<vtkUnstructuredGrid> grid_;
   std::shared_ptr<const Model> model_;
   std::shared_ptr<const Results> results_;
-  ColorBy color_by_ = ColorBy::Body;
+  ColorBy color_by_ = color_by::Body;
   int increment_ = -1;
   double scale_ = 0;
   std::array<double, 6> shown_bounds_{0, 0, 0, 0, 0, 0};
@@ -159,5 +168,4 @@ class MeshView : public QVTKOpenGLNativeWidget {
 
 }  // namespace rollsim::ui
 
-Q_DECLARE_METATYPE(rollsim::ui::ColorBy)
 Q_DECLARE_METATYPE(std::vector<int>)

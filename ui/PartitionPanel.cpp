@@ -145,7 +145,7 @@ void PartitionPanel::choose_tool(int tool) {
 
 void PartitionPanel::map_changed() {
   refresh_bodies();
-  if (view_->paint_tool() != PaintTool::Camera || view_->color_by() == ColorBy::Subdomain)
+  if (view_->paint_tool() != PaintTool::Camera || view_->color_by() == color_by::Subdomain)
     view_->set_partition(editor_->body(), editor_->map());
   table_->show_map(editor_->model(), editor_->body(), editor_->map());
 }

@@ -9,6 +9,8 @@
 #include <QStandardItemModel>
 #include <algorithm>
 
+#include "io/OutputFields.h"
+
 namespace rollsim::ui {
 
 ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"), parent), view_(view) {
@@ -16,11 +18,11 @@ ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"),
   addWidget(new QLabel(tr(" Colour by ")));
   color_ = new QComboBox;
   color_->setObjectName(QStringLiteral("colorBy"));
-  color_->addItem(tr("body"), QVariant::fromValue(ColorBy::Body));
-  color_->addItem(tr("subdomain"), QVariant::fromValue(ColorBy::Subdomain));
-  color_->addItem(tr("displacement |u|"), QVariant::fromValue(ColorBy::Displacement));
-  color_->addItem(tr("von Mises stress"), QVariant::fromValue(ColorBy::VonMises));
-  color_->addItem(tr("contact pressure"), QVariant::fromValue(ColorBy::ContactPressure));
+  color_->addItem(tr("body"), color_by::Body);
+  color_->addItem(tr("subdomain"), color_by::Subdomain);
+  for (const OutputField& f : output_fields())  // the results the view can show, from the output registry
+    if (f.colourable && f.location == FieldLocation::Node)
+      color_->addItem(QString::fromStdString(f.label), QString::fromStdString(f.name));
   addWidget(color_);
   addSeparator();
   deformed_ = new QCheckBox(tr("deformed ×"));
@@ -44,7 +46,7 @@ ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"),
   addAction(tr("Reset camera"), view_, &MeshView::reset_camera);
 
   connect(color_, QOverload<int>::of(&QComboBox::activated), this,
-          [this](int i) { view_->set_color_by(color_->itemData(i).value<ColorBy>()); });
+          [this](int i) { view_->set_color_by(color_->itemData(i).toString()); });
   connect(view_, &MeshView::colorByChanged, this, &ViewToolBar::refresh);
   auto apply = [this] { view_->set_deformation_scale(deformed_->isChecked() ? scale_->value() : 0.0); };
   connect(deformed_, &QCheckBox::toggled, this, apply);
@@ -59,9 +61,9 @@ void ViewToolBar::refresh() {
   const bool results = view_->has_results();
   auto* items = qobject_cast<QStandardItemModel*>(color_->model());
   for (int i = 0; i < color_->count() && items; ++i)
-    items->item(i)->setEnabled(view_->can_color_by(color_->itemData(i).value<ColorBy>()));
+    items->item(i)->setEnabled(view_->can_color_by(color_->itemData(i).toString()));
   for (int i = 0; i < color_->count(); ++i)
-    if (color_->itemData(i).value<ColorBy>() == view_->color_by()) color_->setCurrentIndex(i);
+    if (color_->itemData(i).toString() == view_->color_by()) color_->setCurrentIndex(i);
   deformed_->setEnabled(results);
   scale_->setEnabled(results);
   const int count = view_->increment_count();

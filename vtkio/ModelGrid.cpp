@@ -9,7 +9,7 @@
 #include <vtkPoints.h>
 #include <vtkUnstructuredGrid.h>
 
-#include "material/Material.h"
+#include "io/OutputFields.h"
 
 namespace rollsim {
 
@@ -30,41 +30,36 @@ vtkNew<vtkIntArray> int_array(const char* name, vtkIdType tuples) {
   return a;
 }
 
+/// One array per registered output field (io/OutputFields), filled body by body; point data also carries body_id.
 void add_results(vtkUnstructuredGrid* grid, const Model& model, const std::vector<BodyResults>& fields) {
   const vtkIdType np = model.total_nodes(), nc = model.total_elements();
-  auto u = array("displacement", 3, np), sp = array("stress", 6, np), vp = array("von_mises", 1, np);
-  auto sc = array("stress", 6, nc), vc = array("von_mises", 1, nc);
+  for (const OutputField& f : output_fields()) {
+    if (!is_present(f, model)) continue;
+    const bool at_nodes = f.location == FieldLocation::Node;
+    auto a = array(f.name.c_str(), f.components, at_nodes ? np : nc);
+    double v[6];
+    vtkIdType i = 0;
+    for (size_t b = 0; b < model.bodies.size(); ++b) {
+      const Mesh& m = model.bodies[b].mesh;
+      for (int k = 0; k < (at_nodes ? m.num_nodes() : m.num_elements()); ++k, ++i) {
+        f.value(model, b, fields[b], k, v);
+        a->SetTuple(i, v);
+      }
+    }
+    vtkDataSetAttributes* where = at_nodes ? static_cast<vtkDataSetAttributes*>(grid->GetPointData())
+                                           : static_cast<vtkDataSetAttributes*>(grid->GetCellData());
+    where->AddArray(a);
+    if (at_nodes && f.components == 3 && f.name == "displacement") grid->GetPointData()->SetVectors(a);
+  }
   auto body_pt = int_array("body_id", np);
-  const bool contact = !model.contacts.empty();  // the array exists whenever the model has contact pairs
-  auto cp = array("contact_pressure", 1, contact ? np : 0);
   vtkDataArray* sub = grid->GetCellData()->GetArray("subdomain_id");
   vtkIdType pn = 0, cn = 0;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
-    const Mesh& m = model.bodies[b].mesh;
-    const BodyResults& br = fields[b];
-    for (int n = 0; n < m.num_nodes(); ++n, ++pn) {
-      double d[3] = {0, 0, 0};
-      for (int c = 0; c < m.dim; ++c) d[c] = br.displacement[n * m.dim + c];
-      u->SetTuple(pn, d);
-      sp->SetTuple(pn, br.nodal_stress[n].data());
-      vp->SetValue(pn, von_mises(br.nodal_stress[n].data()));
-      body_pt->SetValue(pn, static_cast<int>(b));
-      if (contact) cp->SetValue(pn, n < br.contact_pressure.size() ? br.contact_pressure[n] : 0.0);
-    }
-    for (int e = 0; e < m.num_elements(); ++e, ++cn) {
-      sc->SetTuple(cn, br.element_stress[e].data());
-      vc->SetValue(cn, von_mises(br.element_stress[e].data()));
-      if (static_cast<size_t>(e) < br.subdomain.size()) sub->SetTuple1(cn, br.subdomain[e]);
-    }
+    for (int n = 0; n < model.bodies[b].mesh.num_nodes(); ++n, ++pn) body_pt->SetValue(pn, static_cast<int>(b));
+    for (int e = 0; e < model.bodies[b].mesh.num_elements(); ++e, ++cn)
+      if (static_cast<size_t>(e) < fields[b].subdomain.size()) sub->SetTuple1(cn, fields[b].subdomain[e]);
   }
-  grid->GetPointData()->AddArray(u);
-  grid->GetPointData()->SetVectors(u);
-  grid->GetPointData()->AddArray(sp);
-  grid->GetPointData()->AddArray(vp);
   grid->GetPointData()->AddArray(body_pt);
-  if (contact) grid->GetPointData()->AddArray(cp);
-  grid->GetCellData()->AddArray(sc);
-  grid->GetCellData()->AddArray(vc);
 }
 
 }  // namespace

@@ -12,9 +12,9 @@ namespace rollsim {
 
 /// Cells of every body stacked in body order (Q4 -> VTK_QUAD, H8 -> VTK_HEXAHEDRON), nodes offset per body.
 /// Cell data always: body_id, subdomain_id (the body's partition, 0 when undivided).
-/// With results, point data: displacement (3 components; the active vectors), stress (6, nodal average),
-/// von_mises, body_id, and contact_pressure when the model has contact pairs (Results: f·n / tributary measure on
-/// slave nodes, 0 elsewhere); cell data: stress (element mean), von_mises, and subdomain_id from the results.
+/// With results: one array per field of the output registry (io/OutputFields: displacement — the active vectors —,
+/// nodal stress, von_mises, contact_pressure with contact pairs; element stress and von_mises), point body_id, and
+/// subdomain_id from the results.
 vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const Results* results = nullptr);
 
 /// The same grid with the fields of one state, e.g. a load increment's (Results::increments[i].bodies), one entry per

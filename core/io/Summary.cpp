@@ -4,6 +4,7 @@
 #include <set>
 
 #include "analysis/Recovery.h"
+#include "io/OutputFields.h"
 
 namespace rollsim {
 
@@ -107,7 +108,13 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
                  {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
                  {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};
   s["increments"] = increments_section(r);
-  if (r.status.ok()) s["results"] = results_section(model, r);
+  if (!r.status.ok()) return s;
+  s["results"] = results_section(model, r);
+  s["fields"] = json::array();  // what result.vtu holds, from the output registry
+  for (const OutputField& f : output_fields())
+    if (is_present(f, model))
+      s["fields"].push_back(
+          {{"name", f.name}, {"location", to_string(f.location)}, {"components", f.components}, {"unit", f.unit}});
   return s;
 }
 

@@ -100,9 +100,9 @@ class TestMainWindow : public QObject {
     QVERIFY(finished.wait(60000));
     QCOMPARE(w.run_status(), QStringLiteral("converged"));
     QVERIFY(w.view()->has_results());
-    QCOMPARE(w.view()->color_by(), ColorBy::Displacement);
+    QCOMPARE(w.view()->color_by(), color_by::Displacement);
     QVERIFY(w.run_panel()->run_button()->isEnabled());
-    w.view()->set_color_by(ColorBy::VonMises);
+    w.view()->set_color_by(color_by::VonMises);
     w.view()->set_deformation_scale(w.view()->suggested_deformation_scale());
     QVERIFY(w.view()->suggested_deformation_scale() > 1);
     QTemporaryDir dir;
@@ -119,20 +119,20 @@ class TestMainWindow : public QObject {
     QVERIFY(w.open_file(QStringLiteral(ROLLSIM_SOURCE_DIR "/samples/cylinder-indent-2d.json")));
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    QVERIFY(!w.view()->can_color_by(ColorBy::ContactPressure));  // no results yet
+    QVERIFY(!w.view()->can_color_by(color_by::ContactPressure));  // no results yet
     QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
     QVERIFY(w.start_run());
     QVERIFY(finished.wait(60000));
     QCOMPARE(w.run_status(), QStringLiteral("converged"));
-    w.view()->set_color_by(ColorBy::ContactPressure);
-    QCOMPARE(w.view()->color_by(), ColorBy::ContactPressure);
+    w.view()->set_color_by(color_by::ContactPressure);
+    QCOMPARE(w.view()->color_by(), color_by::ContactPressure);
     // a model without contacts has no pressure to show: the view keeps a colouring it can draw
     QVERIFY(w.open_file(kSample));
     QVERIFY(w.start_run());
     QVERIFY(finished.wait(60000));
-    QVERIFY(!w.view()->can_color_by(ColorBy::ContactPressure));
-    w.view()->set_color_by(ColorBy::ContactPressure);
-    QCOMPARE(w.view()->color_by(), ColorBy::Body);
+    QVERIFY(!w.view()->can_color_by(color_by::ContactPressure));
+    w.view()->set_color_by(color_by::ContactPressure);
+    QCOMPARE(w.view()->color_by(), color_by::Body);
   }
 
   void cancel_ends_the_run_cancelled() {
@@ -184,7 +184,7 @@ class TestMainWindow : public QObject {
     QCOMPARE(selector->minimum(), 1);
     QCOMPARE(selector->maximum(), 3);
     QCOMPARE(selector->value(), 3);
-    QCOMPARE(w.view()->color_by(), ColorBy::Displacement);
+    QCOMPARE(w.view()->color_by(), color_by::Displacement);
     const double full = w.view()->color_range()[1];
     selector->setValue(1);
     QCOMPARE(w.view()->increment(), 0);

@@ -2,6 +2,7 @@
 // a point array contact_pressure holding every body's nodal pressure (0 off the slave surfaces); none without
 // contact pairs or without results.
 #include <gtest/gtest.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
@@ -10,6 +11,7 @@
 
 #include "ModelGrid.h"
 #include "analysis/LinearStatic.h"
+#include "io/OutputFields.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
@@ -47,4 +49,33 @@ TEST(ModelGrid, NoContactPressureWithoutContactPairs) {
   auto solver = make_solver("direct", {});
   const Results res = run_linear_static(model, *solver);
   EXPECT_EQ(make_model_grid(model, &res)->GetPointData()->GetArray("contact_pressure"), nullptr);
+}
+
+// The grid's field arrays are the output registry's: one array per field the model's results carry, with its
+// name, location and component count, holding what the registry's reader gives (so a field added to the registry
+// reaches result.vtu, the PVD files and the window's colour-by list with no other change).
+TEST(ModelGrid, OneArrayPerRegisteredOutputField) {
+  const Model model = sample("cylinder-indent-2d.json");
+  auto solver = make_solver("direct", {});
+  const Results res = run_linear_static(model, *solver);
+  const auto grid = make_model_grid(model, &res);
+  int checked = 0;
+  for (const OutputField& f : output_fields()) {
+    ASSERT_TRUE(is_present(f, model)) << f.name;  // this model has contact pairs: every field is there
+    vtkDataSetAttributes* data = f.location == FieldLocation::Node
+                                     ? static_cast<vtkDataSetAttributes*>(grid->GetPointData())
+                                     : static_cast<vtkDataSetAttributes*>(grid->GetCellData());
+    vtkDataArray* a = data->GetArray(f.name.c_str());
+    ASSERT_NE(a, nullptr) << f.name;
+    EXPECT_EQ(a->GetNumberOfComponents(), f.components) << f.name;
+    const size_t last_body = model.bodies.size() - 1;
+    const Mesh& m = model.bodies[last_body].mesh;
+    const int index = f.location == FieldLocation::Node ? m.num_nodes() - 1 : m.num_elements() - 1;
+    double expected[6];
+    f.value(model, last_body, res.bodies[last_body], index, expected);
+    const vtkIdType last = a->GetNumberOfTuples() - 1;  // the last body's last node / element
+    for (int c = 0; c < f.components; ++c) EXPECT_EQ(a->GetComponent(last, c), expected[c]) << f.name;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
 }

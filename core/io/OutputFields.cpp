@@ -1,0 +1,49 @@
+#include "io/OutputFields.h"
+
+#include <algorithm>
+
+#include "material/Material.h"
+
+namespace rollsim {
+
+namespace {
+void displacement(const Model& m, size_t b, const BodyResults& r, int n, double* out) {
+  const int dim = m.bodies[b].mesh.dim;
+  for (int c = 0; c < 3; ++c) out[c] = c < dim ? r.displacement[n * dim + c] : 0.0;
+}
+void nodal_stress(const Model&, size_t, const BodyResults& r, int n, double* out) {
+  std::copy(r.nodal_stress[n].begin(), r.nodal_stress[n].end(), out);
+}
+void nodal_von_mises(const Model&, size_t, const BodyResults& r, int n, double* out) {
+  out[0] = von_mises(r.nodal_stress[n].data());
+}
+void contact_pressure(const Model&, size_t, const BodyResults& r, int n, double* out) {
+  out[0] = n < r.contact_pressure.size() ? r.contact_pressure[n] : 0.0;
+}
+void element_stress(const Model&, size_t, const BodyResults& r, int e, double* out) {
+  std::copy(r.element_stress[e].begin(), r.element_stress[e].end(), out);
+}
+void element_von_mises(const Model&, size_t, const BodyResults& r, int e, double* out) {
+  out[0] = von_mises(r.element_stress[e].data());
+}
+bool has_contact(const Model& m) { return !m.contacts.empty(); }
+}  // namespace
+
+const std::vector<OutputField>& output_fields() {
+  using L = FieldLocation;
+  static const std::vector<OutputField> fields = {
+      {"displacement", "displacement |u|", "|u|", "length", L::Node, 3, true, {}, displacement},
+      {"stress", "stress (nodal average)", "stress", "stress", L::Node, 6, false, {}, nodal_stress},
+      {"von_mises", "von Mises stress", "von Mises", "stress", L::Node, 1, true, {}, nodal_von_mises},
+      {"contact_pressure", "contact pressure", "contact p", "stress", L::Node, 1, true, has_contact, contact_pressure},
+      {"stress", "stress (element mean)", "stress", "stress", L::Cell, 6, false, {}, element_stress},
+      {"von_mises", "von Mises stress (element mean)", "von Mises", "stress", L::Cell, 1, false, {}, element_von_mises},
+  };
+  return fields;
+}
+
+bool is_present(const OutputField& field, const Model& model) { return !field.present || field.present(model); }
+
+const char* to_string(FieldLocation location) { return location == FieldLocation::Node ? "node" : "cell"; }
+
+}  // namespace rollsim

@@ -1,0 +1,39 @@
+#pragma once
+// The output registry: every field a run writes, with its name, unit, location and how to read it from the results.
+// The VTU/PVD writers (vtkio/ModelGrid) make one array per entry and summary.json lists them (`fields`), so a new
+// field — plastic strain, slip — is added here and in its computation, nowhere else.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analysis/Results.h"
+#include "model/Model.h"
+
+namespace rollsim {
+
+enum class FieldLocation { Node, Cell };
+
+struct OutputField {
+  std::string name;    // array name in result.vtu (and the window's key)
+  std::string label;   // for people: the window's colour-by list, docs
+  std::string legend;  // short title of a colour bar (its width fits about ten characters)
+  std::string unit;    // in the project's consistent units: "length", "stress", "-"
+  FieldLocation location = FieldLocation::Node;
+  int components = 1;       // 1, 3 (a vector; 2D padded with 0) or 6 (xx, yy, zz, xy, yz, zx)
+  bool colourable = false;  // offered for colouring the view (vectors by magnitude)
+  /// False when this model's results do not carry it (contact pressure without contact pairs); empty: always there.
+  std::function<bool(const Model&)> present;
+  /// The `components` values of node or element `index` of body `body` into `out`.
+  std::function<void(const Model&, size_t body, const BodyResults&, int index, double* out)> value;
+};
+
+/// Every output field, in the order written.
+const std::vector<OutputField>& output_fields();
+
+/// Whether the results of `model` carry `field`.
+bool is_present(const OutputField& field, const Model& model);
+
+/// "node" or "cell".
+const char* to_string(FieldLocation location);
+
+}  // namespace rollsim
