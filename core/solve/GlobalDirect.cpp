@@ -79,10 +79,10 @@ bool GlobalDirect::factored(const BlockSystem& sys) const {
 
 void GlobalDirect::factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer) {
   const long m = sys.num_multipliers();
-  if (!factor_ || trailing_ != m || !same_pattern(analyzed_, A)) {  // an active-set swap changes the pattern
-    if (factor_) add_times(factor_->stats());                       // a new pattern: keep what the old spent
+  if (!factor_ || trailing_ != m || !analyzed_.matches(A)) {  // an active-set swap changes the pattern
+    if (factor_) add_times(factor_->stats());                 // a new pattern: keep what the old spent
     factor_ = make_factorization(kind_, static_cast<int>(m));
-    analyzed_ = A;
+    analyzed_ = SparsityPattern(A);
     trailing_ = m;
     factor_->analyze(A);
   }

@@ -3,6 +3,7 @@
 // constraint rows last once contact exists) factored by a single sparse factorization — again only when a group's
 // version (the update policy) or the constraint rows changed.
 #include "solve/SolverStrategy.h"
+#include "solve/SparseCompare.h"
 
 namespace rollsim {
 
@@ -23,7 +24,7 @@ class GlobalDirect final : public SolverStrategy {
   void factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer);
   std::vector<long> factored_versions_;
   std::vector<SparseMatrix> factored_C_;
-  SparseMatrix analyzed_;  // the matrix of the last analysis: a new pattern (not only a new size) needs a new one
+  SparsityPattern analyzed_;  // of the last analysis: a new pattern (not only a new size) needs a new one
   long trailing_ = 0;
   FactorStats earlier_;  // times of factors replaced by a new pattern (active-set changes)
   SolveStats stats_;
