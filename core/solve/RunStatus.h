@@ -27,7 +27,6 @@ struct RunStatus {
   std::string message;  // for the user: what stopped where (increment, solve, iteration, residual)
 
   bool ok() const { return status == Status::converged; }
-  static RunStatus failed(Status s, Reason r, std::string message) { return {s, r, std::move(message)}; }
 };
 
 /// "converged", "not_converged", "diverged", "cancelled", "error" — the words written to summary.json.
