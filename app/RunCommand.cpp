@@ -1,6 +1,5 @@
 // `rollsim run`, `rollsim check` and `rollsim mesh`: project -> model (-> analysis -> results) -> writers.
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -189,8 +188,8 @@ int run_command(const RunOptions& o) {
   }
   const auto summary = (dir / "summary.json").string();
   if (!results.status.ok()) {
-    std::cerr << "rollsim: " << (results.status.status == Status::error ? "error" : to_string(results.status.status))
-              << ": " << results.status.message << " (summary written to " << summary << ")\n";
+    std::cerr << "rollsim: " << to_string(results.status.status) << ": " << results.status.message
+              << " (summary written to " << summary << ")\n";
     return exit_code(results.status.status);
   }
   if (!o.quiet)
