@@ -53,7 +53,7 @@ SparseMatrix stack(const SparseMatrix& top, const SparseMatrix& bottom) {
 }  // namespace
 
 GroupLayout::GroupLayout(const Model& model, bool split, Multipliers choice) {
-  sys_.glue_redundant = choice != Multipliers::NonRedundant;
+  redundant_ = choice != Multipliers::NonRedundant;
   for (size_t b = 0; b < model.bodies.size(); ++b) add_body(model, static_cast<int>(b), split, choice);
   // interface rows of every body, one after the other
   std::vector<long> offset;
@@ -109,10 +109,9 @@ void GroupLayout::set_contact(const BodyConstraints& contact) {
   }
   sys_.d = Eigen::VectorXd::Zero(mc + interface_rows_);
   sys_.d.head(mc) = contact.d;
-  sys_.scaling = Eigen::VectorXd::Ones(mc + interface_rows_);
-  for (long r = 0; r < interface_rows_; ++r) sys_.scaling[mc + r] = interface_scaling_[r];
-  sys_.glue_begin = mc;
-  sys_.glue_end = mc + interface_rows_;
+  ConstraintBlock glue{ConstraintKind::Glue, mc, mc + interface_rows_, Eigen::VectorXd(interface_rows_), redundant_};
+  for (long r = 0; r < interface_rows_; ++r) glue.scaling[r] = interface_scaling_[r];
+  sys_.blocks = {ConstraintBlock{ConstraintKind::Contact, 0, mc, {}, false}, std::move(glue)};
 }
 
 std::vector<Eigen::VectorXd> GroupLayout::body_solution(const BlockSolution& sol) const {

@@ -44,6 +44,7 @@ class GroupLayout {
   std::vector<SparseMatrix> interface_C_;  // per group: its interface rows, in the global interface numbering
   std::vector<double> interface_scaling_;
   long interface_rows_ = 0, paper_rows_ = 0;
+  bool redundant_ = false;  // fully redundant glue
   std::vector<std::string> warnings_;
 };
 

@@ -23,12 +23,23 @@ struct Group {
   Eigen::MatrixXd R;  // basis of ker K_g (rigid modes left free by the supports); n × 0 when K_g is regular
 };
 
+/// What a range of multipliers stands for: contact rows (C_j) or the glue of a body's subdomains (B_i).
+enum class ConstraintKind { Contact, Glue };
+
+/// A contiguous range of the constraint rows with one meaning — what preconditioners treat differently.
+struct ConstraintBlock {
+  ConstraintKind kind = ConstraintKind::Contact;
+  long begin = 0, end = 0;  // rows [begin, end) of every group's C and of d
+  Eigen::VectorXd scaling;  // per row, for preconditioners: 1/multiplicity on glue (empty: ones)
+  bool redundant = false;   // glue: fully redundant (diagonal scaling) or not ((B Bᵀ)⁻¹)
+
+  long size() const { return end - begin; }
+};
+
 struct BlockSystem {
   std::vector<Group> groups;
-  Eigen::VectorXd d;        // right-hand side of the constraints, one entry per multiplier
-  Eigen::VectorXd scaling;  // per multiplier, for preconditioners: 1/multiplicity on subdomain glue (empty: ones)
-  long glue_begin = 0, glue_end = 0;  // the rows gluing subdomains (B_i), for the preconditioners' scaling
-  bool glue_redundant = false;        // fully redundant glue: diagonal scaling; otherwise (B Bᵀ)⁻¹
+  Eigen::VectorXd d;                    // right-hand side of the constraints, one entry per multiplier
+  std::vector<ConstraintBlock> blocks;  // the rows' meaning, in row order (rows in no block: contact, weight 1)
 
   long num_dofs() const {
     long n = 0;
@@ -36,6 +47,19 @@ struct BlockSystem {
     return n;
   }
   long num_multipliers() const { return d.size(); }
+  /// The glue block (subdomain interfaces), or null when no body is torn.
+  const ConstraintBlock* glue() const {
+    for (const ConstraintBlock& b : blocks)
+      if (b.kind == ConstraintKind::Glue && b.size() > 0) return &b;
+    return nullptr;
+  }
+  /// Every row's preconditioner weight: the blocks' scaling, 1 elsewhere.
+  Eigen::VectorXd row_scaling() const {
+    Eigen::VectorXd w = Eigen::VectorXd::Ones(num_multipliers());
+    for (const ConstraintBlock& b : blocks)
+      if (b.scaling.size() == b.size()) w.segment(b.begin, b.size()) = b.scaling;
+    return w;
+  }
   long num_rigid_modes() const {
     long n = 0;
     for (const Group& g : groups) n += g.R.cols();

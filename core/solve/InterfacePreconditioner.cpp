@@ -46,10 +46,11 @@ class BlockPreconditioner final : public InterfacePreconditioner {
 
   void setup(const BlockSystem& sys) override {
     blocks_.clear();
-    Eigen::VectorXd w = sys.scaling.size() ? sys.scaling : Eigen::VectorXd::Ones(sys.num_multipliers());
-    glue_ = {sys.glue_begin, sys.glue_end - sys.glue_begin};
+    Eigen::VectorXd w = sys.row_scaling();
+    const ConstraintBlock* glue = sys.glue();
+    glue_ = glue ? std::make_pair(glue->begin, glue->size()) : std::make_pair(0L, 0L);
     BBt_.reset();
-    if (!sys.glue_redundant && glue_.second > 0) {
+    if (glue && !glue->redundant) {
       factor_glue(sys);
       w.segment(glue_.first, glue_.second).setOnes();  // (B Bᵀ)⁻¹ replaces the multiplicity weights
     }
