@@ -1,6 +1,5 @@
 #include "analysis/GroupLayout.h"
 
-#include "fem/Assembler.h"
 #include "fem/Loads.h"
 #include "model/RigidModes.h"
 
@@ -13,15 +12,13 @@ bool in_contact(const Model& model, int b) {
   return false;
 }
 
-/// One group for a whole body: K, f and, for a body held only by contact, its kernel (paper eq. (5)).
+/// One group for a whole body and, for a body held only by contact, its kernel (paper eq. (5)).
 Group body_group(const Model& model, int b, const DofMap& dofs) {
   const Body& body = model.bodies[b];
   Group g;
   g.name = body.name;
   g.body = b;
-  Assembler(body, dofs).assemble(g.K, g.f);
-  g.f += dofs.restrict_to_free(external_nodal_load(model, b));
-  g.R = in_contact(model, b) ? kernel_basis(body.mesh, dofs) : Eigen::MatrixXd(g.K.rows(), 0);
+  g.R = in_contact(model, b) ? kernel_basis(body.mesh, dofs) : Eigen::MatrixXd(dofs.num_free(), 0);
   return g;
 }
 
@@ -67,7 +64,7 @@ GroupLayout::GroupLayout(const Model& model, bool split, Multipliers choice) {
       const int g = bodies_[b].first + i;
       const SparseMatrix& B = sys_.groups[g].C;
       interface_C_[g] = bodies_[b].dec ? shift_rows(B, offset[b], interface_rows_)
-                                       : SparseMatrix(static_cast<int>(interface_rows_), sys_.groups[g].K.rows());
+                                       : SparseMatrix(static_cast<int>(interface_rows_), free_dofs(g));
     }
   set_contact(BodyConstraints{std::vector<SparseMatrix>(), Eigen::VectorXd(), {}});
 }
@@ -80,7 +77,11 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
   if (split && body.partition.num_subdomains > 1) {
     DecomposeOptions opt;
     opt.multipliers = choice;
-    bg.dec = decompose_body(body, b, *dofs_.back(), external_nodal_load(model, b), body.partition, opt);
+    opt.assemble = false;
+    const Eigen::VectorXd load = external_nodal_load(model, b);
+    bg.dec = decompose_body(body, b, *dofs_.back(), load, body.partition, opt);
+    for (const Subdomain& s : bg.dec->subdomains)
+      assembler_.add(subdomain_source(s, load, bg.dec->interface.multiplicity));
     warnings_.insert(warnings_.end(), bg.dec->warnings.begin(), bg.dec->warnings.end());
     paper_rows_ += bg.dec->paper_convention_multipliers;
     const auto w = row_scaling(*bg.dec, *dofs_.back());
@@ -90,6 +91,7 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
     bg.dec->groups.clear();
   } else {
     sys_.groups.push_back(body_group(model, b, *dofs_.back()));
+    assembler_.add(GroupSource{&body, dofs_.back().get(), external_nodal_load(model, b)});
   }
   bodies_.push_back(std::move(bg));
 }
@@ -100,7 +102,7 @@ void GroupLayout::set_contact(const BodyConstraints& contact) {
     const BodyGroups& bg = bodies_[b];
     std::vector<SparseMatrix> parts;
     if (contact.C.empty())
-      for (int i = 0; i < bg.count; ++i) parts.emplace_back(0, sys_.groups[bg.first + i].K.rows());
+      for (int i = 0; i < bg.count; ++i) parts.emplace_back(0, free_dofs(bg.first + i));
     else if (bg.dec)
       parts = split_constraint_columns(contact.C[b], *bg.dec);
     else

@@ -8,16 +8,23 @@
 #include <vector>
 
 #include "analysis/ConstraintAssembly.h"
+#include "analysis/Decomposition.h"
+#include "analysis/GroupAssembler.h"
 #include "analysis/Results.h"
-#include "partition/Decomposition.h"
 #include "solve/BlockSystem.h"
 
 namespace rollsim {
 
 class GroupLayout {
  public:
-  /// Assembles every group. `split`: tear partitioned bodies into subdomains.
+  /// The groups with their kernels and interface rows, not yet assembled. `split`: tear partitioned bodies into
+  /// subdomains.
   GroupLayout(const Model& model, bool split, Multipliers choice);
+
+  /// K_g and f_g = r_g for the listed groups (GroupAssembler::assemble); the caller bumps their versions.
+  void assemble(const std::vector<size_t>& groups, const std::vector<Eigen::VectorXd>& u_free, double load_factor) {
+    assembler_.assemble(groups, u_free, load_factor, sys_);
+  }
 
   BlockSystem& system() { return sys_; }
   const std::vector<std::unique_ptr<DofMap>>& body_dofs() const { return dofs_; }
@@ -37,8 +44,10 @@ class GroupLayout {
     std::optional<BodyDecomposition> dec;
   };
   void add_body(const Model& model, int b, bool split, Multipliers choice);
+  int free_dofs(size_t group) const { return assembler_.source(group).dofs->num_free(); }
 
   BlockSystem sys_;
+  GroupAssembler assembler_;
   std::vector<std::unique_ptr<DofMap>> dofs_;
   std::vector<BodyGroups> bodies_;
   std::vector<SparseMatrix> interface_C_;  // per group: its interface rows, in the global interface numbering

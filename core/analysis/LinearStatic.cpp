@@ -227,7 +227,9 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   Stopwatch t;
   GroupLayout layout(model, solver.uses_subdomains(), multiplier_choice(solver.options()));
   BlockSystem& sys = layout.system();
-  mark_updated(sys, AlwaysUpdate().select(sys, {}));  // every group assembled: factored on first use, then kept
+  const std::vector<size_t> selected = AlwaysUpdate().select(sys, {});
+  layout.assemble(selected, {}, 1.0);  // K_g and r_g at rest: the linear system
+  mark_updated(sys, selected);         // factored on first use, then kept
   res.dofs = sys.num_dofs();
   res.rigid_modes = sys.num_rigid_modes();
   res.subdomains = layout.subdomains();

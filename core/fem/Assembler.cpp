@@ -69,29 +69,33 @@ Assembler::Assembler(const Body& body, const DofMap& dofs) : body_(body), dofs_(
   }
 }
 
-void Assembler::assemble(SparseMatrix& K, Eigen::VectorXd& fD) const {
+void Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix& K, Eigen::VectorXd& f_int) const {
   const Mesh& m = body_.mesh;
   const int nd = m.nodes_per_elem() * m.dim;
   K = pattern_;
-  fD = Eigen::VectorXd::Zero(dofs_.num_free());
+  f_int = Eigen::VectorXd::Zero(dofs_.num_free());
   double* val = K.valuePtr();
   std::vector<int> eq(static_cast<size_t>(nd));
+  std::vector<double> ue(static_cast<size_t>(nd));
   for_each_element_stiffness(body_, [&](int e, const double* Ke) {
     element_equations(m, dofs_, e, eq.data());
     const int* s = slot_.data() + static_cast<size_t>(e) * nd * nd;
     const int* conn = m.element(e);
+    for (int jj = 0; jj < nd; ++jj) ue[jj] = u[static_cast<Eigen::Index>(conn[jj / m.dim]) * m.dim + jj % m.dim];
     for (int jj = 0; jj < nd; ++jj) {
-      if (eq[jj] < 0) {  // prescribed column: move K_fp u_p to the right-hand side
-        const double up = dofs_.prescribed(conn[jj / m.dim], jj % m.dim);
-        if (up != 0.0)
-          for (int ii = 0; ii < nd; ++ii)
-            if (eq[ii] >= 0) fD[eq[ii]] -= Ke[jj * nd + ii] * up;
-        continue;
-      }
+      if (ue[jj] != 0.0)  // f_e = K_e u_e, column by column (an element at rest costs nothing)
+        for (int ii = 0; ii < nd; ++ii)
+          if (eq[ii] >= 0) f_int[eq[ii]] += Ke[jj * nd + ii] * ue[jj];
+      if (eq[jj] < 0) continue;
       for (int ii = 0; ii < nd; ++ii)
         if (s[jj * nd + ii] >= 0) val[s[jj * nd + ii]] += Ke[jj * nd + ii];
     }
   });
+}
+
+void Assembler::assemble(SparseMatrix& K, Eigen::VectorXd& f_dirichlet) const {
+  assemble(dofs_.expand(Eigen::VectorXd::Zero(dofs_.num_free())), K, f_dirichlet);
+  f_dirichlet = -f_dirichlet;
 }
 
 }  // namespace rollsim

@@ -1,21 +1,23 @@
 #pragma once
-// Assembly of one group's stiffness over its free dofs. The sparsity pattern and the
+// Assembly of one group's stiffness and internal force over its free dofs. The sparsity pattern and the
 // element -> value-slot scatter map are computed once; assemble() only rewrites values.
-#include <Eigen/Sparse>
 #include <vector>
 
 #include "model/DofMap.h"
 #include "model/Model.h"
+#include "model/SparseMatrix.h"
 
 namespace rollsim {
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 class Assembler {
  public:
   Assembler(const Body& body, const DofMap& dofs);
 
-  /// K_ff (both triangles stored) and the load from prescribed dofs, f_D = -K_fp u_p.
+  /// K_ff (both triangles stored) and the internal force on the free dofs, f_int = Σ_e f_e(u_e), at the
+  /// displacement `u` of every node (node-major, prescribed dofs included). The element kernel is small-strain
+  /// and linear today (f_e = K_e u_e); the finite-strain kernel takes its place with the same signature.
+  void assemble(const Eigen::VectorXd& u, SparseMatrix& K, Eigen::VectorXd& f_int) const;
+  /// K_ff and the load of the prescribed dofs at u_f = 0, f_D = −K_fp u_p: the linear system K_ff u_f = f + f_D.
   void assemble(SparseMatrix& K, Eigen::VectorXd& f_dirichlet) const;
 
  private:

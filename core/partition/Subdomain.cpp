@@ -4,9 +4,6 @@
 #include <map>
 #include <optional>
 
-#include "fem/Assembler.h"
-#include "model/RigidModes.h"
-
 namespace rollsim {
 
 int Subdomain::local_node(int body_node) const {
@@ -84,34 +81,6 @@ std::vector<Subdomain> extract_subdomains(const Body& body, const DofMap& body_d
   for (size_t s = 0; s < elements.size(); ++s)
     subs.push_back(make_subdomain(body, body_dofs, static_cast<int>(s), std::move(elements[s])));
   return subs;
-}
-
-Group subdomain_group(const Subdomain& s, int body_index, const std::string& body_name,
-                      const Eigen::VectorXd& nodal_load, const std::vector<int>& multiplicity, bool assemble) {
-  Group g;
-  g.name = body_name + "/" + std::to_string(s.id);
-  g.body = body_index;
-  const int n = s.dofs->num_free(), dim = s.body.mesh.dim;
-  g.C.resize(0, n);
-  // Floating subdomains (paper eqs. 5-8): ker K_i = the rigid motions that move no prescribed dof. Exact, not a
-  // numerical rank decision on K_i: a subdomain is facet-connected (check_partition) and made of Q4/H8 solid
-  // elements with full or B-bar integration, so ker of its unsupported K is exactly the 3 (2D) / 6 (3D) rigid
-  // modes; supports then remove the combinations with non-zero prescribed rows, a 3×3 / 6×6 decision on
-  // geometry. Near-singular cases (touching the supports at 1 node or along 1 line) keep their 1-3 rotations
-  // exactly, while the smallest non-zero eigenvalue of a slender K_i falls below 1e-6 of the largest (tests:
-  // SubdomainExtraction.SlenderSubdomainNeedsNoRankTolerance), where a rank tolerance on K_i would misjudge.
-  g.R = kernel_basis(s.body.mesh, *s.dofs);
-  if (!assemble) return g;
-  Assembler assembler(s.body, *s.dofs);
-  assembler.assemble(g.K, g.f);
-  Eigen::VectorXd local_load(static_cast<Eigen::Index>(s.nodes.size()) * dim);
-  for (size_t l = 0; l < s.nodes.size(); ++l)
-    for (int c = 0; c < dim; ++c) {
-      const Eigen::Index i = static_cast<Eigen::Index>(l) * dim + c;
-      local_load[i] = nodal_load[static_cast<Eigen::Index>(s.nodes[l]) * dim + c] / multiplicity[s.nodes[l]];
-    }
-  g.f += s.dofs->restrict_to_free(local_load);
-  return g;
 }
 
 }  // namespace rollsim

@@ -8,7 +8,6 @@
 #include "model/DofMap.h"
 #include "model/Model.h"
 #include "partition/Partition.h"
-#include "solve/BlockSystem.h"
 
 namespace rollsim {
 
@@ -28,12 +27,5 @@ struct Subdomain {
 
 /// Splits a body along a (valid) partition. Node sets, element sets and surfaces are not carried over.
 std::vector<Subdomain> extract_subdomains(const Body& body, const DofMap& body_dofs, const Partition& p);
-
-/// Group of one subdomain — paper §2: K_i and f_i assembled by the body's element code on the local mesh, and
-/// R_i = kernel_basis(local mesh, local dofs). The body's external nodal load (node-major, every dof) is shared
-/// equally among the `multiplicity[node]` subdomains holding a node, so that Σ_i L_i f_i = f (L_i: local ->
-/// body). C is left 0 × n (see boolean_blocks). With assemble = false only R is computed (K, f empty).
-Group subdomain_group(const Subdomain& s, int body_index, const std::string& body_name,
-                      const Eigen::VectorXd& nodal_load, const std::vector<int>& multiplicity, bool assemble = true);
 
 }  // namespace rollsim

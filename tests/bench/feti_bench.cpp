@@ -38,8 +38,8 @@
 
 #include <sys/resource.h>
 
+#include "analysis/Decomposition.h"
 #include "analysis/LinearStatic.h"
-#include "partition/Decomposition.h"
 #include "partition/PartitionSpec.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "analysis/Decomposition.h"
 #include "mesh/StructuredBlock.h"
 #include "model/Model.h"
-#include "partition/Decomposition.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 

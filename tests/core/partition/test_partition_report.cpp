@@ -97,8 +97,7 @@ void expect_core_counts(const Model& model, const Partition& p) {
     EXPECT_EQ(x.dofs, subs[s].dofs->num_free()) << s;
     EXPECT_EQ(x.multipliers, rows[s]) << s;
     if (subs[s].elements.empty()) continue;
-    const Group g =
-        subdomain_group(subs[s], 0, body.name, Eigen::VectorXd::Zero(dofs.num_free()), iface.multiplicity, false);
+    const Group g = subdomain_group(subs[s], 0, body.name);
     EXPECT_EQ(x.rigid_modes, g.R.cols()) << s;
     EXPECT_EQ(x.pieces, static_cast<int>(pieces[s].size())) << s;
     EXPECT_TRUE(x.factor == estimate_factor(subs[s].body.mesh, *subs[s].dofs)) << s;

@@ -56,6 +56,7 @@ Eigen::VectorXd stacked(const BlockSolution& s) {
 template <class Make>
 void expect_swap_equals_fresh(const Model& model, bool split, Make make) {
   GroupLayout layout(model, split, Multipliers::NonRedundant);
+  layout.assemble(all_groups(layout.system()), {}, 1.0);
   const int n = layout.body_dofs()[0]->num_free();
   auto reused = make();
   layout.set_contact(rows_on(layout, n / 3, n / 2));
@@ -84,6 +85,7 @@ TEST(ConstraintRowsChange, FetiPreconditionerFollowsTheRowsNotTheirCount) {
     SCOPED_TRACE(pc);
     const SolverOptions o{1e-10, 1, pc};
     GroupLayout layout(model, true, Multipliers::NonRedundant);
+    layout.assemble(all_groups(layout.system()), {}, 1.0);
     const int n = layout.body_dofs()[0]->num_free();
     MixedStrategy reused(o, true);
     layout.set_contact(rows_on(layout, n / 3, n / 2));

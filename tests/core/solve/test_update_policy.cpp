@@ -52,6 +52,7 @@ TEST(UpdatePolicy, EveryStrategyRefactorsExactlyWhatWasMarked) {
     auto solver = make_solver(mode, o);
     GroupLayout layout(model, solver->uses_subdomains(), Multipliers::NonRedundant);
     BlockSystem& sys = layout.system();
+    layout.assemble(all_groups(sys), {}, 1.0);
     mark_updated(sys, AlwaysUpdate().select(sys, {}));
     const BlockSolution first = solver->solve(sys);
     const long groups = static_cast<long>(sys.groups.size());

@@ -4,7 +4,7 @@
 
 #include <Eigen/SparseCholesky>
 
-#include "PartitionFixtures.h"
+#include "../partition/PartitionFixtures.h"
 #include "fem/Assembler.h"
 #include "fem/Loads.h"
 #include "partition/MetisPartition.h"

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/GroupAssembler.h"
 #include "model/DofMap.h"
 #include "model/Model.h"
 #include "partition/Interface.h"
@@ -34,6 +35,16 @@ struct BodyDecomposition {
   long num_multipliers() const { return d.size(); }
   long num_rigid_modes() const;
 };
+
+/// Group of one subdomain without its matrices — paper §2: R_i = kernel_basis(local mesh, local dofs), C left
+/// 0 × n (see boolean_blocks); the GroupAssembler fills K_i and f_i from subdomain_source.
+Group subdomain_group(const Subdomain& s, int body_index, const std::string& body_name);
+
+/// Where subdomain s's K_i and f_i come from: the body's element code on the local mesh, and the body's external
+/// nodal load (node-major, every dof) shared equally among the `multiplicity[node]` subdomains holding a node, so
+/// that Σ_i L_i f_i = f (L_i: local -> body).
+GroupSource subdomain_source(const Subdomain& s, const Eigen::VectorXd& nodal_load,
+                             const std::vector<int>& multiplicity);
 
 /// Tears body `b` of the model along `partition`. Throws PartitionError listing every problem of the partition
 /// (with paths under "bodies[b].partition").

@@ -1,0 +1,74 @@
+// The group assembler: r_g = f_ext − f_int(u_g) is the linear system's right-hand side at rest and vanishes at its
+// solution, the subdomains' residuals add up to the body's, and only the listed groups are touched.
+#include <gtest/gtest.h>
+
+#include <Eigen/SparseCholesky>
+
+#include "../partition/PartitionFixtures.h"
+#include "analysis/GroupLayout.h"
+#include "partition/StructuredPartition.h"
+
+using namespace rollsim;
+
+namespace {
+/// A clamped block with a prescribed displacement and a force: both kinds of load in the residual.
+Model loaded_block(int dim) {
+  Model m = test::block_model(dim, {6, 3, 2});
+  const double lz = dim == 3 ? 2 : 0;
+  test::support(m, test::nodes_in_box(m, {0, 0, 0}, {0, 3, lz}));
+  test::support(m, test::nodes_in_box(m, {6, 0, 0}, {6, 3, lz}), 1, -0.1);
+  NodalForce force;
+  force.nodes = test::nodes_in_box(m, {3, 3, 0}, {3, 3, lz});
+  force.value = {2.0, -1.0, 0.5};
+  m.forces.push_back(force);
+  m.bodies[0].partition = structured_partition(m.bodies[0].mesh, {3, 1, 1});
+  return m;
+}
+}  // namespace
+
+TEST(GroupAssembler, ResidualVanishesAtTheSolution) {
+  for (int dim : {2, 3}) {
+    SCOPED_TRACE(dim);
+    const Model m = loaded_block(dim);
+    GroupLayout layout(m, false, Multipliers::NonRedundant);
+    BlockSystem& sys = layout.system();
+    layout.assemble(all_groups(sys), {}, 1.0);
+    const Group rest = sys.groups[0];
+    ASSERT_GT(rest.f.norm(), 0.0);
+    const Eigen::VectorXd u = Eigen::SimplicialLDLT<SparseMatrix>(rest.K).solve(rest.f);
+    layout.assemble({0}, {u}, 1.0);
+    EXPECT_LE(sys.groups[0].f.norm(), 1e-10 * rest.f.norm());
+    EXPECT_EQ((sys.groups[0].K - rest.K).norm(), 0.0) << "a linear material's tangent does not depend on u";
+    layout.assemble({0}, {}, 0.25);  // at rest, a quarter of the load: a quarter of the residual
+    EXPECT_LE((sys.groups[0].f - 0.25 * rest.f).norm(), 1e-14 * rest.f.norm());
+  }
+}
+
+TEST(GroupAssembler, SubdomainResidualsAddUpToTheBody) {
+  for (int dim : {2, 3}) {
+    SCOPED_TRACE(dim);
+    const Model m = loaded_block(dim);
+    GroupLayout whole(m, false, Multipliers::NonRedundant), torn(m, true, Multipliers::NonRedundant);
+    whole.assemble(all_groups(whole.system()), {}, 1.0);
+    torn.assemble(all_groups(torn.system()), {}, 1.0);
+    ASSERT_EQ(torn.system().groups.size(), 3u);
+    // Σ_i L_i f_i over the body's free dofs: the subdomains' copies gathered by summing (not averaging)
+    const BodyDecomposition dec = decompose_body(m, 0, m.bodies[0].partition);
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(whole.system().groups[0].f.size());
+    for (size_t s = 0; s < dec.subdomains.size(); ++s)
+      for (size_t l = 0; l < dec.subdomains[s].free_dofs.size(); ++l)
+        sum[dec.subdomains[s].free_dofs[l]] += torn.system().groups[s].f[static_cast<Eigen::Index>(l)];
+    EXPECT_LE((sum - whole.system().groups[0].f).norm(), 1e-12 * sum.norm());
+  }
+}
+
+TEST(GroupAssembler, TouchesOnlyTheListedGroups) {
+  const Model m = loaded_block(2);
+  GroupLayout torn(m, true, Multipliers::NonRedundant);
+  BlockSystem& sys = torn.system();
+  torn.assemble({1}, {}, 1.0);
+  EXPECT_EQ(sys.groups[0].K.nonZeros(), 0);
+  EXPECT_GT(sys.groups[1].K.nonZeros(), 0);
+  EXPECT_EQ(sys.groups[2].f.size(), 0);
+  EXPECT_EQ(sys.groups[1].f.size(), sys.groups[1].K.rows());
+}
