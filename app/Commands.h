@@ -16,6 +16,7 @@ struct RunOptions {
   std::optional<std::string> preconditioner;  // none, lumped, dirichlet
   std::optional<std::string> projector;       // identity, preconditioner
   std::optional<double> cg_tolerance;
+  std::optional<std::string> update;  // always, selective[:TOL] (Newton)
   bool quiet = false;
 };
 

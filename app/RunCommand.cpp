@@ -9,6 +9,7 @@
 #include "VtuWriter.h"
 #include "analysis/LinearStatic.h"
 #include "io/AtomicFile.h"
+#include "io/ConvergenceCsv.h"
 #include "io/OutputFolder.h"
 #include "io/Summary.h"
 #include "project/ModelBuilder.h"
@@ -16,6 +17,7 @@
 #include "project/RunProject.h"
 #include "solve/Blas.h"
 #include "solve/Stopwatch.h"
+#include "solve/UpdatePolicy.h"
 
 namespace rollsim::app {
 
@@ -72,6 +74,14 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
     if (!(*o.cg_tolerance > 0 && *o.cg_tolerance < 1))
       return "--cg-tolerance: must be a number in (0, 1), got " + std::to_string(*o.cg_tolerance);
     solver["cg_tolerance"] = *o.cg_tolerance;
+  }
+  if (o.update) {
+    try {
+      make_update_policy(*o.update);
+    } catch (const std::invalid_argument& e) {
+      return std::string("--update: ") + e.what();
+    }
+    solver["update"] = *o.update;
   }
   if (o.partition) {
     const auto eq = o.partition->find('=');
@@ -181,6 +191,7 @@ int run_command(const RunOptions& o) {
       write_vtu(dir / "result.vtu", model, results);
       if (results.load_increments > 1) write_increment_collection(dir / "results.pvd", model, results);
     }
+    if (!results.newton.empty()) write_file_atomically(dir / "convergence.csv", convergence_csv(results));
     results.timing.total_s = wall.seconds();
     write_file_atomically(dir / "summary.json", make_summary(model, results, info).dump(2) + "\n");
   } catch (const std::exception& e) {

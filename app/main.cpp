@@ -43,6 +43,9 @@ int main(int argc, char** argv) {
                       "feti rigid-mode projector with a preconditioner: identity (Q = I, the paper's), preconditioner "
                       "(Q = M^-1: fewer iterations, costlier set-up)");
   cmd_run->add_option("--cg-tolerance", run.cg_tolerance, "relative tolerance of the interface CG (mixed, feti)");
+  cmd_run->add_option("--update", run.update,
+                      "Newton update policy: always (every group refactored at every iteration) or selective[:TOL] "
+                      "(a group whose residual is below TOL x the total keeps its factor; TOL 0.01 by default)");
   cmd_run->add_flag("--quiet", run.quiet, "no progress on stderr");
 
   std::string check_file;

@@ -45,7 +45,7 @@ Group subdomain_group(const Subdomain& s, int body_index, const std::string& bod
   return g;
 }
 
-GroupSource subdomain_source(const Subdomain& s, const Eigen::VectorXd& nodal_load,
+GroupSource subdomain_source(const Subdomain& s, int body_index, const Eigen::VectorXd& nodal_load,
                              const std::vector<int>& multiplicity) {
   const int dim = s.body.mesh.dim;
   Eigen::VectorXd local_load(static_cast<Eigen::Index>(s.nodes.size()) * dim);
@@ -54,7 +54,7 @@ GroupSource subdomain_source(const Subdomain& s, const Eigen::VectorXd& nodal_lo
       const Eigen::Index i = static_cast<Eigen::Index>(l) * dim + c;
       local_load[i] = nodal_load[static_cast<Eigen::Index>(s.nodes[l]) * dim + c] / multiplicity[s.nodes[l]];
     }
-  return GroupSource{&s.body, s.dofs.get(), std::move(local_load)};
+  return GroupSource{&s.body, s.dofs.get(), std::move(local_load), body_index, s.elements};
 }
 
 BodyDecomposition decompose_body(const Model& model, int b, Partition partition, const DecomposeOptions& options) {
@@ -79,7 +79,7 @@ BodyDecomposition decompose_body(const Body& body, int b, const DofMap& dofs, co
   for (size_t s = 0; s < dec.subdomains.size(); ++s) {
     dec.groups.push_back(subdomain_group(dec.subdomains[s], b, body.name));
     dec.groups.back().C = std::move(B[s]);
-    assembler.add(subdomain_source(dec.subdomains[s], nodal_load, dec.interface.multiplicity));
+    assembler.add(subdomain_source(dec.subdomains[s], b, nodal_load, dec.interface.multiplicity));
   }
   if (options.assemble) {
     BlockSystem local{std::move(dec.groups), {}, {}};

@@ -43,7 +43,7 @@ Group subdomain_group(const Subdomain& s, int body_index, const std::string& bod
 /// Where subdomain s's K_i and f_i come from: the body's element code on the local mesh, and the body's external
 /// nodal load (node-major, every dof) shared equally among the `multiplicity[node]` subdomains holding a node, so
 /// that Σ_i L_i f_i = f (L_i: local -> body).
-GroupSource subdomain_source(const Subdomain& s, const Eigen::VectorXd& nodal_load,
+GroupSource subdomain_source(const Subdomain& s, int body_index, const Eigen::VectorXd& nodal_load,
                              const std::vector<int>& multiplicity);
 
 /// Tears body `b` of the model along `partition`. Throws PartitionError listing every problem of the partition

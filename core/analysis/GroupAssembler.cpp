@@ -1,11 +1,18 @@
 #include "analysis/GroupAssembler.h"
 
+#include <algorithm>
 #include <numeric>
 #include <stdexcept>
 
 #include "fem/Assembler.h"
 
 namespace rollsim {
+
+void GroupAssembler::add(GroupSource source) {
+  states_.push_back(IntegrationState::initial(*source.body));
+  evaluations_.push_back(0);
+  sources_.push_back(std::move(source));
+}
 
 void GroupAssembler::assemble(const std::vector<size_t>& groups, const std::vector<Eigen::VectorXd>& u_free,
                               double load_factor, BlockSystem& sys) const {
@@ -21,7 +28,49 @@ void GroupAssembler::assemble(const std::vector<size_t>& groups, const std::vect
     Eigen::VectorXd f_int;
     Assembler(*src.body, *src.dofs).assemble(u, group.K, f_int);
     group.f = src.dofs->restrict_to_free(load_factor * src.nodal_load) - f_int;
+    ++evaluations_[g];
   }
+}
+
+InvertedElement GroupAssembler::assemble_newton(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
+                                                const std::vector<Eigen::VectorXd>& u_free, Factors at,
+                                                BlockSystem& sys) {
+  std::vector<char> with_tangent(sources_.size(), 0);
+  for (size_t g : tangent) with_tangent[g] = 1;
+  for (size_t g : which) {
+    const GroupSource& src = sources_[g];
+    const Eigen::VectorXd u = src.dofs->expand(u_free[g], at.prescribed);
+    Eigen::VectorXd v;
+    if (at.prescribed_step != 0.0) v = src.dofs->expand(Eigen::VectorXd::Zero(u_free[g].size()), at.prescribed_step);
+    Group& group = sys.groups[g];
+    Eigen::VectorXd f_int;
+    const int bad = Assembler(*src.body, *src.dofs)
+                        .assemble(u, with_tangent[g] ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
+    if (bad >= 0) return InvertedElement{static_cast<int>(g), bad};
+    group.f = src.dofs->restrict_to_free(at.load * src.nodal_load) - f_int;
+    evaluations_[g] += with_tangent[g];
+  }
+  return {};
+}
+
+void GroupAssembler::commit() {
+  for (IntegrationState& s : states_) s.commit();
+}
+
+std::vector<double> GroupAssembler::committed_state(int body, int elements) const {
+  std::vector<double> all;
+  for (size_t g = 0; g < sources_.size(); ++g) {
+    const GroupSource& src = sources_[g];
+    const IntegrationState& st = states_[g];
+    if (src.model_body != body || st.per_element == 0) continue;
+    if (src.body_elements.empty()) return st.committed;
+    const size_t per = static_cast<size_t>(st.per_element);
+    all.resize(per * static_cast<size_t>(elements), 0.0);
+    for (size_t e = 0; e < src.body_elements.size(); ++e)
+      std::copy_n(st.committed.begin() + static_cast<std::ptrdiff_t>(per * e), per,
+                  all.begin() + static_cast<std::ptrdiff_t>(per * static_cast<size_t>(src.body_elements[e])));
+  }
+  return all;
 }
 
 std::vector<size_t> all_groups(const BlockSystem& sys) {

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "fem/Assembler.h"
 #include "model/DofMap.h"
 #include "model/Model.h"
 #include "solve/BlockSystem.h"
@@ -18,12 +19,20 @@ struct GroupSource {
   const Body* body = nullptr;
   const DofMap* dofs = nullptr;
   Eigen::VectorXd nodal_load;
+  int model_body = 0;              // the model's body this group belongs to
+  std::vector<int> body_elements;  // local element -> that body's element (empty: the same numbering)
+};
+
+/// Where a Newton assembly stopped: an inverted element (group, local element), or none (group < 0).
+struct InvertedElement {
+  int group = -1, element = -1;
+  explicit operator bool() const { return group >= 0; }
 };
 
 class GroupAssembler {
  public:
-  /// Appends the source of the next group (group order).
-  void add(GroupSource source) { sources_.push_back(std::move(source)); }
+  /// Appends the source of the next group (group order), with its initial integration-point state.
+  void add(GroupSource source);
   size_t size() const { return sources_.size(); }
   const GroupSource& source(size_t g) const { return sources_[g]; }
 
@@ -33,8 +42,31 @@ class GroupAssembler {
   void assemble(const std::vector<size_t>& groups, const std::vector<Eigen::VectorXd>& u_free, double load_factor,
                 BlockSystem& sys) const;
 
+  /// The Newton assembly at the iterate `u_free` (one vector per group), prescribed dofs at `at.prescribed` times
+  /// their value: for the groups in `which`, f_g = r_g = at.load f_ext − f_int(u_g, committed state) and the trial
+  /// state; for those also in `tangent`, K_g, the consistent tangent (the others keep theirs: the selective
+  /// update). With at.prescribed_step ≠ 0, f_int is predicted by the tangent at the prescribed dofs moved on by
+  /// at.prescribed_step times their value (the first iteration of a step). Stops at an inverted element, named.
+  struct Factors {
+    double load = 1, prescribed = 1, prescribed_step = 0;
+  };
+  InvertedElement assemble_newton(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
+                                  const std::vector<Eigen::VectorXd>& u_free, Factors at, BlockSystem& sys);
+  /// True when group g's tangent does not depend on its displacement (a material without state, small strain):
+  /// assembled once, it never needs re-assembly.
+  bool constant_tangent(size_t g) const { return states_[g].per_element == 0; }
+  /// Every group's trial state becomes its committed state (an increment converged).
+  void commit();
+  /// The committed state of the `elements` elements of body `body`, gathered from its groups (element-major;
+  /// empty for a material without state).
+  std::vector<double> committed_state(int body, int elements) const;
+  /// Tangent evaluations per group so far (assemble and assemble_newton with K).
+  const std::vector<long>& tangent_evaluations() const { return evaluations_; }
+
  private:
   std::vector<GroupSource> sources_;
+  std::vector<IntegrationState> states_;
+  mutable std::vector<long> evaluations_;
 };
 
 /// Every group index of a system, ascending.

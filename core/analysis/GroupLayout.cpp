@@ -81,7 +81,7 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
     const Eigen::VectorXd load = external_nodal_load(model, b);
     bg.dec = decompose_body(body, b, *dofs_.back(), load, body.partition, opt);
     for (const Subdomain& s : bg.dec->subdomains)
-      assembler_.add(subdomain_source(s, load, bg.dec->interface.multiplicity));
+      assembler_.add(subdomain_source(s, b, load, bg.dec->interface.multiplicity));
     warnings_.insert(warnings_.end(), bg.dec->warnings.begin(), bg.dec->warnings.end());
     paper_rows_ += bg.dec->paper_convention_multipliers;
     const auto w = row_scaling(*bg.dec, *dofs_.back());
@@ -91,7 +91,7 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
     bg.dec->groups.clear();
   } else {
     sys_.groups.push_back(body_group(model, b, *dofs_.back()));
-    assembler_.add(GroupSource{&body, dofs_.back().get(), external_nodal_load(model, b)});
+    assembler_.add(GroupSource{&body, dofs_.back().get(), external_nodal_load(model, b), b, {}});
   }
   bodies_.push_back(std::move(bg));
 }

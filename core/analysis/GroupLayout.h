@@ -26,7 +26,10 @@ class GroupLayout {
     assembler_.assemble(groups, u_free, load_factor, sys_);
   }
 
+  GroupAssembler& assembler() { return assembler_; }
+  const GroupAssembler& assembler() const { return assembler_; }
   BlockSystem& system() { return sys_; }
+  const BlockSystem& system() const { return sys_; }
   const std::vector<std::unique_ptr<DofMap>>& body_dofs() const { return dofs_; }
   /// Puts the contact rows (blocks on the bodies' free dofs) in front of the interface rows.
   void set_contact(const BodyConstraints& contact);

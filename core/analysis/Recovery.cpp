@@ -7,7 +7,7 @@ namespace rollsim {
 
 namespace {
 template <int D>
-void recover_elements(const Body& body, BodyResults& r) {
+void recover_elements(const Body& body, const std::vector<double>& state, BodyResults& r) {
   using El = SolidElement<D>;
   const Mesh& m = body.mesh;
   const int ne = m.num_elements();
@@ -17,12 +17,19 @@ void recover_elements(const Body& body, BodyResults& r) {
   typename El::Dofs ue, fe;
   std::array<typename El::Stress6, El::NGP> gp;
   const auto material = make_material(body.material);
+  const int ns = material->state_size(), alpha = material->equivalent_plastic_strain_index();
+  const size_t per_element = static_cast<size_t>(El::NGP * ns);
+  const bool stateful = ns > 0 && state.size() == per_element * static_cast<size_t>(ne);
+  if (stateful && alpha >= 0) r.plastic_strain.assign(static_cast<size_t>(ne), 0.0);
   for (int e = 0; e < ne; ++e) {
     const int* conn = m.element(e);
     for (int a = 0; a < El::NN; ++a)
       for (int i = 0; i < D; ++i) ue(a * D + i) = r.displacement[conn[a] * D + i];
     const auto x = element_coords<D>(m, e);
-    El::stresses_and_force(x, *material, body.formulation, ue, gp, fe);
+    const double* committed = stateful ? state.data() + per_element * e : nullptr;
+    El::stresses_and_force(x, *material, body.formulation, ue, gp, fe, committed);
+    if (!r.plastic_strain.empty())
+      for (int p = 0; p < El::NGP; ++p) r.plastic_strain[e] += committed[p * ns + alpha] / El::NGP;
     for (int a = 0; a < El::NN; ++a)
       for (int i = 0; i < D; ++i) r.nodal_force[conn[a] * D + i] += fe(a * D + i);
     for (int c = 0; c < 6; ++c) {
@@ -40,16 +47,17 @@ void recover_elements(const Body& body, BodyResults& r) {
 }
 }  // namespace
 
-BodyResults recover(const Model& model, int b, Eigen::VectorXd displacement, double load_factor) {
+BodyResults recover(const Model& model, int b, Eigen::VectorXd displacement, double load_factor,
+                    const std::vector<double>& state) {
   const Body& body = model.bodies[b];
   BodyResults r;
   r.displacement = std::move(displacement);
   r.nodal_force = -external_nodal_load(model, b);
   if (load_factor != 1.0) r.nodal_force *= load_factor;
   if (body.mesh.dim == 2)
-    recover_elements<2>(body, r);
+    recover_elements<2>(body, state, r);
   else
-    recover_elements<3>(body, r);
+    recover_elements<3>(body, state, r);
   r.subdomain.assign(static_cast<size_t>(body.mesh.num_elements()), 0);
   return r;
 }

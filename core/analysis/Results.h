@@ -17,6 +17,7 @@ struct BodyResults {
   std::vector<std::array<double, 6>> element_stress;  // element mean (xx, yy, zz, xy, yz, zx) [stress]
   std::vector<std::array<double, 6>> nodal_stress;    // extrapolated from Gauss points, averaged at nodes
   std::vector<int> subdomain;                         // per element (0 while bodies are not partitioned)
+  std::vector<double> plastic_strain;  // per element: mean equivalent plastic strain (plastic bodies only) [-]
   // per node, sized only when the model has contact pairs: f·n / tributary length (2D) or area (3D) of each
   // contact point of a slave surface (positive in compression), 0 on every other node [stress]
   Eigen::VectorXd contact_pressure;
@@ -35,11 +36,27 @@ struct ContactResult {
 /// One load increment: every load and prescribed displacement times `load_factor`, solved to equilibrium (its own
 /// active-set loop), with the fields and contact resultants of that state.
 struct IncrementResults {
-  double load_factor = 1;         // i / N
-  int active_set_iterations = 0;  // linear solves of this increment's active-set loop
+  double load_factor = 1;         // i / N (Newton: where the step ended, after any cut-back)
+  int active_set_iterations = 0;  // linear solves of this increment's active-set loop (Newton: its iterations)
+  int newton_iterations = 0;      // Newton driver: iterations of the converged attempt (0: linear driver)
+  int cutbacks = 0;               // Newton driver: failed attempts before this step converged
   long cg_iterations = 0;         // interface CG iterations of those solves (0 for direct strategies)
   std::vector<BodyResults> bodies;
   std::vector<ContactResult> contacts;
+};
+
+/// One Newton iteration, as convergence.csv lists it.
+struct NewtonIteration {
+  int increment = 0;  // converged steps before it + 1
+  int attempt = 0;    // 0, then 1, 2, … after cut-backs of this step
+  int iteration = 0;  // 1-based within the attempt
+  double load_factor = 0;
+  double residual = 0;      // ‖f_ext − f_int − Cᵀλ‖ at the iterate before this iteration's solve [force]
+  double relative = 0;      // residual / the attempt's first residual
+  double correction = 0;    // ‖du‖ of this iteration's solve [length]
+  int refactored = 0;       // groups given a new tangent (and factor) for this iteration's solve
+  int contact_changes = 0;  // frictionless statuses changed by this iteration's solve
+  long cg_iterations = 0;   // interface CG iterations of this iteration's solve
 };
 
 struct Timing {
@@ -68,6 +85,10 @@ struct Results {
   std::vector<IncrementResults> increments;
   Timing timing;
   SolveStats solver;  // what the solver strategy counted over the whole run (factorizations, CG iterations, …)
+  // Newton driver only: every iteration, and the tangent (stiffness) evaluations per group
+  std::vector<NewtonIteration> newton;
+  std::map<std::string, long> stiffness_evaluations;
+  std::string update_policy;  // the Newton driver's update policy ("always", "selective:0.01"); empty: linear
 };
 
 }  // namespace rollsim

@@ -1,6 +1,7 @@
 #include "fem/Assembler.h"
 
 #include <algorithm>
+#include <functional>
 
 #include "fem/ElementLoop.h"
 
@@ -91,6 +92,67 @@ void Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix& K, Eigen::Vecto
         if (s[jj * nd + ii] >= 0) val[s[jj * nd + ii]] += Ke[jj * nd + ii];
     }
   });
+}
+
+IntegrationState IntegrationState::initial(const Body& body) {
+  IntegrationState s;
+  const int points = body.mesh.dim == 2 ? SolidElement<2>::NGP : SolidElement<3>::NGP;
+  s.per_element = points * make_material(body.material)->state_size();
+  s.committed.assign(static_cast<size_t>(s.per_element) * body.mesh.num_elements(), 0.0);
+  s.trial = s.committed;
+  return s;
+}
+
+namespace {
+template <int D>
+int newton_elements(const Body& body, const Eigen::VectorXd& u, const Eigen::VectorXd* v, bool tangent,
+                    IntegrationState& state, const std::function<void(int, const double*, const double*)>& scatter) {
+  using El = SolidElement<D>;
+  const Mesh& m = body.mesh;
+  const auto material = make_material(body.material);
+  typename El::Stiffness Ke;
+  typename El::Dofs ue, ve, fe;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    const int* conn = m.element(e);
+    for (int a = 0; a < El::NN; ++a)
+      for (int i = 0; i < D; ++i) {
+        const Eigen::Index k = static_cast<Eigen::Index>(conn[a]) * D + i;
+        ue(a * D + i) = u[k];
+        ve(a * D + i) = v ? (*v)[k] : 0.0;
+      }
+    const bool moved = v && !ve.isZero(0.0);
+    const size_t at = static_cast<size_t>(e) * state.per_element;
+    const double* c = state.per_element ? state.committed.data() + at : nullptr;
+    double* t = state.per_element ? state.trial.data() + at : nullptr;
+    if (!El::tangent_and_force(element_coords<D>(m, e), *material, body.formulation, ue, c, t,
+                               tangent || moved ? &Ke : nullptr, fe))
+      return e;
+    if (moved) fe.noalias() += Ke * ve;
+    scatter(e, tangent ? Ke.data() : nullptr, fe.data());
+  }
+  return -1;
+}
+}  // namespace
+
+int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::VectorXd& f_int, IntegrationState& state,
+                        const Eigen::VectorXd* v) const {
+  const Mesh& m = body_.mesh;
+  const int nd = m.nodes_per_elem() * m.dim;
+  if (K) *K = pattern_;
+  f_int = Eigen::VectorXd::Zero(dofs_.num_free());
+  double* val = K ? K->valuePtr() : nullptr;
+  std::vector<int> eq(static_cast<size_t>(nd));
+  auto scatter = [&](int e, const double* Ke, const double* fe) {
+    element_equations(m, dofs_, e, eq.data());
+    for (int ii = 0; ii < nd; ++ii)
+      if (eq[ii] >= 0) f_int[eq[ii]] += fe[ii];
+    if (!Ke) return;
+    const int* s = slot_.data() + static_cast<size_t>(e) * nd * nd;
+    for (int k = 0; k < nd * nd; ++k)
+      if (s[k] >= 0) val[s[k]] += Ke[k];
+  };
+  return m.dim == 2 ? newton_elements<2>(body_, u, v, K != nullptr, state, scatter)
+                    : newton_elements<3>(body_, u, v, K != nullptr, state, scatter);
 }
 
 void Assembler::assemble(SparseMatrix& K, Eigen::VectorXd& f_dirichlet) const {

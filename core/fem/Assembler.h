@@ -9,6 +9,17 @@
 
 namespace rollsim {
 
+/// The integration-point state of a group's elements (element-major, Gauss point by Gauss point, state_size()
+/// values each): the state committed at the last converged increment and the trial state of the current iterate.
+struct IntegrationState {
+  int per_element = 0;  // Gauss points × the material's state_size()
+  std::vector<double> committed, trial;
+
+  /// Zero state for every element of `body` (empty for a material without state).
+  static IntegrationState initial(const Body& body);
+  void commit() { committed = trial; }
+};
+
 class Assembler {
  public:
   Assembler(const Body& body, const DofMap& dofs);
@@ -17,6 +28,12 @@ class Assembler {
   /// displacement `u` of every node (node-major, prescribed dofs included). The element kernel is small-strain
   /// and linear today (f_e = K_e u_e); the finite-strain kernel takes its place with the same signature.
   void assemble(const Eigen::VectorXd& u, SparseMatrix& K, Eigen::VectorXd& f_int) const;
+  /// The Newton kernel: f_int from the material's update at every integration point (from `state.committed`,
+  /// writing `state.trial`) and, when K is not null, the consistent tangent K_ff. With `v` (every node's dofs),
+  /// f_int is predicted at u + v by the tangent at u: f_int(u) + K(u) v — the step's prescribed-displacement
+  /// increment enters the first Newton iteration this way. Returns the first inverted element, or -1.
+  int assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::VectorXd& f_int, IntegrationState& state,
+               const Eigen::VectorXd* v = nullptr) const;
   /// K_ff and the load of the prescribed dofs at u_f = 0, f_D = −K_fp u_p: the linear system K_ff u_f = f + f_D.
   void assemble(SparseMatrix& K, Eigen::VectorXd& f_dirichlet) const;
 

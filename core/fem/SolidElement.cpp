@@ -1,6 +1,7 @@
 #include "fem/SolidElement.h"
 
 #include <cmath>
+#include <vector>
 
 namespace rollsim {
 
@@ -112,18 +113,44 @@ void SolidElement<D>::stiffness(const Coords& x, const Material& mat, Formulatio
 
 template <int D>
 bool SolidElement<D>::stresses_and_force(const Coords& x, const Material& mat, Formulation f, const Dofs& ue,
-                                         std::array<Stress6, NGP>& out, Dofs& fe) {
+                                         std::array<Stress6, NGP>& out, Dofs& fe, const double* committed) {
   std::array<GaussData<D>, NGP> g;
   fe.setZero();
   if (!gauss_B<D>(x, f, g)) return false;
+  const int ns = mat.state_size();
+  std::vector<double> initial, trial(static_cast<size_t>(ns));
+  if (!committed && ns > 0) {
+    initial.assign(static_cast<size_t>(NGP * ns), 0.0);
+    committed = initial.data();
+  }
   Deformation d;  // ε in all six components (plane strain: yz = zx = 0)
   Voigt6 stress;
   Tangent6 C;
   for (int p = 0; p < NGP; ++p) {
     d.strain.template head<NS>() = g[p].B * ue;
-    mat.update(d, nullptr, nullptr, stress, C);
+    mat.update(d, ns ? committed + p * ns : nullptr, ns ? trial.data() : nullptr, stress, C);
     fe.noalias() += g[p].B.transpose() * (stress.template head<NS>() * g[p].dv);
     for (int c = 0; c < 6; ++c) out[p][c] = stress(c);
+  }
+  return true;
+}
+
+template <int D>
+bool SolidElement<D>::tangent_and_force(const Coords& x, const Material& mat, Formulation f, const Dofs& ue,
+                                        const double* committed, double* trial, Stiffness* Ke, Dofs& fe) {
+  std::array<GaussData<D>, NGP> g;
+  fe.setZero();
+  if (Ke) Ke->setZero();
+  if (!gauss_B<D>(x, f, g)) return false;
+  const int ns = mat.state_size();
+  Deformation d;
+  Voigt6 stress;
+  Tangent6 C;
+  for (int p = 0; p < NGP; ++p) {
+    d.strain.template head<NS>() = g[p].B * ue;
+    mat.update(d, ns ? committed + p * ns : nullptr, ns ? trial + p * ns : nullptr, stress, C);
+    fe.noalias() += g[p].B.transpose() * (stress.template head<NS>() * g[p].dv);
+    if (Ke) Ke->noalias() += g[p].B.transpose() * (C.template topLeftCorner<NS, NS>() * g[p].dv) * g[p].B;
   }
   return true;
 }

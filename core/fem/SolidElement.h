@@ -21,10 +21,16 @@ struct SolidElement {
 
   /// Element stiffness K_e = sum_gp B^T C B det J w, C the material's initial tangent.
   static void stiffness(const Coords& x, const Material& mat, Formulation f, Stiffness& Ke);
-  /// Stresses at the Gauss points for element displacements ue (the material's update of ε = B ue), and the
-  /// internal force f_e = sum_gp B^T sigma det J w; returns false if the element is inverted.
+  /// Stresses at the Gauss points for element displacements ue (the material's update of ε = B ue from the
+  /// committed state, NGP × state_size values, or the initial state when null), and the internal force
+  /// f_e = sum_gp B^T sigma det J w; returns false if the element is inverted.
   static bool stresses_and_force(const Coords& x, const Material& mat, Formulation f, const Dofs& ue,
-                                 std::array<Stress6, NGP>& out, Dofs& fe);
+                                 std::array<Stress6, NGP>& out, Dofs& fe, const double* committed = nullptr);
+  /// The Newton kernel: f_e as above and, when Ke is not null, the consistent tangent K_e = sum_gp B^T D B det J w
+  /// (D: the material's algorithmic tangent), from the committed state, writing the trial state (NGP ×
+  /// state_size values each; both null for a material without state); false if the element is inverted.
+  static bool tangent_and_force(const Coords& x, const Material& mat, Formulation f, const Dofs& ue,
+                                const double* committed, double* trial, Stiffness* Ke, Dofs& fe);
   /// Corner-node value from Gauss-point values (bilinear/trilinear extrapolation).
   static double extrapolate_to_node(const std::array<double, NGP>& gp, int node);
 };

@@ -26,7 +26,13 @@ void element_stress(const Model&, size_t, const BodyResults& r, int e, double* o
 void element_von_mises(const Model&, size_t, const BodyResults& r, int e, double* out) {
   out[0] = von_mises(r.element_stress[e].data());
 }
+void plastic_strain(const Model&, size_t, const BodyResults& r, int e, double* out) {
+  out[0] = static_cast<size_t>(e) < r.plastic_strain.size() ? r.plastic_strain[e] : 0.0;
+}
 bool has_contact(const Model& m) { return !m.contacts.empty(); }
+bool has_plasticity(const Model& m) {
+  return std::any_of(m.bodies.begin(), m.bodies.end(), [](const Body& b) { return b.material.plastic(); });
+}
 }  // namespace
 
 const std::vector<OutputField>& output_fields() {
@@ -38,6 +44,8 @@ const std::vector<OutputField>& output_fields() {
       {"contact_pressure", "contact pressure", "contact p", "stress", L::Node, 1, true, has_contact, contact_pressure},
       {"stress", "stress (element mean)", "stress", "stress", L::Cell, 6, false, {}, element_stress},
       {"von_mises", "von Mises stress (element mean)", "von Mises", "stress", L::Cell, 1, false, {}, element_von_mises},
+      {"plastic_strain", "equivalent plastic strain (element mean)", "plastic strain", "-", L::Cell, 1, true,
+       has_plasticity, plastic_strain},
   };
   return fields;
 }

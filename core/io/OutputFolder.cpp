@@ -17,7 +17,8 @@ bool is_result_increment(const std::string& name) {  // results_0001.vtu
 }
 
 bool is_final_output(const std::string& name) {
-  return name == "summary.json" || name == "result.vtu" || name == "results.pvd" || is_result_increment(name);
+  return name == "summary.json" || name == "result.vtu" || name == "results.pvd" || name == "convergence.csv" ||
+         is_result_increment(name);
 }
 }  // namespace
 

@@ -54,7 +54,12 @@ json results_section(const Model& m, const Results& r) {
     contact[c.name] = {{"normal_force", c.normal_force}, {"tangential_force", c.tangential_force},
                        {"max_pressure", c.max_pressure}, {m.dim == 2 ? "contact_length" : "contact_area", c.measure},
                        {"active_nodes", c.active_nodes}, {"candidate_nodes", c.candidate_nodes}};
-  return {{"probes", probes}, {"max_abs_displacement", umax}, {"reactions", reactions}, {"contact", contact}};
+  json out = {{"probes", probes}, {"max_abs_displacement", umax}, {"reactions", reactions}, {"contact", contact}};
+  for (size_t b = 0; b < r.bodies.size(); ++b)
+    if (!r.bodies[b].plastic_strain.empty())
+      out["max_plastic_strain"][m.bodies[b].name] =
+          *std::max_element(r.bodies[b].plastic_strain.begin(), r.bodies[b].plastic_strain.end());
+  return out;
 }
 
 // One entry per completed load increment: its load factor, solves, CG iterations and contact resultants.
@@ -65,11 +70,16 @@ json increments_section(const Results& r) {
     json contact = json::object();
     for (const ContactResult& c : inc.contacts)
       contact[c.name] = {{"normal_force", c.normal_force}, {"active_nodes", c.active_nodes}};
-    list.push_back({{"increment", i + 1},
-                    {"load_factor", inc.load_factor},
-                    {"active_set_iterations", inc.active_set_iterations},
-                    {"cg_iterations", inc.cg_iterations},
-                    {"contact", contact}});
+    json entry = {{"increment", i + 1},
+                  {"load_factor", inc.load_factor},
+                  {"active_set_iterations", inc.active_set_iterations},
+                  {"cg_iterations", inc.cg_iterations},
+                  {"contact", contact}};
+    if (!r.update_policy.empty()) {  // the Newton driver
+      entry["newton_iterations"] = inc.newton_iterations;
+      entry["cutbacks"] = inc.cutbacks;
+    }
+    list.push_back(entry);
   }
   return list;
 }
@@ -85,22 +95,30 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   if (r.status.reason != Reason::none) s["reason"] = to_string(r.status.reason);
   if (!r.status.message.empty()) s["message"] = r.status.message;
   s["model"] = model_section(model, r);
-  s["solver"] = {{"mode", run.mode},
-                 {"cg_tolerance", run.cg_tolerance},
-                 {"cg_iterations_total", st.cg_iterations},
-                 {"newton_iterations", r.status.ok() ? 1 : 0},
-                 {"increments", r.load_increments},
-                 {"active_set_iterations", r.active_set_iterations},
-                 {"factorizations", factorizations},
-                 {"threads", run.threads},
-                 {"preconditioner", run.preconditioner},
-                 {"multipliers", run.multipliers},
-                 {"projector", run.projector},
-                 {"blas", run.blas},
-                 {"ordering", st.factor.ordering},
-                 {"factor_nnz", st.factor.nnz_factor},
-                 {"factor_flops", st.factor.flops}};
+  s["solver"] = {
+      {"mode", run.mode},
+      {"cg_tolerance", run.cg_tolerance},
+      {"cg_iterations_total", st.cg_iterations},
+      {"newton_iterations", r.update_policy.empty() ? (r.status.ok() ? 1 : 0) : static_cast<long>(r.newton.size())},
+      {"increments", r.load_increments},
+      {"active_set_iterations", r.active_set_iterations},
+      {"factorizations", factorizations},
+      {"threads", run.threads},
+      {"preconditioner", run.preconditioner},
+      {"multipliers", run.multipliers},
+      {"projector", run.projector},
+      {"blas", run.blas},
+      {"ordering", st.factor.ordering},
+      {"factor_nnz", st.factor.nnz_factor},
+      {"factor_flops", st.factor.flops}};
   if (st.factor.min_pivot_ratio > 0) s["solver"]["min_pivot_ratio"] = st.factor.min_pivot_ratio;
+  s["analysis"] = r.update_policy.empty() ? "linear" : "newton";
+  if (!r.update_policy.empty()) {
+    s["solver"]["update"] = r.update_policy;
+    json evaluations = json::object();
+    for (const auto& [g, n] : r.stiffness_evaluations) evaluations[g] = n;
+    s["solver"]["stiffness_evaluations"] = evaluations;
+  }
   if (st.cg_lambda_max > 0)
     s["solver"]["cg_eigenvalue_estimates"] = {
         {"min", st.cg_lambda_min}, {"max", st.cg_lambda_max}, {"condition", st.cg_lambda_max / st.cg_lambda_min}};

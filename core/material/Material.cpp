@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "material/J2Plasticity.h"
 #include "material/LinearElastic.h"
 
 namespace rollsim {
@@ -20,6 +21,7 @@ Tangent6 Material::initial_tangent() const {
 }
 
 std::unique_ptr<Material> make_material(const MaterialData& data) {
+  if (data.plastic()) return std::make_unique<J2Plasticity>(data);
   return std::make_unique<LinearElastic>(data.E, data.nu);
 }
 

@@ -25,6 +25,8 @@ class Material {
   virtual std::string name() const = 0;
   /// State variables per integration point (0: no state, as for elastic materials).
   virtual int state_size() const { return 0; }
+  /// Where the equivalent plastic strain sits in the state (-1: the material has none).
+  virtual int equivalent_plastic_strain_index() const { return -1; }
   /// σ and the consistent tangent at one integration point from `d` and the committed state (`state_size()`
   /// values); writes the trial state into `trial` (both may be null when state_size() is 0).
   virtual void update(const Deformation& d, const double* committed, double* trial, Voigt6& stress,
@@ -33,8 +35,7 @@ class Material {
   Tangent6 initial_tangent() const;
 };
 
-/// The behaviour for `data`: linear elastic today (the nonlinear layer adds J2 plasticity when a yield stress is
-/// given).
+/// The behaviour for `data`: J2Plasticity when it has a yield stress, else LinearElastic.
 std::unique_ptr<Material> make_material(const MaterialData& data);
 
 /// Von Mises equivalent stress of a 6-component stress (xx, yy, zz, xy, yz, zx).

@@ -13,6 +13,7 @@
 #include "project/PrescribedConflicts.h"
 #include "project/ProjectSchema.h"
 #include "project/RollingProcess.h"
+#include "solve/UpdatePolicy.h"
 
 namespace rollsim {
 
@@ -174,6 +175,52 @@ void check_supports(const json& project, std::vector<Issue>& issues) {
 
 }  // namespace
 
+MaterialData material_data(const json& mat) {
+  MaterialData m;
+  m.E = mat.at("E").get<double>();
+  m.nu = mat.at("nu").get<double>();
+  m.yield_stress = mat.value("yield_stress", 0.0);
+  m.hardening_modulus = mat.value("hardening_modulus", 0.0);
+  m.saturation_stress = mat.value("saturation_stress", 0.0);
+  m.saturation_exponent = mat.value("saturation_exponent", 0.0);
+  return m;
+}
+
+void check_plasticity(const json& materials, std::vector<Issue>& issues) {
+  for (size_t i = 0; i < materials.size(); ++i) {
+    const json& m = materials[i];
+    const std::string path = at("materials", i);
+    const bool has_yield = m.contains("yield_stress");
+    if (m.value("model", "linear_elastic") == "j2_plasticity" && !has_yield)
+      issues.push_back({path + ".yield_stress", "j2_plasticity needs a yield stress"});
+    if (m.value("model", "") == "linear_elastic" && has_yield)
+      issues.push_back(
+          {path + ".model", "linear_elastic has no yield stress: remove yield_stress or say j2_plasticity"});
+    const bool plastic_fields = m.contains("saturation_stress") || m.value("hardening_modulus", 0.0) > 0 ||
+                                m.value("saturation_exponent", 0.0) > 0;
+    if (!has_yield && plastic_fields)
+      issues.push_back({path + ".yield_stress", "hardening is given but no yield stress: the material is elastic"});
+    if (has_yield && m.contains("saturation_stress") &&
+        m["saturation_stress"].get<double>() < m["yield_stress"].get<double>())
+      issues.push_back({path + ".saturation_stress",
+                        "must be at least yield_stress (" + std::to_string(m["yield_stress"].get<double>()) +
+                            "): a saturation below the initial yield stress would soften the material"});
+  }
+}
+
+void check_analysis_type(const json& d, std::vector<Issue>& issues) {
+  bool plastic = false;
+  for (const json& m : d.at("materials")) plastic = plastic || m.contains("yield_stress");
+  const auto a = d.find("analysis");
+  if (plastic && a != d.end() && a->value("type", "auto") == "linear")
+    issues.push_back({"analysis.type", "a material has a yield stress: plasticity needs the newton analysis"});
+  try {
+    make_update_policy(d.at("solver").value("update", "always"));
+  } catch (const std::invalid_argument& e) {
+    issues.push_back({"solver.update", e.what()});
+  }
+}
+
 void check_references(const Project& project, std::vector<Issue>& issues) {
   check_process(project.data, issues);
   if (!issues.empty()) return;  // the generated bodies would repeat the process's problem under their own paths
@@ -183,6 +230,8 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
   if (d.at("materials").empty()) issues.push_back({"materials", "no material: give `materials` or a `process`"});
   check_project_name(d, issues);
   check_unique(d.at("materials"), "materials", issues);
+  check_plasticity(d.at("materials"), issues);
+  check_analysis_type(d, issues);
   check_unique(d.at("bodies"), "bodies", issues);
   check_unique(d.at("probes"), "probes", issues);
   double elements = 0;
@@ -378,6 +427,27 @@ int load_increments(const Project& project) {
   return a == project.data.end() ? 1 : a->value("increments", 1);
 }
 
+std::string analysis_type(const Project& project) {
+  const auto a = project.data.find("analysis");
+  const std::string type = a == project.data.end() ? "auto" : a->value("type", "auto");
+  if (type != "auto") return type;
+  const json expanded = expand_process(project.data);
+  for (const json& m : expanded.at("materials"))
+    if (m.contains("yield_stress")) return "newton";
+  return "linear";
+}
+
+NewtonOptions newton_options(const Project& project) {
+  NewtonOptions o;
+  o.increments = load_increments(project);
+  const auto a = project.data.find("analysis");
+  if (a == project.data.end()) return o;
+  o.max_iterations = a->value("max_iterations", o.max_iterations);
+  o.tolerance = a->value("tolerance", o.tolerance);
+  o.max_cutbacks = a->value("max_cutbacks", o.max_cutbacks);
+  return o;
+}
+
 int max_active_set_iterations(const Project& project) {
   const auto a = project.data.find("analysis");
   return a == project.data.end() ? 50 : a->value("max_active_set_iterations", 50);
@@ -394,7 +464,7 @@ Model build_model(const Project& project) {
     body.name = jb.at("name").get<std::string>();
     body.material_name = jb.at("material").get<std::string>();
     const json& mat = d.at("materials")[static_cast<size_t>(find_named(d.at("materials"), body.material_name))];
-    body.material = {mat.at("E").get<double>(), mat.at("nu").get<double>()};
+    body.material = material_data(mat);
     body.formulation = jb.at("formulation") == "bbar" ? Formulation::BBar : Formulation::Full;
     try {
       body.mesh = make_mesh(jb.at("mesh"), model.dim);

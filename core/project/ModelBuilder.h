@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/NewtonStatic.h"
 #include "model/Model.h"
 #include "project/Project.h"
 #include "solve/SolverStrategy.h"
@@ -18,6 +19,10 @@ SolverOptions solver_options(const Project& project);
 
 /// analysis.increments: the load increments of the run (validated, 1 by default).
 int load_increments(const Project& project);
+/// analysis.type as run: `auto` (the default) is newton when a material has a yield stress, else linear.
+std::string analysis_type(const Project& project);
+/// The Newton driver's settings: analysis.increments, max_iterations, tolerance, max_cutbacks.
+NewtonOptions newton_options(const Project& project);
 /// analysis.max_active_set_iterations (1…1000; 50 when absent).
 int max_active_set_iterations(const Project& project);
 

@@ -208,13 +208,32 @@ Field poisson() {
   return f;
 }
 
-const ObjectSchema kMaterial{"material",
-                             "Linear isotropic elastic material.",
-                             {req(str("name", "material name, unique")),
-                              choice("model", {"linear_elastic"}, "linear_elastic", "constitutive model"),
-                              req(positive("E", "stress", "Young's modulus")), poisson()},
-                             "",
-                             {}};
+Field non_negative(std::string name, std::string unit, std::string doc) {
+  Field f = num(std::move(name), std::move(unit), std::move(doc));
+  f.min = 0.0;
+  return f;
+}
+
+const ObjectSchema kMaterial{
+    "material",
+    "Isotropic material: linear elastic, or elastoplastic (J2, isotropic hardening) when it has a yield stress: "
+    "σ_y(α) = yield_stress + hardening_modulus·α + (saturation_stress − yield_stress)(1 − "
+    "exp(−saturation_exponent·α)), "
+    "α the equivalent plastic strain. A plastic body is solved by the Newton analysis.",
+    {req(str("name", "material name, unique")),
+     [] {
+       Field f = choice("model", {"linear_elastic", "j2_plasticity"}, "",
+                        "constitutive model (default: j2_plasticity when yield_stress is given, else linear_elastic)");
+       f.default_value = json();
+       return f;
+     }(),
+     req(positive("E", "stress", "Young's modulus")), poisson(),
+     positive("yield_stress", "stress", "initial yield stress σ_0 (J2 plasticity)"),
+     def(non_negative("hardening_modulus", "stress", "linear isotropic hardening modulus H"), 0.0),
+     positive("saturation_stress", "stress", "saturation stress σ_∞ ≥ σ_0 of the exponential hardening term"),
+     def(non_negative("saturation_exponent", "-", "exponent δ of the saturation term"), 0.0)},
+    "",
+    {}};
 
 Field where(std::string what) { return req(str("set", "name of a " + what + " of the body")); }
 
@@ -281,6 +300,11 @@ const ObjectSchema& solver_schema() {
       "Linear solver settings.",
       {choice("mode", solver_names(), "direct", "solver strategy (see docs/ARCHITECTURE.md)"),
        def(count("threads", "threads for the factorization (BLAS) and parallel groups", 256), 1),
+       def(str("update",
+               "Newton: which groups get a new tangent and factor at each iteration — always (Mixed I / DD-I) or "
+               "selective[:TOL] (Mixed II / DD-II: a group keeps its factor while ‖r_g‖ ≤ TOL ‖r‖; TOL 0.01 by "
+               "default)"),
+           "always"),
        choice("preconditioner", preconditioner_names(), "none",
               "interface preconditioner of `feti` (none: the paper's unpreconditioned projected CG)"),
        choice("multipliers", multiplier_names(), "nonredundant",
@@ -303,12 +327,33 @@ const ObjectSchema& solver_schema() {
   return s;
 }
 
+Field newton_tolerance() {
+  Field f =
+      def(positive("tolerance", "-", "Newton: ‖r_k‖ / ‖r_1‖ of the out-of-balance force to converge a step"), 1e-8);
+  f.max = 1.0;
+  f.max_exclusive = true;
+  return f;
+}
+
+Field max_cutbacks() {
+  Field f = def(count("max_cutbacks", "Newton: failed steps (each halves the step) before the run is diverged", 50), 8);
+  f.min = 0;
+  return f;
+}
+
 const ObjectSchema kAnalysis{
     "analysis",
-    "How the loads are applied. The analysis is linear: every increment solves the same stiffness with the loads "
-    "and prescribed displacements times its load factor i / N; frictionless contact makes the sequence meaningful "
-    "(each increment's active set starts from the previous one's, so the contact zone grows with the load).",
-    {choice("type", analysis_names(), "linear", "analysis (the nonlinear layer adds Newton with plasticity)"),
+    "How the loads are applied: in N increments, each with every load and prescribed displacement times its load "
+    "factor. `linear` solves the same stiffness at every increment (frictionless contact makes the sequence "
+    "meaningful: each increment's active set starts from the previous one's); `newton` iterates on the residual "
+    "with the consistent tangent (plasticity; the frictionless active set updated at every iteration) and cuts a "
+    "step that does not converge in half. The type is `newton` when a material is plastic and none is given.",
+    {[] {
+       std::vector<std::string> types{"auto"};
+       for (const std::string& n : analysis_names()) types.push_back(n);
+       return choice("type", types, "auto",
+                     "analysis: auto (newton when a material is plastic, else linear), linear or newton");
+     }(),
      def(count("increments", "load increments N: equal proportional steps of every load and prescribed displacement",
                1000),
          1),
@@ -316,7 +361,9 @@ const ObjectSchema kAnalysis{
                "linear solves an increment may take while the frictionless contact statuses change; the run ends "
                "not_converged (iteration_limit) when they still change after that many",
                1000),
-         50)},
+         50),
+     def(count("max_iterations", "Newton: iterations of one step before it is cut back", 200), 25), newton_tolerance(),
+     max_cutbacks()},
     "",
     {}};
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "analysis/LinearStatic.h"
+#include "analysis/NewtonStatic.h"
 #include "project/ModelBuilder.h"
 #include "solve/Blas.h"
 
@@ -35,6 +36,15 @@ Results run_linear(const Project& project, const Model& model, AnalysisObserver*
   const auto solver = make_solver(project.data.at("solver").at("mode").get<std::string>(), options);
   return run_linear_static(model, *solver, observer, load_increments(project), max_active_set_iterations(project));
 }
+
+Results run_newton(const Project& project, const Model& model, AnalysisObserver* observer) {
+  const SolverOptions options = solver_options(project);
+  set_library_threads(options.threads);
+  const json& s = project.data.at("solver");
+  const auto solver = make_solver(s.at("mode").get<std::string>(), options);
+  const auto policy = make_update_policy(s.value("update", "always"));
+  return run_newton_static(model, *solver, *policy, observer, newton_options(project));
+}
 }  // namespace
 
 const std::vector<AnalysisInfo>& analysis_registry() {
@@ -43,6 +53,10 @@ const std::vector<AnalysisInfo>& analysis_registry() {
        "small-strain linear elasticity with contact: load increments, each solved to a settled frictionless active "
        "set",
        run_linear},
+      {"newton",
+       "incremental Newton analysis: J2 plasticity with the consistent tangent, the frictionless active set updated "
+       "at every iteration, cut-back of steps that do not converge, the update policy (always / selective) per group",
+       run_newton},
   };
   return registry;
 }
@@ -54,8 +68,7 @@ std::vector<std::string> analysis_names() {
 }
 
 Results run_project(const Project& project, const Model& model, AnalysisObserver* observer) {
-  const auto a = project.data.find("analysis");
-  const std::string type = a == project.data.end() ? "linear" : a->value("type", "linear");
+  const std::string type = analysis_type(project);
   for (const AnalysisInfo& info : analysis_registry())
     if (info.name == type) {
       Results r = info.run(project, model, observer);

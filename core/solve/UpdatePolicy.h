@@ -18,6 +18,8 @@ class UpdatePolicy {
   /// The groups to re-assemble and refactor, ascending, from each group's relative residual ‖r_g‖ / ‖r_g,0‖ (empty:
   /// not known yet, e.g. before the first iteration of an increment).
   virtual std::vector<size_t> select(const BlockSystem& sys, const std::vector<double>& group_residuals) const = 0;
+  /// False when select() ignores the residuals (the driver then need not compute them before assembling).
+  virtual bool uses_residuals() const { return true; }
 };
 
 /// Mixed I / DD-I: every group, every iteration.
@@ -25,9 +27,28 @@ class AlwaysUpdate final : public UpdatePolicy {
  public:
   std::string name() const override { return "always"; }
   std::vector<size_t> select(const BlockSystem& sys, const std::vector<double>& group_residuals) const override;
+  bool uses_residuals() const override { return false; }
 };
 
-/// "always" (the nonlinear layer adds "selective"); anything else throws std::invalid_argument naming the valid ones.
+/// Mixed II / DD-II (paper §1): a group keeps its stiffness and factor while its residual norm is at most
+/// `tolerance` × the total residual norm (‖r_g‖ ≤ tol ‖r‖); the others are re-assembled and refactored. Without
+/// residuals (none known yet) every group is selected.
+class SelectiveUpdate final : public UpdatePolicy {
+ public:
+  explicit SelectiveUpdate(double tolerance) : tolerance_(tolerance) {}
+  std::string name() const override;
+  std::vector<size_t> select(const BlockSystem& sys, const std::vector<double>& group_residuals) const override;
+  double tolerance() const { return tolerance_; }
+
+ private:
+  double tolerance_;
+};
+
+/// Default tolerance of "selective" (the paper's examples).
+constexpr double kSelectiveTolerance = 0.01;
+
+/// "always", "selective" or "selective:TOL" (0 < TOL < 1); anything else throws std::invalid_argument naming the
+/// valid ones.
 std::unique_ptr<UpdatePolicy> make_update_policy(const std::string& name);
 
 /// Bumps the version of each group in `groups` (their K was just re-assembled): what the strategies refactor.

@@ -1,0 +1,314 @@
+#include "analysis/NewtonStatic.h"
+
+#include <cmath>
+#include <cstdio>
+#include <tuple>
+
+#include "analysis/ConstraintAssembly.h"
+#include "analysis/ContactResults.h"
+#include "analysis/DriverSteps.h"
+#include "analysis/GroupLayout.h"
+#include "analysis/LinearStatic.h"
+#include "analysis/Recovery.h"
+#include "contact/ContactConstraints.h"
+#include "solve/Stopwatch.h"
+
+namespace rollsim {
+
+namespace {
+
+/// How one attempt at a step ended: converged, cancelled, or failed with a cause (then cut back and retried).
+struct Attempt {
+  RunStatus status;
+  std::string cause;  // why it failed (empty when converged or cancelled)
+  int iterations = 0;
+};
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+/// The run: the block system, the current iterate (u per group, λ, active set) and the last converged state.
+class NewtonRun {
+ public:
+  NewtonRun(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy, AnalysisObserver& obs,
+            const NewtonOptions& opt)
+      : model_(model),
+        solver_(solver),
+        policy_(policy),
+        obs_(obs),
+        opt_(opt),
+        layout_(model, solver.uses_subdomains(), multiplier_choice(solver.options())) {
+    for (const Group& g : layout_.system().groups) u_.push_back(Eigen::VectorXd::Zero(g.R.rows()));
+    try {
+      pairs_ = search_contacts(model);
+    } catch (const std::runtime_error& e) {
+      throw AnalysisError(e.what());
+    }
+    save();
+  }
+
+  Results run();
+
+ private:
+  Attempt attempt(int increment, int attempt_no, double from, double lf);
+  void set_constraints(double lf);
+  /// Residuals (and trial states) of `which`, tangents of `tangent`; empty cause when no element inverted.
+  std::string assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
+                       GroupAssembler::Factors at);
+  /// ‖R_g‖ = ‖f_g − C_gᵀλ‖ per group (λ of the last solve when it belongs to the current rows, else 0).
+  std::vector<double> group_residuals() const;
+  std::vector<Eigen::VectorXd> body_displacements(double lf) const;
+  void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
+  void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
+  void recover_into(Results& into, double lf) const;
+
+  const Model& model_;
+  SolverStrategy& solver_;
+  const UpdatePolicy& policy_;
+  AnalysisObserver& obs_;
+  const NewtonOptions& opt_;
+  GroupLayout layout_;
+  std::vector<Eigen::VectorXd> u_;  // free dofs per group, the current iterate
+  std::vector<PairState> pairs_;
+  std::vector<ConstraintRow> rows_;
+  BodyConstraints contact_;
+  Eigen::VectorXd lambda_;
+  bool lambda_valid_ = false;  // λ belongs to the current constraint rows
+  bool assembled_once_ = false;
+  bool solved_once_ = false;
+  std::tuple<std::vector<Eigen::VectorXd>, std::vector<PairState>, Eigen::VectorXd, bool> saved_;
+  std::vector<NewtonIteration> log_;
+};
+
+void NewtonRun::set_constraints(double lf) {
+  rows_ = contact_rows(model_, pairs_);
+  contact_ = body_constraints(rows_, layout_.body_dofs(), lf);
+  layout_.set_contact(contact_);
+  BlockSystem& sys = layout_.system();
+  for (size_t g = 0; g < sys.groups.size(); ++g) sys.d -= sys.groups[g].C * u_[g];  // C du = d − C u
+  if (lambda_.size() != sys.num_multipliers()) lambda_valid_ = false;
+}
+
+std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
+                                GroupAssembler::Factors at) {
+  const InvertedElement bad = layout_.assembler().assemble_newton(which, tangent, u_, at, layout_.system());
+  if (!bad) return "";
+  return "element " + std::to_string(bad.element) + " of group '" + layout_.system().groups[bad.group].name +
+         "' is inverted (det J ≤ 0)";
+}
+
+std::vector<double> NewtonRun::group_residuals() const {
+  const BlockSystem& sys = layout_.system();
+  std::vector<double> r;
+  for (const Group& g : sys.groups) r.push_back(lambda_valid_ ? (g.f - g.C.transpose() * lambda_).norm() : g.f.norm());
+  return r;
+}
+
+std::vector<Eigen::VectorXd> NewtonRun::body_displacements(double lf) const {
+  BlockSolution s;
+  s.u = u_;
+  return full_displacements(layout_.body_dofs(), layout_.body_solution(s), lf);
+}
+
+void NewtonRun::recover_into(Results& into, double lf) const {
+  const std::vector<Eigen::VectorXd> u = body_displacements(lf);
+  into.bodies.clear();
+  for (size_t b = 0; b < model_.bodies.size(); ++b) {
+    const int ne = model_.bodies[b].mesh.num_elements();
+    into.bodies.push_back(
+        recover(model_, static_cast<int>(b), u[b], lf, layout_.assembler().committed_state(static_cast<int>(b), ne)));
+    if (!model_.bodies[b].partition.element_subdomain.empty())
+      into.bodies.back().subdomain = model_.bodies[b].partition.element_subdomain;
+  }
+  const Eigen::VectorXd lc =
+      lambda_valid_ ? Eigen::VectorXd(lambda_.head(contact_.d.size())) : Eigen::VectorXd::Zero(contact_.d.size());
+  contact_results(model_, pairs_, rows_, contact_.kept, lc, into);
+}
+
+double norm(const std::vector<double>& parts) {
+  double s = 0;
+  for (double p : parts) s += p * p;
+  return std::sqrt(s);
+}
+
+double norm(const std::vector<Eigen::VectorXd>& parts) {
+  double s = 0;
+  for (const Eigen::VectorXd& p : parts) s += p.squaredNorm();
+  return std::sqrt(s);
+}
+
+Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
+  BlockSystem& sys = layout_.system();
+  const std::vector<Eigen::VectorXd> u_start = u_;
+  const std::vector<size_t> all = all_groups(sys);
+  double first = 0, correction = 0;
+  int changed = 0;
+  for (int k = 1;; ++k) {
+    if (obs_.cancel_requested())
+      return {{Status::cancelled, Reason::none, "cancelled in increment " + std::to_string(increment)}, "", k - 1};
+    set_constraints(lf);
+    // the first iteration starts from the converged state, the prescribed increment predicted by the tangent
+    const GroupAssembler::Factors at{lf, k == 1 ? from : lf, k == 1 ? lf - from : 0.0};
+    std::vector<size_t> tangent = all;
+    if (assembled_once_ && policy_.uses_residuals()) {  // residuals first: the policy decides from them
+      if (auto cause = assemble(all, {}, at); !cause.empty()) return {{}, cause, k - 1};
+      std::vector<double> r = group_residuals();
+      const double total = norm(r);
+      for (double& x : r) x = total > 0 ? x / total : 0.0;
+      tangent.clear();
+      for (size_t g : policy_.select(sys, r))  // a constant tangent (elastic, small strain) is never re-assembled
+        if (!layout_.assembler().constant_tangent(g)) tangent.push_back(g);
+    }
+    if (auto cause = assemble(assembled_once_ && policy_.uses_residuals() ? tangent : all, tangent, at); !cause.empty())
+      return {{}, cause, k - 1};
+    assembled_once_ = true;
+    const double residual = norm(group_residuals());
+    if (!std::isfinite(residual)) return {{}, "the residual is not a finite number", k - 1};
+    if (k == 1) first = residual;
+    const double relative = first > 0 ? residual / first : 0.0;
+    double step = 0;
+    for (size_t g = 0; g < u_.size(); ++g) step += (u_[g] - u_start[g]).squaredNorm();
+    step = std::sqrt(step);
+    if (k > 1) obs_.on_newton_iteration(increment, k - 1, relative);
+    const bool balanced = residual == 0.0 || (k > 1 && relative <= opt_.tolerance);
+    if (balanced && lambda_valid_ && changed == 0 && correction <= opt_.displacement_tolerance * step)
+      return {{}, "", k - 1};
+    if (k > 1 && relative > 1e6) return {{}, "the residual grew to " + fmt(relative) + " times its first value", k - 1};
+    if (k > opt_.max_iterations)
+      return {{},
+              "no convergence in " + std::to_string(opt_.max_iterations) + " iterations (residual ratio " +
+                  fmt(relative) + ", tolerance " + fmt(opt_.tolerance) + ")",
+              k - 1};
+    mark_updated(sys, tangent);
+    const long cg_before = solver_.stats().cg_iterations;
+    check_floating_groups_held(sys);
+    BlockSolution sol;
+    try {
+      sol = solve_checked(model_, layout_.body_dofs(), solver_, sys, obs_);
+    } catch (const AnalysisError& e) {
+      if (!solved_once_) throw;  // singular before any load took effect: the model itself is not held
+      return {{}, std::string("the tangent is singular (") + e.what() + ")", k - 1};
+    }
+    solved_once_ = true;
+    if (!sol.status.ok()) {
+      if (sol.status.status == Status::cancelled) return {sol.status, "", k - 1};
+      return {{}, "the linear solve did not converge: " + sol.status.message, k - 1};
+    }
+    for (size_t g = 0; g < u_.size(); ++g) u_[g] += sol.u[g];
+    correction = norm(sol.u);
+    lambda_ = sol.lambda;
+    lambda_valid_ = true;
+    changed = 0;
+    if (has_unilateral(model_)) {
+      std::vector<ConstraintRow> kept;
+      for (int r : contact_.kept) kept.push_back(rows_[r]);
+      changed = update_active_set(model_, kept, lambda_.head(contact_.d.size()), body_displacements(lf), pairs_,
+                                  solver_.multiplier_tolerance());
+      if (changed) lambda_valid_ = false;
+    }
+    log_.push_back({increment, attempt_no, k, lf, residual, relative, correction, static_cast<int>(tangent.size()),
+                    changed, solver_.stats().cg_iterations - cg_before});
+  }
+}
+
+Results NewtonRun::run() {
+  Stopwatch total;
+  Results res;
+  res.load_increments = opt_.increments;
+  res.update_policy = policy_.name();
+  res.dofs = layout_.system().num_dofs();
+  res.rigid_modes = layout_.system().num_rigid_modes();
+  res.subdomains = layout_.subdomains();
+  res.interface_multipliers = layout_.interface_multipliers();
+  res.paper_convention_multipliers = layout_.paper_convention_multipliers();
+  const double nominal = 1.0 / opt_.increments;
+  double lf = 0.0, step = nominal;
+  int increment = 0, cutbacks = 0, attempt_no = 0;
+  while (lf < 1.0) {
+    double target = std::min(1.0, lf + step);
+    if (1.0 - target < 1e-12) target = 1.0;
+    if (attempt_no == 0) obs_.on_increment_begin(increment + 1, opt_.increments);
+    const Attempt a = attempt(increment + 1, attempt_no, lf, target);
+    if (a.status.status == Status::cancelled) {
+      restore();
+      res.status = a.status;
+      break;
+    }
+    if (!a.cause.empty()) {
+      restore();
+      if (cutbacks == opt_.max_cutbacks) {
+        res.status = {Status::diverged, Reason::none,
+                      "increment " + std::to_string(increment + 1) + " (load factor " + fmt(lf) + " to " + fmt(target) +
+                          "): " + a.cause + "; " + std::to_string(cutbacks) +
+                          " cut-backs used (analysis.max_cutbacks)"};
+        break;
+      }
+      ++cutbacks;
+      ++attempt_no;
+      step /= 2;
+      continue;
+    }
+    layout_.assembler().commit();
+    save();
+    lf = target;
+    ++increment;
+    IncrementResults inc;
+    inc.load_factor = lf;
+    inc.newton_iterations = a.iterations;
+    inc.active_set_iterations = a.iterations;
+    inc.cutbacks = attempt_no;
+    for (const NewtonIteration& it : log_)
+      if (it.increment == increment && it.attempt == attempt_no) inc.cg_iterations += it.cg_iterations;
+    if (lf < 1.0) {
+      Results fields;
+      recover_into(fields, lf);
+      inc.bodies = std::move(fields.bodies);
+      inc.contacts = std::move(fields.contacts);
+    }
+    res.increments.push_back(std::move(inc));
+    obs_.on_increment_end(increment, opt_.increments);
+    obs_.on_progress(lf);
+    if (attempt_no == 0) step = std::min(2 * step, nominal);  // grow back after a cut-back once a step converges
+    attempt_no = 0;
+  }
+  res.newton = log_;
+  res.active_set_iterations = static_cast<int>(log_.size());
+  res.multipliers = contact_.d.size();
+  res.solver = solver_.stats();
+  res.timing.analyze_s = res.solver.analyze_s;
+  res.timing.factorize_s = res.solver.factorize_s;
+  res.timing.solve_s = res.solver.solve_s;
+  const BlockSystem& sys = layout_.system();
+  for (size_t g = 0; g < sys.groups.size(); ++g)
+    res.stiffness_evaluations[sys.groups[g].name] = layout_.assembler().tangent_evaluations()[g];
+  if (increment > 0 || res.status.ok()) {
+    obs_.on_stage("recover");
+    set_constraints(lf);
+    recover_into(res, lf);
+    if (res.status.ok() && !res.increments.empty()) {
+      res.increments.back().bodies = res.bodies;
+      res.increments.back().contacts = res.contacts;
+    }
+  }
+  res.timing.total_s = total.seconds();
+  return res;
+}
+
+}  // namespace
+
+Results run_newton_static(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy,
+                          AnalysisObserver* observer, const NewtonOptions& options) {
+  if (options.increments < 1 || options.increments > kMaxIncrements)
+    throw AnalysisError("increments must be an integer in [1, " + std::to_string(kMaxIncrements) + "], got " +
+                        std::to_string(options.increments));
+  AnalysisObserver quiet;
+  AnalysisObserver& obs = observer ? *observer : quiet;
+  obs.on_stage("assemble");
+  NewtonRun run(model, solver, policy, obs, options);
+  return run.run();
+}
+
+}  // namespace rollsim

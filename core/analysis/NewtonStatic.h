@@ -1,0 +1,34 @@
+#pragma once
+// Incremental Newton analysis (paper §1): loads and prescribed displacements applied in increments; in each, Newton
+// iterations on the residual r = f_ext − f_int(u, state) − Cᵀλ of every group, each a linear solve of the block
+// system with the chosen strategy (K_g: the consistent tangent; C du = d − C u for the constraints), the frictionless
+// active set updated from every iterate (no inner contact loop). The update policy decides which groups get a new
+// tangent and factor at each iteration (always: Mixed I / DD-I; selective: Mixed II / DD-II). A step that does not
+// converge (iteration limit, a residual that grows or is not finite, an inverted element, a failed linear solve) is
+// cut back and retried from the last converged state; when the cut-backs run out the run ends `diverged`, naming
+// the increment and the cause. Integration-point states are committed only when a step converges.
+#include <string>
+
+#include "analysis/AnalysisError.h"
+#include "analysis/Results.h"
+#include "model/Model.h"
+#include "solve/Observer.h"
+#include "solve/SolverStrategy.h"
+#include "solve/UpdatePolicy.h"
+
+namespace rollsim {
+
+struct NewtonOptions {
+  int increments = 10;                   // equal load steps N (a cut-back halves the current one)
+  int max_iterations = 25;               // Newton iterations of one attempt
+  double tolerance = 1e-8;               // ‖r_k‖ ≤ tolerance × ‖r_1‖ of the attempt
+  double displacement_tolerance = 1e-2;  // and ‖du_k‖ ≤ this × ‖u − u_n‖ (the step's displacement)
+  int max_cutbacks = 8;                  // failed attempts in the whole run before it is declared diverged
+};
+
+/// Runs the Newton analysis; Results::status is converged, cancelled (between iterations: the last converged step
+/// stays the result), not_converged (a linear solve short of its tolerance when no cut-back is left) or diverged.
+Results run_newton_static(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy,
+                          AnalysisObserver* observer = nullptr, const NewtonOptions& options = {});
+
+}  // namespace rollsim

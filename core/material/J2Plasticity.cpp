@@ -1,0 +1,84 @@
+#include "material/J2Plasticity.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "material/LinearElastic.h"
+
+namespace rollsim {
+
+namespace {
+/// Deviatoric projector from engineering strains to deviatoric strain tensor components (shear rows: γ/2).
+Tangent6 deviatoric_projector() {
+  Tangent6 P = Tangent6::Zero();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) P(i, j) = (i == j ? 1.0 : 0.0) - 1.0 / 3.0;
+    P(3 + i, 3 + i) = 0.5;
+  }
+  return P;
+}
+
+/// s : s of a symmetric tensor in Voigt stress order (tensor shear components).
+double contract(const Voigt6& s) { return s.head<3>().squaredNorm() + 2.0 * s.tail<3>().squaredNorm(); }
+}  // namespace
+
+J2Plasticity::J2Plasticity(const MaterialData& data) : data_(data) {
+  const LinearElastic e(data.E, data.nu);
+  G_ = e.mu();
+  K_ = e.lambda() + 2.0 * G_ / 3.0;
+  elastic_ = e.tangent3d();
+}
+
+double J2Plasticity::yield_stress(double a) const {
+  double s = data_.yield_stress + data_.hardening_modulus * a;
+  if (data_.saturation_stress > data_.yield_stress)
+    s += (data_.saturation_stress - data_.yield_stress) * (1.0 - std::exp(-data_.saturation_exponent * a));
+  return s;
+}
+
+double J2Plasticity::hardening_slope(double a) const {
+  double h = data_.hardening_modulus;
+  if (data_.saturation_stress > data_.yield_stress)
+    h += (data_.saturation_stress - data_.yield_stress) * data_.saturation_exponent *
+         std::exp(-data_.saturation_exponent * a);
+  return h;
+}
+
+void J2Plasticity::update(const Deformation& d, const double* committed, double* trial, Voigt6& stress,
+                          Tangent6& tangent) const {
+  const Eigen::Map<const Voigt6> ep_n(committed);
+  const double alpha_n = committed[kAlpha];
+  stress = elastic_ * (d.strain - ep_n);  // elastic trial
+  tangent = elastic_;
+  Eigen::Map<Voigt6> ep(trial);
+  ep = ep_n;
+  trial[kAlpha] = alpha_n;
+  Voigt6 s = stress;
+  const double p = stress.head<3>().sum() / 3.0;
+  s.head<3>().array() -= p;
+  const double q = std::sqrt(1.5 * contract(s));  // von Mises of the trial stress
+  if (q - yield_stress(alpha_n) <= 1e-12 * yield_stress(alpha_n)) return;
+  // Δγ from q − 3G Δγ − σ_y(α_n + Δγ) = 0 (Newton; one step for linear hardening)
+  double dg = 0.0;
+  for (int it = 0; it < 50; ++it) {
+    const double r = q - 3.0 * G_ * dg - yield_stress(alpha_n + dg);
+    const double slope = 3.0 * G_ + hardening_slope(alpha_n + dg);
+    dg += r / slope;
+    if (std::abs(r) <= 1e-13 * q) break;
+  }
+  if (!(dg > 0.0) || !std::isfinite(dg)) throw std::runtime_error("J2 return mapping failed to converge");
+  const Voigt6 n = s / std::sqrt(contract(s));  // unit normal, tensor components
+  const double scale = 1.0 - 3.0 * G_ * dg / q;
+  stress.head<3>() = s.head<3>() * scale + Voigt6::Constant(p).head<3>();
+  stress.tail<3>() = s.tail<3>() * scale;
+  // plastic strain increment Δγ N, N = (3/2) s / q = sqrt(3/2) n; engineering shears twice the tensor ones
+  Voigt6 dep = std::sqrt(1.5) * dg * n;
+  dep.tail<3>() *= 2.0;
+  ep = ep_n + dep;
+  trial[kAlpha] = alpha_n + dg;
+  const double H = hardening_slope(alpha_n + dg);
+  tangent = elastic_ - (6.0 * G_ * G_ * dg / q) * deviatoric_projector() +
+            6.0 * G_ * G_ * (dg / q - 1.0 / (3.0 * G_ + H)) * (n * n.transpose());
+}
+
+}  // namespace rollsim

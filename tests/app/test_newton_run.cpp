@@ -1,0 +1,123 @@
+// `rollsim run` on a plastic project: the Newton analysis is chosen by the material, writes convergence.csv and the
+// plastic strain field, ends `diverged` with exit code 4 and the increment named when no equilibrium exists, and
+// refuses bad plasticity input with exit 2 and the JSON path.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+
+#include <nlohmann/json.hpp>
+
+#include "RunBinary.h"
+
+using json = nlohmann::json;
+
+namespace {
+json plastic_block() {
+  return {{"name", "plastic-block"},
+          {"dimension", 2},
+          {"materials",
+           {{{"name", "steel"}, {"E", 200e3}, {"nu", 0.3}, {"yield_stress", 250.0}, {"hardening_modulus", 2000.0}}}},
+          {"bodies",
+           {{{"name", "block"},
+             {"material", "steel"},
+             {"formulation", "bbar"},
+             {"mesh", {{"type", "block"}, {"nx", 6}, {"ny", 6}, {"lx", 10.0}, {"ly", 10.0}}}}}},
+          {"boundary_conditions",
+           {{{"type", "displacement"}, {"body", "block"}, {"set", "ymin"}, {"uy", 0.0}},
+            {{"type", "displacement"}, {"body", "block"}, {"set", "xmin"}, {"ux", 0.0}},
+            {{"type", "displacement"}, {"body", "block"}, {"set", "ymax"}, {"uy", -0.2}}}},
+          {"analysis", {{"increments", 4}}}};
+}
+
+struct NewtonOutcome {
+  std::string out;
+  RunResult result;
+  json summary;
+};
+
+NewtonOutcome run(const json& project, std::vector<std::string> extra = {}) {
+  NewtonOutcome r;
+  const std::string dir = make_temp_dir("newton");
+  r.out = dir + "/out";
+  write_text(dir + "/p.json", project.dump(1));
+  std::vector<std::string> args{"run", dir + "/p.json", "--out", r.out, "--quiet"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  r.result = run_rollsim(args);
+  const std::string text = read_text(r.out + "/summary.json");
+  if (!text.empty()) r.summary = json::parse(text);
+  return r;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+}  // namespace
+
+TEST(NewtonRun, PlasticProjectRunsNewtonAndWritesItsOutputs) {
+  const NewtonOutcome r = run(plastic_block(), {"--update", "selective"});
+  ASSERT_EQ(r.result.exit_code, 0) << r.result.err;
+  EXPECT_EQ(r.summary["analysis"], "newton");
+  EXPECT_EQ(r.summary["solver"]["update"], "selective:0.01");
+  EXPECT_GT(r.summary["results"]["max_plastic_strain"]["block"].get<double>(), 0.01);
+  ASSERT_EQ(r.summary["increments"].size(), 4u);
+  EXPECT_GE(r.summary["increments"][0]["newton_iterations"].get<int>(), 2);
+  const std::string csv = read_text(r.out + "/convergence.csv");
+  EXPECT_TRUE(contains(csv, "increment,attempt,iteration,load_factor,residual")) << csv;
+  EXPECT_GE(std::count(csv.begin(), csv.end(), '\n'), 9);
+  EXPECT_TRUE(contains(read_text(r.out + "/result.vtu"), "Name=\"plastic_strain\""));
+}
+
+TEST(NewtonRun, NoEquilibriumIsDivergedWithExitCode4) {
+  json p = plastic_block();
+  p["materials"][0]["hardening_modulus"] = 0.0;
+  p["boundary_conditions"][2] = {{"type", "pressure"}, {"body", "block"}, {"surface", "ymax"}, {"value", 400.0}};
+  p["analysis"]["max_cutbacks"] = 2;
+  const NewtonOutcome r = run(p);
+  EXPECT_EQ(r.result.exit_code, 4) << r.result.err;
+  EXPECT_EQ(r.summary["status"], "diverged");
+  EXPECT_TRUE(contains(r.result.err, "diverged: increment")) << r.result.err;
+  EXPECT_TRUE(contains(r.summary["message"].get<std::string>(), "2 cut-backs"));
+  EXPECT_FALSE(read_text(r.out + "/convergence.csv").empty());
+  EXPECT_TRUE(read_text(r.out + "/result.vtu").empty()) << "no fields of a run that failed";
+}
+
+TEST(NewtonRun, BadPlasticityInputIsRefusedWithItsPath) {
+  struct Case {
+    std::string what, path;
+    std::function<void(json&)> edit;
+    std::vector<std::string> extra;
+  };
+  const std::vector<Case> cases = {
+      {"yield stress not positive",
+       "materials[0].yield_stress",
+       [](json& p) { p["materials"][0]["yield_stress"] = 0.0; },
+       {}},
+      {"negative hardening",
+       "materials[0].hardening_modulus",
+       [](json& p) { p["materials"][0]["hardening_modulus"] = -10.0; },
+       {}},
+      {"saturation below yield",
+       "materials[0].saturation_stress",
+       [](json& p) { p["materials"][0]["saturation_stress"] = 100.0; },
+       {}},
+      {"j2 without yield stress",
+       "materials[0].yield_stress",
+       [](json& p) {
+         p["materials"][0].erase("yield_stress");
+         p["materials"][0]["model"] = "j2_plasticity";
+       },
+       {}},
+      {"linear analysis of a plastic body", "analysis.type", [](json& p) { p["analysis"]["type"] = "linear"; }, {}},
+      {"zero increments", "analysis.increments", [](json& p) { p["analysis"]["increments"] = 0; }, {}},
+      {"unknown policy in the project", "solver.update", [](json& p) { p["solver"]["update"] = "selective:2"; }, {}},
+      {"unknown policy on the command line", "--update", [](json&) {}, {"--update", "sometimes"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    json p = plastic_block();
+    c.edit(p);
+    const NewtonOutcome r = run(p, c.extra);
+    EXPECT_EQ(r.result.exit_code, 2) << r.result.err;
+    EXPECT_TRUE(contains(r.result.err, c.path)) << r.result.err;
+    EXPECT_TRUE(r.summary.is_null()) << "nothing written for invalid input";
+  }
+}

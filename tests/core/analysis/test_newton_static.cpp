@@ -1,0 +1,191 @@
+// The Newton driver: a homogeneous plastic compression equals the material point under the same mixed control,
+// converges quadratically, agrees across solver modes and partitions, keeps the factors of elastic groups under the
+// selective policy, cuts back and ends `diverged` naming the increment when no equilibrium exists, and leaves the
+// last converged increment when cancelled.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analysis/NewtonStatic.h"
+#include "material/J2Plasticity.h"
+#include "project/ModelBuilder.h"
+#include "project/Project.h"
+#include "project/RunProject.h"
+
+using namespace rollsim;
+using json = nlohmann::json;
+
+namespace {
+const double E = 200e3, nu = 0.3, sy = 250, H = 2000;
+
+/// A 10 × 10 (× 10) block on rollers at x = 0, y = 0 (z = 0), its top pressed down by `drop`: a homogeneous
+/// state, plane strain in 2D.
+json compression(int dim, double drop, int increments, const std::string& mode = "direct") {
+  json mesh = {{"type", "block"}, {"nx", 4}, {"ny", 4}, {"lx", 10.0}, {"ly", 10.0}};
+  if (dim == 3) mesh.update({{"nz", 2}, {"lz", 10.0}});
+  json bcs = json::array({{{"type", "displacement"}, {"body", "block"}, {"set", "ymin"}, {"uy", 0.0}},
+                          {{"type", "displacement"}, {"body", "block"}, {"set", "xmin"}, {"ux", 0.0}},
+                          {{"type", "displacement"}, {"body", "block"}, {"set", "ymax"}, {"uy", -drop}}});
+  if (dim == 3) bcs.push_back({{"type", "displacement"}, {"body", "block"}, {"set", "zmin"}, {"uz", 0.0}});
+  return {{"name", "compression"},
+          {"dimension", dim},
+          {"materials", {{{"name", "steel"}, {"E", E}, {"nu", nu}, {"yield_stress", sy}, {"hardening_modulus", H}}}},
+          {"bodies", {{{"name", "block"}, {"material", "steel"}, {"formulation", "bbar"}, {"mesh", mesh}}}},
+          {"boundary_conditions", bcs},
+          {"analysis", {{"increments", increments}}},
+          {"solver", {{"mode", mode}, {"cg_tolerance", 1e-10}}}};
+}
+
+Results run(const json& j, AnalysisObserver* obs = nullptr) {
+  const Project p = parse_project(j.dump(), "test.json");
+  return run_project(p, build_model(p), obs);
+}
+
+/// σ_yy of the material point with ε_yy given, the lateral stresses zero (σ_xx; 3D also σ_zz) and, in 2D, ε_zz = 0,
+/// loaded in the same steps: Newton on the free strains with the consistent tangent.
+double material_point(int dim, double strain, int steps) {
+  MaterialData data{E, nu, sy, H, 0, 0};
+  const J2Plasticity m(data);
+  double committed[J2Plasticity::kStateSize] = {}, trial[J2Plasticity::kStateSize];
+  Deformation d;
+  Voigt6 s;
+  Tangent6 C;
+  const std::vector<int> free = dim == 2 ? std::vector<int>{0} : std::vector<int>{0, 2};
+  for (int i = 1; i <= steps; ++i) {
+    d.strain(1) = strain * i / steps;
+    for (int it = 0; it < 50; ++it) {
+      m.update(d, committed, trial, s, C);
+      Eigen::MatrixXd A(free.size(), free.size());
+      Eigen::VectorXd r(free.size());
+      for (size_t a = 0; a < free.size(); ++a) {
+        r(a) = s(free[a]);
+        for (size_t b = 0; b < free.size(); ++b) A(a, b) = C(free[a], free[b]);
+      }
+      if (r.norm() < 1e-12 * sy) break;
+      const Eigen::VectorXd dx = A.lu().solve(-r);
+      for (size_t a = 0; a < free.size(); ++a) d.strain(free[a]) += dx(a);
+    }
+    std::copy(trial, trial + J2Plasticity::kStateSize, committed);
+  }
+  return s(1);
+}
+
+/// σ_yy from the reaction on the top face (the nodes moved down by `drop`): Σ f_y = σ_yy × area.
+double top_stress(const Results& r, int dim, double drop) {
+  const Eigen::VectorXd &f = r.bodies[0].nodal_force, &u = r.bodies[0].displacement;
+  double sum = 0;
+  for (Eigen::Index n = 0; n < u.size() / dim; ++n)
+    if (std::abs(u[n * dim + 1] + drop) < 1e-12) sum += f[n * dim + 1];
+  return sum / (dim == 2 ? 10.0 : 100.0);
+}
+}  // namespace
+
+TEST(NewtonStatic, HomogeneousCompressionEqualsTheMaterialPoint) {
+  for (int dim : {2, 3}) {
+    SCOPED_TRACE(dim);
+    const Results r = run(compression(dim, 0.2, 8));
+    ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
+    ASSERT_FALSE(r.bodies[0].plastic_strain.empty());
+    EXPECT_GT(r.bodies[0].plastic_strain[0], 0.01);
+    const double expected = material_point(dim, -0.02, 8);
+    EXPECT_LT(expected, -sy) << "the state is plastic";
+    EXPECT_NEAR(top_stress(r, dim, 0.2), expected, 1e-6 * std::abs(expected));
+    // every element carries the same stress
+    for (const auto& s : r.bodies[0].element_stress) EXPECT_NEAR(s[1], expected, 1e-6 * std::abs(expected));
+  }
+}
+
+TEST(NewtonStatic, ConvergesQuadratically) {
+  const Results r = run(compression(3, 0.2, 4));
+  ASSERT_EQ(r.status.status, Status::converged);
+  ASSERT_EQ(r.increments.size(), 4u);
+  for (int inc = 1; inc <= 4; ++inc) {
+    std::vector<double> rel;
+    for (const NewtonIteration& it : r.newton)
+      if (it.increment == inc) rel.push_back(it.relative);
+    ASSERT_GE(rel.size(), 3u) << "a plastic step takes a few iterations";
+    // the last two ratios above round-off: log r_{k+1} / log r_k ≈ 2
+    const double a = rel[rel.size() - 2], b = rel[rel.size() - 1];
+    EXPECT_GT(std::log(b) / std::log(a), 1.7) << "increment " << inc << ": " << a << " -> " << b;
+  }
+}
+
+TEST(NewtonStatic, EveryModeAndPartitionAgrees) {
+  json base = compression(2, 0.15, 4);
+  const Results direct = run(base);
+  ASSERT_EQ(direct.status.status, Status::converged);
+  for (const std::string mode : {"skyline", "mixed", "feti"}) {
+    SCOPED_TRACE(mode);
+    json j = compression(2, 0.15, 4, mode);
+    if (mode == "feti") j["bodies"][0]["partition"] = "2x2";
+    const Results r = run(j);
+    ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
+    EXPECT_LE((r.bodies[0].displacement - direct.bodies[0].displacement).norm(),
+              1e-7 * direct.bodies[0].displacement.norm());
+    for (size_t i = 0; i < r.increments.size(); ++i)
+      EXPECT_NEAR(r.increments[i].newton_iterations, direct.increments[i].newton_iterations, 1);
+  }
+}
+
+TEST(NewtonStatic, SelectiveKeepsTheFactorOfAnElasticGroup) {
+  json j = compression(2, 0.2, 4, "mixed");
+  json elastic = j["bodies"][0];
+  elastic["name"] = "pad";
+  elastic["material"] = "soft";
+  j["materials"].push_back({{"name", "soft"}, {"E", E}, {"nu", 0.3}});
+  j["bodies"].push_back(elastic);
+  for (const std::string set : {"ymin", "xmin"}) {
+    json bc = j["boundary_conditions"][set == "ymin" ? 0 : 1];
+    bc["body"] = "pad";
+    j["boundary_conditions"].push_back(bc);
+  }
+  j["boundary_conditions"].push_back({{"type", "displacement"}, {"body", "pad"}, {"set", "ymax"}, {"uy", -0.005}});
+  const Results always = run(j);
+  j["solver"]["update"] = "selective";
+  const Results selective = run(j);
+  ASSERT_EQ(always.status.status, Status::converged) << always.status.message;
+  ASSERT_EQ(selective.status.status, Status::converged) << selective.status.message;
+  EXPECT_EQ(selective.solver.factorizations.at("pad"), 1) << "elastic: factored once";
+  EXPECT_EQ(selective.stiffness_evaluations.at("pad"), 1);
+  EXPECT_GT(always.solver.factorizations.at("pad"), 4);
+  EXPECT_EQ(always.solver.factorizations.at("pad"), always.solver.factorizations.at("block"));
+  for (size_t b = 0; b < 2; ++b)
+    EXPECT_LE((selective.bodies[b].displacement - always.bodies[b].displacement).norm(),
+              1e-7 * always.bodies[b].displacement.norm());
+}
+
+TEST(NewtonStatic, NoEquilibriumEndsDivergedNamingTheIncrement) {
+  // perfectly plastic, pulled by a force beyond its limit load: no equilibrium past it
+  json j = compression(2, 0.0, 4);
+  j["materials"][0]["hardening_modulus"] = 0.0;
+  j["boundary_conditions"].erase(2);
+  j["boundary_conditions"].push_back(
+      {{"type", "pressure"}, {"body", "block"}, {"surface", "ymax"}, {"value", 1.5 * sy}});
+  j["analysis"]["max_cutbacks"] = 3;
+  const Results r = run(j);
+  ASSERT_EQ(r.status.status, Status::diverged) << r.status.message;
+  EXPECT_NE(r.status.message.find("increment"), std::string::npos) << r.status.message;
+  EXPECT_NE(r.status.message.find("3 cut-backs"), std::string::npos) << r.status.message;
+  ASSERT_FALSE(r.increments.empty()) << "the increments below the limit load converged";
+  for (const BodyResults& b : r.bodies) EXPECT_TRUE(b.displacement.allFinite());
+}
+
+namespace {
+struct CancelAfter : AnalysisObserver {
+  int iterations = 0, limit;
+  explicit CancelAfter(int n) : limit(n) {}
+  void on_newton_iteration(int, int, double) override { ++iterations; }
+  bool cancel_requested() const override { return iterations >= limit; }
+};
+}  // namespace
+
+TEST(NewtonStatic, CancelKeepsTheLastConvergedIncrement) {
+  CancelAfter cancel(6);
+  const Results r = run(compression(2, 0.2, 8), &cancel);
+  ASSERT_EQ(r.status.status, Status::cancelled);
+  ASSERT_FALSE(r.increments.empty());
+  ASSERT_EQ(r.bodies.size(), 1u);
+  const double lf = r.increments.back().load_factor;
+  EXPECT_LT(lf, 1.0);
+  EXPECT_NEAR(r.bodies[0].displacement.minCoeff(), -0.2 * lf, 1e-12) << "the fields of the last converged step";
+}
