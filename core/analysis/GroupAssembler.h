@@ -54,7 +54,9 @@ class GroupAssembler {
                                   const std::vector<Eigen::VectorXd>& u_free, Factors at, BlockSystem& sys);
   /// True when group g's tangent does not depend on its displacement (a material without state, small strain):
   /// assembled once, it never needs re-assembly.
-  bool constant_tangent(size_t g) const { return states_[g].per_element == 0; }
+  bool constant_tangent(size_t g) const {
+    return states_[g].per_element == 0 && sources_[g].body->kinematics == Kinematics::Small;
+  }
   /// Every group's trial state becomes its committed state (an increment converged).
   void commit();
   /// The committed state of the `elements` elements of body `body`, gathered from its groups (element-major;

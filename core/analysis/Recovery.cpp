@@ -1,6 +1,7 @@
 #include "analysis/Recovery.h"
 
 #include "fem/ElementLoop.h"
+#include "fem/FiniteStrainElement.h"
 #include "fem/Loads.h"
 
 namespace rollsim {
@@ -27,7 +28,13 @@ void recover_elements(const Body& body, const std::vector<double>& state, BodyRe
       for (int i = 0; i < D; ++i) ue(a * D + i) = r.displacement[conn[a] * D + i];
     const auto x = element_coords<D>(m, e);
     const double* committed = stateful ? state.data() + per_element * e : nullptr;
-    El::stresses_and_force(x, *material, body.formulation, ue, gp, fe, committed);
+    if (body.kinematics == Kinematics::Finite) {  // Cauchy stresses of the current configuration
+      std::vector<double> initial(per_element, 0.0), trial(per_element);
+      FiniteStrainElement<D>::tangent_and_force(x, *material, body.formulation, ue,
+                                                committed ? committed : initial.data(), trial.data(), nullptr, fe, &gp);
+    } else {
+      El::stresses_and_force(x, *material, body.formulation, ue, gp, fe, committed);
+    }
     if (!r.plastic_strain.empty())
       for (int p = 0; p < El::NGP; ++p) r.plastic_strain[e] += committed[p * ns + alpha] / El::NGP;
     for (int a = 0; a < El::NN; ++a)

@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "fem/ElementLoop.h"
+#include "fem/FiniteStrainElement.h"
 
 namespace rollsim {
 
@@ -124,9 +125,13 @@ int newton_elements(const Body& body, const Eigen::VectorXd& u, const Eigen::Vec
     const size_t at = static_cast<size_t>(e) * state.per_element;
     const double* c = state.per_element ? state.committed.data() + at : nullptr;
     double* t = state.per_element ? state.trial.data() + at : nullptr;
-    if (!El::tangent_and_force(element_coords<D>(m, e), *material, body.formulation, ue, c, t,
-                               tangent || moved ? &Ke : nullptr, fe))
-      return e;
+    typename El::Stiffness* K = tangent || moved ? &Ke : nullptr;
+    const bool ok = body.kinematics == Kinematics::Finite
+                        ? FiniteStrainElement<D>::tangent_and_force(element_coords<D>(m, e), *material,
+                                                                    body.formulation, ue, c, t, K, fe)
+                        : El::tangent_and_force(element_coords<D>(m, e), *material, body.formulation, ue, c, t, K, fe);
+    if (!ok) return e;
+    if (K && body.kinematics == Kinematics::Finite) Ke = 0.5 * (Ke + Ke.transpose()).eval();  // CHOLMOD: symmetric
     if (moved) fe.noalias() += Ke * ve;
     scatter(e, tangent ? Ke.data() : nullptr, fe.data());
   }

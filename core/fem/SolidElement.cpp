@@ -103,6 +103,26 @@ Eigen::Matrix<double, SolidElement<D>::NS, SolidElement<D>::NS> tangent(const Ma
 }  // namespace
 
 template <int D>
+bool SolidElement<D>::gradients(const Coords& x, std::array<Gradients, NGP>& dN, std::array<double, NGP>& dv,
+                                Gradients& centre) {
+  const double q = 1.0 / std::sqrt(3.0);
+  Eigen::Matrix<double, NN, 1> N;
+  Eigen::Matrix<double, D, NN> dNxi;
+  for (int p = 0; p <= NGP; ++p) {  // the Gauss points, then the centre
+    double xi[3] = {0, 0, 0};
+    if (p < NGP)
+      for (int i = 0; i < D; ++i) xi[i] = q * natural<D>(p, i);
+    shape<D>(xi, N, dNxi);
+    const Eigen::Matrix<double, D, D> J = dNxi * x.transpose();
+    const double detJ = J.determinant();
+    if (!(detJ > 0.0)) return false;
+    (p < NGP ? dN[p] : centre) = J.inverse() * dNxi;
+    if (p < NGP) dv[p] = detJ;  // unit Gauss weights
+  }
+  return true;
+}
+
+template <int D>
 void SolidElement<D>::stiffness(const Coords& x, const Material& mat, Formulation f, Stiffness& Ke) {
   std::array<GaussData<D>, NGP> g;
   Ke.setZero();

@@ -17,7 +17,13 @@ struct SolidElement {
   using Coords = Eigen::Matrix<double, D, NN>;  // column a = coordinates of node a
   using Stiffness = Eigen::Matrix<double, NDOF, NDOF>;
   using Dofs = Eigen::Matrix<double, NDOF, 1>;
-  using Stress6 = std::array<double, 6>;  // xx, yy, zz, xy, yz, zx
+  using Stress6 = std::array<double, 6>;           // xx, yy, zz, xy, yz, zx
+  using Gradients = Eigen::Matrix<double, D, NN>;  // column a: ∂N_a/∂x
+
+  /// Shape-function gradients with respect to the coordinates x at the Gauss points and at the element centre, and
+  /// det J × weight per Gauss point; false if det J ≤ 0 at a Gauss point (an inverted element).
+  static bool gradients(const Coords& x, std::array<Gradients, NGP>& dN, std::array<double, NGP>& dv,
+                        Gradients& centre);
 
   /// Element stiffness K_e = sum_gp B^T C B det J w, C the material's initial tangent.
   static void stiffness(const Coords& x, const Material& mat, Formulation f, Stiffness& Ke);

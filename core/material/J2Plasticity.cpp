@@ -81,4 +81,31 @@ void J2Plasticity::update(const Deformation& d, const double* committed, double*
             6.0 * G_ * G_ * (dg / q - 1.0 / (3.0 * G_ + H)) * (n * n.transpose());
 }
 
+void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau) const {
+  Eigen::Matrix3d Cp_inv;
+  const double* c = committed;
+  Cp_inv << 1 + c[0], c[3], c[5], c[3], 1 + c[1], c[4], c[5], c[4], 1 + c[2];
+  Deformation d;
+  d.strain = log_strain(F * Cp_inv * F.transpose());  // elastic trial logarithmic strain
+  double log_committed[kStateSize] = {0, 0, 0, 0, 0, 0, committed[kAlpha]}, log_trial[kStateSize];
+  Tangent6 unused;
+  update(d, log_committed, log_trial, tau, unused);
+  std::copy(committed, committed + kStateSize, trial);
+  trial[kAlpha] = log_trial[kAlpha];
+  if (log_trial[kAlpha] == committed[kAlpha]) return;  // elastic: C_p unchanged
+  // ε_e = ε_e trial − Δε_p (coaxial), b_e = exp(2 ε_e), C_p⁻¹ = F⁻¹ b_e F⁻ᵀ
+  const Eigen::Matrix3d Ee = strain_tensor(d.strain - Eigen::Map<const Voigt6>(log_trial));
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(Ee);
+  const Eigen::Vector3d stretch2 = (2 * eig.eigenvalues()).array().exp();
+  const Eigen::Matrix3d be = eig.eigenvectors() * stretch2.asDiagonal() * eig.eigenvectors().transpose();
+  const Eigen::Matrix3d Finv = F.inverse();
+  const Eigen::Matrix3d C = Finv * be * Finv.transpose();
+  trial[0] = C(0, 0) - 1;
+  trial[1] = C(1, 1) - 1;
+  trial[2] = C(2, 2) - 1;
+  trial[3] = 0.5 * (C(0, 1) + C(1, 0));
+  trial[4] = 0.5 * (C(1, 2) + C(2, 1));
+  trial[5] = 0.5 * (C(2, 0) + C(0, 2));
+}
+
 }  // namespace rollsim

@@ -20,6 +20,28 @@ Tangent6 Material::initial_tangent() const {
   return tangent;
 }
 
+Voigt6 log_strain(const Eigen::Matrix3d& b) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(b);
+  const Eigen::Vector3d l = 0.5 * eig.eigenvalues().array().log();
+  const Eigen::Matrix3d E = eig.eigenvectors() * l.asDiagonal() * eig.eigenvectors().transpose();
+  Voigt6 e;
+  e << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0);
+  return e;
+}
+
+Eigen::Matrix3d strain_tensor(const Voigt6& e) {
+  Eigen::Matrix3d E;
+  E << e(0), e(3) / 2, e(5) / 2, e(3) / 2, e(1), e(4) / 2, e(5) / 2, e(4) / 2, e(2);
+  return E;
+}
+
+void Material::update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau) const {
+  Deformation d;
+  d.strain = log_strain(F * F.transpose());
+  Tangent6 unused;
+  update(d, committed, trial, tau, unused);
+}
+
 std::unique_ptr<Material> make_material(const MaterialData& data) {
   if (data.plastic()) return std::make_unique<J2Plasticity>(data);
   return std::make_unique<LinearElastic>(data.E, data.nu);

@@ -13,8 +13,7 @@ namespace rollsim {
 using Voigt6 = Eigen::Matrix<double, 6, 1>;    // xx, yy, zz, xy, yz, zx (engineering shear strains)
 using Tangent6 = Eigen::Matrix<double, 6, 6>;  // dσ/dε in the same order
 
-/// The deformation at an integration point. Small strain today; the finite-strain layer adds the deformation
-/// gradient F.
+/// The deformation at an integration point: the small strain (small-strain kinematics).
 struct Deformation {
   Voigt6 strain = Voigt6::Zero();
 };
@@ -31,12 +30,22 @@ class Material {
   /// values); writes the trial state into `trial` (both may be null when state_size() is 0).
   virtual void update(const Deformation& d, const double* committed, double* trial, Voigt6& stress,
                       Tangent6& tangent) const = 0;
+  /// Finite strain (isotropic, logarithmic elastic strains — Simo 1992): the Kirchhoff stress τ (Voigt, tensor
+  /// components) from the deformation gradient F and the committed state, the trial state written (both null
+  /// without state). This default, for materials without state, is Hencky's hyperelastic law: τ = update(ln V),
+  /// V² = F Fᵀ. Plastic materials override it with the exponential map around their return.
+  virtual void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau) const;
   /// The tangent at zero deformation and the initial state: the stiffness of a linear analysis.
   Tangent6 initial_tangent() const;
 };
 
 /// The behaviour for `data`: J2Plasticity when it has a yield stress, else LinearElastic.
 std::unique_ptr<Material> make_material(const MaterialData& data);
+
+/// ½ ln(b) of a symmetric positive definite b, as a Voigt strain (engineering shears).
+Voigt6 log_strain(const Eigen::Matrix3d& b);
+/// The symmetric tensor of a Voigt strain (engineering shears halved), and back.
+Eigen::Matrix3d strain_tensor(const Voigt6& e);
 
 /// Von Mises equivalent stress of a 6-component stress (xx, yy, zz, xy, yz, zx).
 double von_mises(const double* s6);

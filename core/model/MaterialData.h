@@ -3,8 +3,12 @@
 // gives them. The behaviour (stress and tangent from the deformation and the state) lives in material/.
 namespace rollsim {
 
-/// Element formulation of a body: full 2×2(×2) Gauss integration or selective B-bar (mean dilatation).
+/// Element formulation of a body: full 2×2(×2) Gauss integration or selective B-bar (mean dilatation; with finite
+/// kinematics its counterpart F-bar).
 enum class Formulation { Full, BBar };
+
+/// Kinematics of a body: small strain, or finite strain (large displacements and rotations, logarithmic strains).
+enum class Kinematics { Small, Finite };
 
 /// Parameters of an isotropic material [project units]. A body is plastic (J2, isotropic hardening) when its
 /// material has a yield stress: σ_y(α) = σ_0 + H α + (σ_∞ − σ_0)(1 − exp(−δ α)), α the equivalent plastic strain

@@ -18,6 +18,7 @@ struct Body {
   MaterialData material;      // its parameters (material/ makes the behaviour from them)
   std::string material_name;  // the project's name of that material
   Formulation formulation = Formulation::Full;
+  Kinematics kinematics = Kinematics::Small;
   Partition partition;  // subdomains for `feti` (one subdomain: undivided)
 };
 

@@ -208,12 +208,20 @@ void check_plasticity(const json& materials, std::vector<Issue>& issues) {
   }
 }
 
+/// Why the model needs the Newton analysis ("" if it does not): a plastic material or finite kinematics.
+std::string nonlinear_because(const json& d) {
+  for (const json& m : d.at("materials"))
+    if (m.contains("yield_stress")) return "material '" + m.value("name", "") + "' has a yield stress";
+  for (const json& b : d.at("bodies"))
+    if (b.value("kinematics", "small") == "finite") return "body '" + b.value("name", "") + "' has finite kinematics";
+  return "";
+}
+
 void check_analysis_type(const json& d, std::vector<Issue>& issues) {
-  bool plastic = false;
-  for (const json& m : d.at("materials")) plastic = plastic || m.contains("yield_stress");
   const auto a = d.find("analysis");
-  if (plastic && a != d.end() && a->value("type", "auto") == "linear")
-    issues.push_back({"analysis.type", "a material has a yield stress: plasticity needs the newton analysis"});
+  if (const std::string why = nonlinear_because(d);
+      !why.empty() && a != d.end() && a->value("type", "auto") == "linear")
+    issues.push_back({"analysis.type", why + ": it needs the newton analysis"});
   try {
     make_update_policy(d.at("solver").value("update", "always"));
   } catch (const std::invalid_argument& e) {
@@ -431,10 +439,7 @@ std::string analysis_type(const Project& project) {
   const auto a = project.data.find("analysis");
   const std::string type = a == project.data.end() ? "auto" : a->value("type", "auto");
   if (type != "auto") return type;
-  const json expanded = expand_process(project.data);
-  for (const json& m : expanded.at("materials"))
-    if (m.contains("yield_stress")) return "newton";
-  return "linear";
+  return nonlinear_because(expand_process(project.data)).empty() ? "linear" : "newton";
 }
 
 NewtonOptions newton_options(const Project& project) {
@@ -466,6 +471,7 @@ Model build_model(const Project& project) {
     const json& mat = d.at("materials")[static_cast<size_t>(find_named(d.at("materials"), body.material_name))];
     body.material = material_data(mat);
     body.formulation = jb.at("formulation") == "bbar" ? Formulation::BBar : Formulation::Full;
+    body.kinematics = jb.value("kinematics", "small") == "finite" ? Kinematics::Finite : Kinematics::Small;
     try {
       body.mesh = make_mesh(jb.at("mesh"), model.dim);
       check_element_orientation(body.mesh);

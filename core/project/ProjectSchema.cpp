@@ -179,7 +179,11 @@ const ObjectSchema kBody{
     "A deformable body: mesh, material, element formulation, extra node sets.",
     {req(str("name", "body name, unique")), req(str("material", "name of an entry of `materials`")),
      choice("formulation", {"full", "bbar"}, "full",
-            "full: 2×2(×2) Gauss integration; bbar: selective B-bar, for near-incompressibility"),
+            "full: 2×2(×2) Gauss integration; bbar: selective B-bar (F-bar with finite kinematics), for "
+            "near-incompressibility and plastic flow"),
+     choice("kinematics", {"small", "finite"}, "small",
+            "small strain, or finite strain (large displacements and rotations; logarithmic strains, the Newton "
+            "analysis)"),
      [] {
        Field f;
        f.name = "mesh";

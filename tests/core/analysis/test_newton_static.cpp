@@ -189,3 +189,24 @@ TEST(NewtonStatic, CancelKeepsTheLastConvergedIncrement) {
   EXPECT_LT(lf, 1.0);
   EXPECT_NEAR(r.bodies[0].displacement.minCoeff(), -0.2 * lf, 1e-12) << "the fields of the last converged step";
 }
+
+TEST(NewtonStatic, LargeStrainUniaxialTensionMatchesTheClosedForm) {
+  // a unit bar stretched by 50 %: with logarithmic strains the return is the small-strain one on ε = ln λ, so the
+  // Kirchhoff stress is τ = (σ_y + H ε) / (1 + H / E) and the force τ A_0 / λ (σ = τ / J, area A_0 λ_t² = A_0 J / λ)
+  json j = compression(3, -0.5, 10);
+  j["bodies"][0]["mesh"] = {{"type", "block"}, {"nx", 2}, {"ny", 2}, {"nz", 2}, {"lx", 1.0}, {"ly", 1.0}, {"lz", 1.0}};
+  j["bodies"][0]["kinematics"] = "finite";
+  const Results r = run(j);
+  ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
+  const double lambda = 1.5, eps = std::log(lambda);
+  const double tau = (sy + H * eps) / (1 + H / E);
+  const Eigen::VectorXd &f = r.bodies[0].nodal_force, &u = r.bodies[0].displacement;
+  double force = 0;
+  for (Eigen::Index n = 0; n < u.size() / 3; ++n)
+    if (std::abs(u[n * 3 + 1] - 0.5) < 1e-12) force += f[n * 3 + 1];
+  EXPECT_NEAR(force, tau / lambda, 1e-6 * tau) << "small strain would give " << (sy + H * 0.5) / (1 + H / E);
+  // the lateral contraction is plastic incompressibility plus the elastic part: λ_t² λ = exp((1 − 2ν) τ / E)
+  const double lateral = std::sqrt(std::exp((1 - 2 * nu) * tau / E) / lambda);
+  EXPECT_NEAR(u.maxCoeff(), 0.5, 1e-12);
+  EXPECT_NEAR(1 + u.minCoeff(), lateral, 1e-6);
+}

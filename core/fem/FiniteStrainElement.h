@@ -1,0 +1,29 @@
+#pragma once
+// Finite-strain kernel of the Q4 (plane strain) and H8 elements: total displacements on the reference mesh, the
+// spatial (updated-Lagrangian) form f_a = ∫_V0 τ ∇_x N_a dV0 with τ the Kirchhoff stress of the material's
+// finite-strain update (Material::update_finite), and — for the `bbar` formulation — F-bar (de Souza Neto, Perić,
+// Dunavant & Owen 1996): F̄ = (J_0 / J)^{1/d} F with J_0 at the element centre, which keeps isochoric plastic flow
+// from locking. The tangent is the exact linearisation (geometric stiffness and the F-bar term included) with the
+// material's spatial modulus dτ/d(∇_x u) taken by central differences of τ(F̄); it is unsymmetric with F-bar, and
+// the assembler keeps its symmetric part (CHOLMOD factors the bodies).
+#include "fem/SolidElement.h"
+
+namespace rollsim {
+
+template <int D>
+struct FiniteStrainElement {
+  using El = SolidElement<D>;
+  using Stress6 = typename El::Stress6;
+
+  /// f_e (and, when Ke is not null, the full tangent) at element displacements ue; stresses (if not null): the
+  /// Cauchy stress σ = τ / J at every Gauss point. State as in SolidElement::tangent_and_force. False if inverted.
+  static bool tangent_and_force(const typename El::Coords& X, const Material& mat, Formulation f,
+                                const typename El::Dofs& ue, const double* committed, double* trial,
+                                typename El::Stiffness* Ke, typename El::Dofs& fe,
+                                std::array<Stress6, El::NGP>* stresses = nullptr);
+};
+
+extern template struct FiniteStrainElement<2>;
+extern template struct FiniteStrainElement<3>;
+
+}  // namespace rollsim
