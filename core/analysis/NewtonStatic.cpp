@@ -219,7 +219,7 @@ Results NewtonRun::run() {
   Results res;
   res.load_increments = opt_.increments;
   res.update_policy = policy_.name();
-  res.dofs = layout_.system().num_dofs();
+  for (const Eigen::VectorXd& u : u_) res.dofs += u.size();
   res.rigid_modes = layout_.system().num_rigid_modes();
   res.subdomains = layout_.subdomains();
   res.interface_multipliers = layout_.interface_multipliers();
