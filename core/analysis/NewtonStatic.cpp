@@ -1,5 +1,6 @@
 #include "analysis/NewtonStatic.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -61,6 +62,11 @@ class NewtonRun {
   /// ‖R_g‖ = ‖f_g − C_gᵀλ‖ per group (λ of the last solve when it belongs to the current rows, else 0).
   std::vector<double> group_residuals() const;
   std::vector<Eigen::VectorXd> body_displacements(double lf) const;
+  /// du · (r − Cᵀλ) over the groups (the residual's work along the step).
+  double energy(const std::vector<Eigen::VectorXd>& du) const;
+  /// One secant step on s(η) = du · (r(u_prev + η du) − Cᵀλ) when the full step leaves |s(1)| > |s(0)| / 2
+  /// (Crisfield 1991, §9.3): moves the iterate back to u_prev + η du and re-assembles there.
+  std::string line_search(const std::vector<size_t>& tangent, GroupAssembler::Factors at, double& eta);
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
@@ -79,6 +85,9 @@ class NewtonRun {
   bool lambda_valid_ = false;  // λ belongs to the current constraint rows
   bool assembled_once_ = false;
   bool solved_once_ = false;
+  bool refresh_all_ = false;
+  std::vector<Eigen::VectorXd> previous_, step_;  // the iterate before the last solve, and its correction
+  double slope_ = 0;  // after a cut-back: every group gets a new tangent and factor (none is current)
   std::tuple<std::vector<Eigen::VectorXd>, std::vector<PairState>, Eigen::VectorXd, bool> saved_;
   std::vector<NewtonIteration> log_;
 };
@@ -140,6 +149,23 @@ double norm(const std::vector<Eigen::VectorXd>& parts) {
   return std::sqrt(s);
 }
 
+double NewtonRun::energy(const std::vector<Eigen::VectorXd>& du) const {
+  const BlockSystem& sys = layout_.system();
+  double s = 0;
+  for (size_t g = 0; g < du.size(); ++g) s += du[g].dot(sys.groups[g].f - sys.groups[g].C.transpose() * lambda_);
+  return s;
+}
+
+std::string NewtonRun::line_search(const std::vector<size_t>& tangent, GroupAssembler::Factors at, double& eta) {
+  const double s1 = energy(step_);
+  if (!(slope_ > 0) || std::abs(s1) <= 0.5 * slope_) return "";
+  eta = s1 < slope_ ? std::clamp(slope_ / (slope_ - s1), 0.1, 1.0) : 0.5;
+  for (size_t g = 0; g < u_.size(); ++g) u_[g] = previous_[g] + eta * step_[g];
+  set_constraints(at.load);
+  const std::vector<size_t> all = all_groups(layout_.system());
+  return assemble(all, tangent, at);
+}
+
 Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
@@ -153,7 +179,8 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     // the first iteration starts from the converged state, the prescribed increment predicted by the tangent
     const GroupAssembler::Factors at{lf, k == 1 ? from : lf, k == 1 ? lf - from : 0.0};
     std::vector<size_t> tangent = all;
-    if (assembled_once_ && policy_.uses_residuals()) {  // residuals first: the policy decides from them
+    const bool residuals_first = assembled_once_ && !refresh_all_ && policy_.uses_residuals();
+    if (residuals_first) {  // the policy decides from the residuals
       if (auto cause = assemble(all, {}, at); !cause.empty()) return {{}, cause, k - 1};
       std::vector<double> r = group_residuals();
       const double total = norm(r);
@@ -162,9 +189,14 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       for (size_t g : policy_.select(sys, r))  // a constant tangent (elastic, small strain) is never re-assembled
         if (!layout_.assembler().constant_tangent(g)) tangent.push_back(g);
     }
-    if (auto cause = assemble(assembled_once_ && policy_.uses_residuals() ? tangent : all, tangent, at); !cause.empty())
-      return {{}, cause, k - 1};
+    if (auto cause = assemble(residuals_first ? tangent : all, tangent, at); !cause.empty()) return {{}, cause, k - 1};
     assembled_once_ = true;
+    refresh_all_ = false;
+    double eta = 1.0;
+    if (k > 1 && opt_.line_search && lambda_valid_) {
+      if (auto cause = line_search(tangent, at, eta); !cause.empty()) return {{}, cause, k - 1};
+      if (eta != 1.0 && !log_.empty()) log_.back().step_length = eta;
+    }
     const double residual = norm(group_residuals());
     if (!std::isfinite(residual)) return {{}, "the residual is not a finite number", k - 1};
     if (k == 1) first = residual;
@@ -197,10 +229,13 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       if (sol.status.status == Status::cancelled) return {sol.status, "", k - 1};
       return {{}, "the linear solve did not converge: " + sol.status.message, k - 1};
     }
-    for (size_t g = 0; g < u_.size(); ++g) u_[g] += sol.u[g];
-    correction = norm(sol.u);
     lambda_ = sol.lambda;
     lambda_valid_ = true;
+    previous_ = u_;
+    step_ = sol.u;
+    slope_ = energy(step_);  // du · (r(u) − Cᵀλ) with the new λ: the line search's s(0)
+    for (size_t g = 0; g < u_.size(); ++g) u_[g] += sol.u[g];
+    correction = norm(sol.u);
     changed = 0;
     if (has_unilateral(model_)) {
       std::vector<ConstraintRow> kept;
@@ -209,7 +244,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
                                   solver_.multiplier_tolerance());
       if (changed) lambda_valid_ = false;
     }
-    log_.push_back({increment, attempt_no, k, lf, residual, relative, correction, static_cast<int>(tangent.size()),
+    log_.push_back({increment, attempt_no, k, lf, residual, relative, correction, 1.0, static_cast<int>(tangent.size()),
                     changed, solver_.stats().cg_iterations - cg_before});
   }
 }
@@ -239,6 +274,7 @@ Results NewtonRun::run() {
     }
     if (!a.cause.empty()) {
       restore();
+      refresh_all_ = true;
       if (cutbacks == opt_.max_cutbacks) {
         res.status = {Status::diverged, Reason::none,
                       "increment " + std::to_string(increment + 1) + " (load factor " + fmt(lf) + " to " + fmt(target) +

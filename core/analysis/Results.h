@@ -54,6 +54,7 @@ struct NewtonIteration {
   double residual = 0;      // ‖f_ext − f_int − Cᵀλ‖ at the iterate before this iteration's solve [force]
   double relative = 0;      // residual / the attempt's first residual
   double correction = 0;    // ‖du‖ of this iteration's solve [length]
+  double step_length = 1;   // η of the line search that followed (1: the full step kept)
   int refactored = 0;       // groups given a new tangent (and factor) for this iteration's solve
   int contact_changes = 0;  // frictionless statuses changed by this iteration's solve
   long cg_iterations = 0;   // interface CG iterations of this iteration's solve

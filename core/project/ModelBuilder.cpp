@@ -450,6 +450,7 @@ NewtonOptions newton_options(const Project& project) {
   o.max_iterations = a->value("max_iterations", o.max_iterations);
   o.tolerance = a->value("tolerance", o.tolerance);
   o.max_cutbacks = a->value("max_cutbacks", o.max_cutbacks);
+  o.line_search = a->value("line_search", o.line_search);
   return o;
 }
 

@@ -367,7 +367,15 @@ const ObjectSchema kAnalysis{
                1000),
          50),
      def(count("max_iterations", "Newton: iterations of one step before it is cut back", 200), 25), newton_tolerance(),
-     max_cutbacks()},
+     max_cutbacks(),
+     [] {
+       Field f;
+       f.name = "line_search";
+       f.kind = Kind::Boolean;
+       f.default_value = true;
+       f.doc = "Newton: one secant step along the correction when the residual's work along it did not halve";
+       return f;
+     }()},
     "",
     {}};
 
