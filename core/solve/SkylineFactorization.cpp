@@ -37,8 +37,6 @@ inline void dot_block(const double* x, const std::array<const double*, B>& y, in
     for (int b = 0; b < B; ++b) s[b] += x[k] * y[b][k];
 }
 
-constexpr double kPivotTolerance = 1e-13;  // multiplier rows: relative to the largest |A_jj| seen so far
-
 std::string pivot_message(double d, double ajj, int col, int k, int n) {
   char what[200];
   if (d > 0 && ajj > 0)
@@ -143,10 +141,12 @@ long SkylineFactorization::finish_column(int j0, int j) {
   }
   double* col = entry(fj, j);  // col[i - fj] = entry (i, j)
   double dj = col[j - fj];
+  column_scale_ = std::abs(dj);
   for (int i = fj; i < j; ++i) {
     const double u = col[i - fj];
     col[i - fj] = u / a_[diag_[i]];
     dj -= u * col[i - fj];
+    column_scale_ += std::abs(u * col[i - fj]);
   }
   col[j - fj] = dj;
   return flops + 3L * (j - fj);
@@ -154,13 +154,11 @@ long SkylineFactorization::finish_column(int j0, int j) {
 
 int SkylineFactorization::eliminate() {
   long flops = 0;
-  double largest = 0;
   int failed = -1;
   for (int j0 = 0; j0 < n_ && failed < 0; j0 += kBlock) {
     const int nb = std::min(kBlock, n_ - j0);
     flops += reduce_block_rows(j0, nb);
     for (int j = j0; j < j0 + nb; ++j) {
-      largest = std::max(largest, std::abs(a_[diag_[j]]));
       flops += finish_column(j0, j);
       const double d = a_[diag_[j]];
       bool bad = !std::isfinite(d);
@@ -168,8 +166,8 @@ int SkylineFactorization::eliminate() {
         const double ratio = original_diag_[j] > 0 ? d / original_diag_[j] : 0.0;
         stats_.min_pivot_ratio = std::min(stats_.min_pivot_ratio, ratio);
         bad = bad || !(ratio > kMinPivotRatio);
-      } else {
-        bad = bad || std::abs(d) <= kPivotTolerance * largest;
+      } else {  // multiplier rows: d_j = −c K⁻¹ cᵀ of its own scale (1/K), singular when it cancels to round-off
+        bad = bad || std::abs(d) <= kMinPivotRatio * column_scale_;
       }
       if (bad) {
         failed = j;

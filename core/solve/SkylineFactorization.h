@@ -38,6 +38,7 @@ class SkylineFactorization final : public Factorization {
   long predicted_flops() const;
 
   int trailing_;
+  double column_scale_ = 0;  // Σ of the magnitudes that formed the last finished pivot (its cancellation scale)
   int n_ = 0;
   bool analyzed_ = false, factored_ = false;
   std::vector<int> perm_, inverse_, first_;  // first_[j]: first stored row of column j

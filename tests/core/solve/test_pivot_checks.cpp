@@ -65,3 +65,31 @@ TEST(PivotChecks, IllConditionedButSolvableMatricesAreFactored) {
   CholmodFactorization cholmod;
   expect_solved(cholmod, 1e-8);
 }
+
+namespace {
+/// [K cᵀ; c 0] with K = k I (4 × 4) and one or two constraint rows c = (1, 1, 0, 0) (the second a copy: singular).
+SparseMatrix saddle(double k, bool duplicate_row) {
+  const int n = 4, m = duplicate_row ? 2 : 1;
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < n; ++i) t.emplace_back(i, i, k);
+  for (int r = 0; r < m; ++r)
+    for (int i : {0, 1}) {
+      t.emplace_back(n + r, i, 1.0);
+      t.emplace_back(i, n + r, 1.0);
+    }
+  SparseMatrix A(n + m, n + m);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+}  // namespace
+
+TEST(PivotChecks, SkylineJudgesMultiplierPivotsOnTheirOwnScale) {
+  // a multiplier pivot is −c K⁻¹ cᵀ = −2 / k: 2e-7 beside stiffness pivots of 1e7 (Example 2's cylinder) is not
+  // singular — it was refused against 1e-13 of the largest pivot; a repeated constraint row still is
+  SkylineFactorization stiff(1);
+  stiff.factorize(saddle(1e7, false));
+  const Eigen::VectorXd x = (Eigen::VectorXd(5) << 1, 2, 3, 4, 5).finished();
+  EXPECT_LT((stiff.solve(saddle(1e7, false) * x) - x).norm() / x.norm(), 1e-9);
+  SkylineFactorization redundant(2);
+  EXPECT_THROW(redundant.factorize(saddle(1e7, true)), SingularMatrix);
+}
