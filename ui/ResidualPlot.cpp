@@ -15,7 +15,8 @@ namespace rollsim::ui {
 using namespace QtCharts;
 
 namespace {
-constexpr double kFloor = 1e-300;  // a zero residual is drawn here: a log axis shows positive values only
+constexpr double kFloor =
+    1e-300;  // a zero residual is drawn here, below the axis: a log axis shows positive values only
 
 double plotted(double residual) { return residual > 0 && std::isfinite(residual) ? residual : kFloor; }
 
@@ -76,7 +77,8 @@ void ResidualPlot::refresh(const RunSeries& series) {
     if (c.drawn > s.size()) c.drawn = 0;  // the series was cleared behind the plot's back: draw it again
     if (c.drawn == s.size()) continue;
     for (int i = c.drawn; i < s.size(); ++i) {
-      const double r = plotted(s[i].residual);
+      const double r = s[i].residual;
+      if (!(r > 0) || !std::isfinite(r)) continue;  // an exact zero is drawn below the axis, not stretching it
       if (!has_range_) ymin_ = ymax_ = r;
       has_range_ = true;
       ymin_ = std::min(ymin_, r);

@@ -85,9 +85,10 @@ class NewtonRun {
   bool lambda_valid_ = false;  // λ belongs to the current constraint rows
   bool assembled_once_ = false;
   bool solved_once_ = false;
-  bool refresh_all_ = false;
+  bool refresh_all_ = false;  // after a cut-back: every group gets a new tangent and factor (none is current)
   std::vector<Eigen::VectorXd> previous_, step_;  // the iterate before the last solve, and its correction
-  double slope_ = 0;  // after a cut-back: every group gets a new tangent and factor (none is current)
+  double slope_ = 0;                              // the line search's s(0)
+  double assembly_s_ = 0;                         // residual and tangent assembly, over the run
   std::tuple<std::vector<Eigen::VectorXd>, std::vector<PairState>, Eigen::VectorXd, bool> saved_;
   std::vector<NewtonIteration> log_;
 };
@@ -103,7 +104,9 @@ void NewtonRun::set_constraints(double lf) {
 
 std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                                 GroupAssembler::Factors at) {
+  Stopwatch watch;
   const InvertedElement bad = layout_.assembler().assemble_newton(which, tangent, u_, at, layout_.system());
+  assembly_s_ += watch.seconds();
   if (!bad) return "";
   return "element " + std::to_string(bad.element) + " of group '" + layout_.system().groups[bad.group].name +
          "' is inverted (det J ≤ 0)";
@@ -265,7 +268,9 @@ Results NewtonRun::run() {
   while (lf < 1.0) {
     double target = std::min(1.0, lf + step);
     if (1.0 - target < 1e-12) target = 1.0;
-    if (attempt_no == 0) obs_.on_increment_begin(increment + 1, opt_.increments);
+    // the count: the steps done and those left at the current step size (more than N after cut-backs)
+    const int expected = increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9));
+    obs_.on_increment_begin(increment + 1, std::max(expected, increment + 1));
     const Attempt a = attempt(increment + 1, attempt_no, lf, target);
     if (a.status.status == Status::cancelled) {
       restore();
@@ -305,7 +310,7 @@ Results NewtonRun::run() {
       inc.contacts = std::move(fields.contacts);
     }
     res.increments.push_back(std::move(inc));
-    obs_.on_increment_end(increment, opt_.increments);
+    obs_.on_increment_end(increment, increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9)));
     obs_.on_progress(lf);
     if (attempt_no == 0) step = std::min(2 * step, nominal);  // grow back after a cut-back once a step converges
     attempt_no = 0;
@@ -317,6 +322,7 @@ Results NewtonRun::run() {
   res.timing.analyze_s = res.solver.analyze_s;
   res.timing.factorize_s = res.solver.factorize_s;
   res.timing.solve_s = res.solver.solve_s;
+  res.timing.stiffness_s = assembly_s_;
   const BlockSystem& sys = layout_.system();
   for (size_t g = 0; g < sys.groups.size(); ++g)
     res.stiffness_evaluations[sys.groups[g].name] = layout_.assembler().tangent_evaluations()[g];
