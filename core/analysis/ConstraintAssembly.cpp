@@ -14,7 +14,7 @@ BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
       const DofMap& map = *dofs[term.body];
       const int eq = map.equation(term.node, term.comp);
       if (eq < 0) {
-        rhs -= term.coef * (load_factor * map.prescribed(term.node, term.comp));
+        rhs -= term.coef * map.prescribed(term.node, term.comp, load_factor);
       } else {
         free = true;
         t[term.body].emplace_back(static_cast<int>(d.size()), eq, term.coef);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "fem/Assembler.h"
+#include "model/RigidModes.h"
 
 namespace rollsim {
 
@@ -41,16 +42,25 @@ InvertedElement GroupAssembler::assemble_newton(const std::vector<size_t>& which
     const GroupSource& src = sources_[g];
     const Eigen::VectorXd u = src.dofs->expand(u_free[g], at.prescribed);
     Eigen::VectorXd v;
-    if (at.prescribed_step != 0.0) v = src.dofs->expand(Eigen::VectorXd::Zero(u_free[g].size()), at.prescribed_step);
+    if (at.prescribed_step != 0.0) {  // the prescribed dofs' motion over the step (free dofs: zero)
+      const Eigen::VectorXd zero = Eigen::VectorXd::Zero(u_free[g].size());
+      v = src.dofs->expand(zero, at.prescribed + at.prescribed_step) - src.dofs->expand(zero, at.prescribed);
+    }
     Group& group = sys.groups[g];
     Eigen::VectorXd f_int;
     const int bad = Assembler(*src.body, *src.dofs)
                         .assemble(u, with_tangent[g] ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
     if (bad >= 0) return InvertedElement{static_cast<int>(g), bad};
     group.f = src.dofs->restrict_to_free(at.load * src.nodal_load) - f_int;
+    if (with_tangent[g] && group.R.cols() && src.body->kinematics == Kinematics::Finite) follow_kernel(group, src, u);
     evaluations_[g] += with_tangent[g];
   }
   return {};
+}
+
+void GroupAssembler::follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u) {
+  Eigen::MatrixXd R = kernel_basis(src.body->mesh, *src.dofs, &u);
+  if (R.cols() == group.R.cols()) group.R = std::move(R);
 }
 
 void GroupAssembler::commit() {

@@ -37,16 +37,18 @@ class GroupAssembler {
   const GroupSource& source(size_t g) const { return sources_[g]; }
 
   /// For each listed group g: K_g, and f_g = r_g = λ f_ext − f_int(u) on its free dofs, u being the free
-  /// displacement `u_free[g]` (empty: zero) with the prescribed dofs at λ times their value (λ: load factor).
+  /// displacement `u_free[g]` (empty: zero) with the prescribed dofs at load factor λ.
   /// The caller bumps the versions (mark_updated) of the groups whose K it wants refactored.
   void assemble(const std::vector<size_t>& groups, const std::vector<Eigen::VectorXd>& u_free, double load_factor,
                 BlockSystem& sys) const;
 
-  /// The Newton assembly at the iterate `u_free` (one vector per group), prescribed dofs at `at.prescribed` times
-  /// their value: for the groups in `which`, f_g = r_g = at.load f_ext − f_int(u_g, committed state) and the trial
+  /// The Newton assembly at the iterate `u_free` (one vector per group), prescribed dofs at load factor
+  /// `at.prescribed`: for the groups in `which`, f_g = r_g = at.load f_ext − f_int(u_g, committed state) and the trial
   /// state; for those also in `tangent`, K_g, the consistent tangent (the others keep theirs: the selective
-  /// update). With at.prescribed_step ≠ 0, f_int is predicted by the tangent at the prescribed dofs moved on by
-  /// at.prescribed_step times their value (the first iteration of a step). Stops at an inverted element, named.
+  /// update); a floating finite-strain group's kernel R is then taken in the current configuration (its rigid
+  /// rotation turns with it). With at.prescribed_step ≠ 0, f_int is predicted by the tangent at the prescribed dofs
+  /// moved on to load factor at.prescribed + at.prescribed_step (the first iteration of a step). Stops at an inverted
+  /// element, named.
   struct Factors {
     double load = 1, prescribed = 1, prescribed_step = 0;
   };
@@ -66,6 +68,8 @@ class GroupAssembler {
   const std::vector<long>& tangent_evaluations() const { return evaluations_; }
 
  private:
+  static void follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u);
+
   std::vector<GroupSource> sources_;
   std::vector<IntegrationState> states_;
   mutable std::vector<long> evaluations_;

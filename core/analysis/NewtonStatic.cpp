@@ -228,7 +228,9 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       return {{}, std::string("the tangent is singular (") + e.what() + ")", k - 1};
     }
     solved_once_ = true;
-    if (!sol.status.ok()) {
+    // an interface CG that stopped at the round-off level of its data gave the best correction the data allow:
+    // Newton takes it, and its own residual judges the step (an inexact Newton step)
+    if (!sol.status.ok() && sol.status.reason != Reason::round_off) {
       if (sol.status.status == Status::cancelled) return {sol.status, "", k - 1};
       return {{}, "the linear solve did not converge: " + sol.status.message, k - 1};
     }

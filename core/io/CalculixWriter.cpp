@@ -97,12 +97,17 @@ void write_materials(std::ostringstream& s, const Model& m) {
 
 void write_boundary(std::ostringstream& s, const Model& m) {
   std::ostringstream lines;
-  for (const auto& bc : m.displacements)
+  for (const auto& bc : m.displacements) {
+    if (bc.rotation)
+      throw std::invalid_argument("boundary_conditions[" + std::to_string(bc.source) +
+                                  "]: a prescribed rotation is not exported (CalculiX's *BOUNDARY takes one value "
+                                  "per set and component)");
     for (int c = 0; c < m.dim; ++c)
       if (bc.value[c]) {
         const std::string name = calculix_set_name(m, bc.body, bc.set);
         lines << name << ", " << c + 1 << ", " << c + 1 << ", " << num(*bc.value[c]) << "\n";
       }
+  }
   if (!lines.str().empty()) s << "*BOUNDARY\n" << lines.str();
 }
 

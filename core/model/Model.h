@@ -22,13 +22,23 @@ struct Body {
   Partition partition;  // subdomains for `feti` (one subdomain: undivided)
 };
 
-/// Prescribed displacement per component (unset components stay free) on a node set.
+/// A rigid rotation by `angle` [radian, at load factor 1] about the axis through `center` along the unit vector
+/// `axis` (right-hand rule; 2D: the z axis). Applied in increments: at load factor λ the angle is λ · angle.
+struct RigidRotation {
+  std::array<double, 3> center{0.0, 0.0, 0.0};
+  std::array<double, 3> axis{0.0, 0.0, 1.0};
+  double angle = 0.0;
+};
+
+/// Prescribed displacement per component (unset components stay free) on a node set; with a rotation, every
+/// component of every node is prescribed: u(λ) = (R(λ θ) − I)(X − c) + λ value (unset components of value: 0).
 struct DisplacementBC {
   int body = 0;
   std::string set;
   std::vector<int> nodes;
   std::array<std::optional<double>, 3> value;
   int source = -1;  // its index in the project's boundary_conditions (for messages)
+  std::optional<RigidRotation> rotation;
 };
 
 /// Force applied at every node of a set [force].

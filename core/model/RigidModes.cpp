@@ -7,17 +7,23 @@
 
 namespace rollsim {
 
-Eigen::MatrixXd rigid_modes(const Mesh& m) {
+Eigen::MatrixXd rigid_modes(const Mesh& m, const Eigen::VectorXd* u) {
   const int d = m.dim, nmodes = d == 2 ? 3 : 6;
+  std::vector<Eigen::Vector3d> at(m.nodes.size());
+  for (size_t n = 0; n < at.size(); ++n) {
+    at[n] = Eigen::Vector3d(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]);
+    if (u)
+      for (int k = 0; k < d; ++k) at[n][k] += (*u)[static_cast<Eigen::Index>(n) * d + k];
+  }
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (const auto& x : m.nodes) c += Eigen::Vector3d(x[0], x[1], x[2]);
+  for (const Eigen::Vector3d& x : at) c += x;
   c /= std::max(1, m.num_nodes());
   double size = 0;
-  for (const auto& x : m.nodes) size = std::max(size, (Eigen::Vector3d(x[0], x[1], x[2]) - c).norm());
+  for (const Eigen::Vector3d& x : at) size = std::max(size, (x - c).norm());
   if (size == 0) size = 1;
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m.num_nodes()) * d, nmodes);
   for (int n = 0; n < m.num_nodes(); ++n) {
-    const Eigen::Vector3d x = (Eigen::Vector3d(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]) - c) / size;
+    const Eigen::Vector3d x = (at[static_cast<size_t>(n)] - c) / size;
     for (int k = 0; k < d; ++k) R(n * d + k, k) = 1.0;
     if (d == 2) {
       R(n * 2, 2) = -x.y();
@@ -25,8 +31,8 @@ Eigen::MatrixXd rigid_modes(const Mesh& m) {
       continue;
     }
     for (int axis = 0; axis < 3; ++axis) {  // u = e_axis x x
-      const Eigen::Vector3d u = Eigen::Vector3d::Unit(axis).cross(x);
-      for (int k = 0; k < 3; ++k) R(n * 3 + k, 3 + axis) = u[k];
+      const Eigen::Vector3d w = Eigen::Vector3d::Unit(axis).cross(x);
+      for (int k = 0; k < 3; ++k) R(n * 3 + k, 3 + axis) = w[k];
     }
   }
   return R;
@@ -55,8 +61,8 @@ Eigen::MatrixXd free_combinations(const Eigen::MatrixXd& R, const DofMap& dofs) 
 }
 }  // namespace
 
-Eigen::MatrixXd kernel_basis(const Mesh& mesh, const DofMap& dofs) {
-  const Eigen::MatrixXd R = rigid_modes(mesh);
+Eigen::MatrixXd kernel_basis(const Mesh& mesh, const DofMap& dofs, const Eigen::VectorXd* u) {
+  const Eigen::MatrixXd R = rigid_modes(mesh, u);
   const Eigen::MatrixXd V = free_combinations(R, dofs);
   Eigen::MatrixXd Rf(dofs.num_free(), V.cols());
   if (V.cols() == 0) return Rf;

@@ -10,15 +10,17 @@
 namespace rollsim {
 
 /// Columns: translations x, y (, z), then rotations (2D: about z; 3D: about x, y, z), node-major rows,
-/// about the body's centroid and scaled by its size so that all columns are of comparable norm.
-Eigen::MatrixXd rigid_modes(const Mesh& mesh);
+/// about the body's centroid and scaled by its size so that all columns are of comparable norm. With `u` (every
+/// dof, node-major): the modes of the displaced configuration X + u (a finite-strain body's tangent kernel).
+Eigen::MatrixXd rigid_modes(const Mesh& mesh, const Eigen::VectorXd* u = nullptr);
 
 class DofMap;
 
 /// Orthonormal basis of ker K restricted to the free dofs of `dofs` (rows = equation numbers): the rigid
 /// motions that move no prescribed dof (geometric modes checked against the Dirichlet conditions, which is
 /// exact for a connected body of solid elements — no numerical rank decision on K). 0 columns when held.
-Eigen::MatrixXd kernel_basis(const Mesh& mesh, const DofMap& dofs);
+/// With `u`: in the displaced configuration, as rigid_modes.
+Eigen::MatrixXd kernel_basis(const Mesh& mesh, const DofMap& dofs, const Eigen::VectorXd* u = nullptr);
 
 /// Names of the rigid-body motions the displacement conditions of body `b` do not prevent,
 /// e.g. {"translation along y", "rotation about z"}; empty when the body is held.

@@ -1,8 +1,6 @@
 #include "partition/Subdomain.h"
 
 #include <algorithm>
-#include <map>
-#include <optional>
 
 namespace rollsim {
 
@@ -30,26 +28,6 @@ Mesh local_mesh(const Mesh& m, const std::vector<int>& elements, const std::vect
   return local;
 }
 
-/// The body's prescribed values on the local nodes, as displacement conditions on local body 0 (one condition
-/// per distinct set of prescribed components and values).
-std::vector<DisplacementBC> local_conditions(const DofMap& body_dofs, const std::vector<int>& nodes) {
-  using Values = std::array<std::optional<double>, 3>;
-  std::map<Values, std::vector<int>> by_value;
-  for (size_t l = 0; l < nodes.size(); ++l) {
-    Values v;
-    bool any = false;
-    for (int c = 0; c < body_dofs.dim(); ++c)
-      if (body_dofs.equation(nodes[l], c) < 0) {
-        v[c] = body_dofs.prescribed(nodes[l], c);
-        any = true;
-      }
-    if (any) by_value[v].push_back(static_cast<int>(l));
-  }
-  std::vector<DisplacementBC> bcs;
-  for (auto& [v, list] : by_value) bcs.push_back({0, "", std::move(list), v});
-  return bcs;
-}
-
 Subdomain make_subdomain(const Body& body, const DofMap& body_dofs, int id, std::vector<int> elements) {
   Subdomain s;
   s.id = id;
@@ -63,7 +41,8 @@ Subdomain make_subdomain(const Body& body, const DofMap& body_dofs, int id, std:
   s.body.material = body.material;
   s.body.material_name = body.material_name;
   s.body.formulation = body.formulation;
-  s.dofs = std::make_unique<DofMap>(s.body, 0, local_conditions(body_dofs, s.nodes));
+  s.body.kinematics = body.kinematics;  // (finite-strain bodies were solved small-strain under feti before this)
+  s.dofs = std::make_unique<DofMap>(body_dofs, s.nodes);
   s.free_dofs.assign(static_cast<size_t>(s.dofs->num_free()), -1);
   for (size_t l = 0; l < s.nodes.size(); ++l)
     for (int c = 0; c < m.dim; ++c) {

@@ -63,6 +63,22 @@ void check_node_sets(const json& body, const std::string& path, int dim, std::ve
   }
 }
 
+/// The axis of a rotation: given in 3D (not zero), not given in 2D (z).
+void check_rotation(const json& bc, const std::string& path, int dim, std::vector<Issue>& issues) {
+  if (dim == 2) {
+    if (bc.contains("axis")) issues.push_back({path + ".axis", "not allowed in a 2D model (the axis is z)"});
+    if (bc.contains("uz")) issues.push_back({path + ".uz", "not allowed in a 2D model"});
+    return;
+  }
+  if (!bc.contains("axis")) {
+    issues.push_back({path + ".axis", "required in a 3D model: the direction of the rotation axis"});
+    return;
+  }
+  double n2 = 0;
+  for (const auto& a : bc.at("axis")) n2 += a.get<double>() * a.get<double>();
+  if (!(n2 > 0)) issues.push_back({path + ".axis", "must not be the zero vector"});
+}
+
 void check_condition(const json& bc, const std::string& path, const json& bodies, int dim, std::vector<Issue>& issues) {
   const auto body_name = bc.at("body").get<std::string>();
   const int b = find_named(bodies, body_name);
@@ -87,6 +103,7 @@ void check_condition(const json& bc, const std::string& path, const json& bodies
         {path + ".set", "no node set '" + s + "' in body '" + body_name + "' (available: " + join(names) + ")"});
   if (type == "symmetry" && dim == 2 && bc.at("normal") == "z")
     issues.push_back({path + ".normal", "must be x or y in a 2D model"});
+  if (type == "rotation") check_rotation(bc, path, dim, issues);
   if (type == "displacement" || type == "force") {
     const std::string p = type == "force" ? "f" : "u";
     if (dim == 2 && bc.contains(p + "z")) issues.push_back({path + "." + p + "z", "not allowed in a 2D model"});
@@ -164,7 +181,7 @@ void check_supports(const json& project, std::vector<Issue>& issues) {
   for (size_t b = 0; b < bodies.size(); ++b) {
     bool held = in_contact(project, bodies[b].at("name"));
     for (const auto& bc : project.at("boundary_conditions"))
-      held = held || ((bc.at("type") == "displacement" || bc.at("type") == "symmetry") &&
+      held = held || ((bc.at("type") == "displacement" || bc.at("type") == "symmetry" || bc.at("type") == "rotation") &&
                       bc.at("body") == bodies[b].at("name"));
     if (!held)
       issues.push_back({at("bodies", b), "body '" + bodies[b].at("name").get<std::string>() +
@@ -324,6 +341,18 @@ void add_user_sets(Mesh& m, const json& sets, const std::string& path, std::vect
   }
 }
 
+RigidRotation rigid_rotation(const json& bc) {
+  RigidRotation r;
+  r.center = point(bc.at("center"));
+  if (bc.contains("axis")) {
+    r.axis = point(bc.at("axis"));
+    const double n = std::sqrt(r.axis[0] * r.axis[0] + r.axis[1] * r.axis[1] + r.axis[2] * r.axis[2]);
+    for (double& a : r.axis) a /= n;
+  }
+  r.angle = bc.at("angle").get<double>() * (M_PI / 180.0);
+  return r;
+}
+
 void add_condition(Model& model, const json& bc, const json& bodies, int source) {
   const int b = find_named(bodies, bc.at("body").get<std::string>());
   const Mesh& m = model.bodies[static_cast<size_t>(b)].mesh;
@@ -341,13 +370,14 @@ void add_condition(Model& model, const json& bc, const json& bodies, int source)
     model.forces.push_back(std::move(f));
     return;
   }
-  DisplacementBC d{b, set, nodes, {}, source};
+  DisplacementBC d{b, set, nodes, {}, source, std::nullopt};
   if (type == "symmetry") {
     d.value[bc.at("normal").get<std::string>()[0] - 'x'] = 0.0;
   } else {
     for (int c = 0; c < 3; ++c)
       if (bc.contains(std::string("u") + axes[c])) d.value[c] = bc[std::string("u") + axes[c]].get<double>();
   }
+  if (type == "rotation") d.rotation = rigid_rotation(bc);
   model.displacements.push_back(std::move(d));
 }
 

@@ -7,6 +7,8 @@
 #include <tuple>
 #include <utility>
 
+#include "model/PrescribedMotion.h"
+
 namespace rollsim {
 
 namespace {
@@ -26,14 +28,16 @@ std::vector<Issue> prescribed_conflicts(const Model& model) {
   std::set<std::pair<size_t, size_t>> reported;
   for (size_t i = 0; i < model.displacements.size(); ++i) {
     const DisplacementBC& d = model.displacements[i];
-    for (int c = 0; c < 3; ++c) {
-      if (!d.value[c]) continue;
+    const Mesh& mesh = model.bodies[static_cast<size_t>(d.body)].mesh;
+    for (int c = 0; c < model.dim; ++c) {
       for (int n : d.nodes) {
-        const auto [it, inserted] = first.try_emplace({d.body, n, c}, *d.value[c], i);
-        if (inserted || it->second.first == *d.value[c] || !reported.insert({it->second.second, i}).second) continue;
+        const auto& x = mesh.nodes[static_cast<size_t>(n)];
+        const std::optional<double> v = prescribed_value(d, x, c, 1.0);
+        if (!v) continue;
+        const auto [it, inserted] = first.try_emplace({d.body, n, c}, *v, i);
+        if (inserted || it->second.first == *v || !reported.insert({it->second.second, i}).second) continue;
         const DisplacementBC& other = model.displacements[it->second.second];
-        const auto& x = model.bodies[static_cast<size_t>(d.body)].mesh.nodes[static_cast<size_t>(n)];
-        issues.push_back({path_of(d.source), "prescribes u" + std::string(1, "xyz"[c]) + " = " + number(*d.value[c]) +
+        issues.push_back({path_of(d.source), "prescribes u" + std::string(1, "xyz"[c]) + " = " + number(*v) +
                                                  " at node " + std::to_string(n) + " (" + number(x[0]) + ", " +
                                                  number(x[1]) + (model.dim == 3 ? ", " + number(x[2]) : "") +
                                                  ") of body '" + model.bodies[static_cast<size_t>(d.body)].name +

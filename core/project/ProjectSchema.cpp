@@ -259,6 +259,18 @@ const ObjectSchema kSym{"symmetry condition",
                          }()},
                         "",
                         {}};
+const ObjectSchema kRotation{
+    "rotation condition",
+    "Prescribed rigid rotation of a node set about an axis, applied in increments (at load factor λ the angle is "
+    "λ · angle, exact at any angle): u = (R − I)(X − center) + (ux, uy, uz). Every component of the set's nodes is "
+    "prescribed. Drives a roll by its hub.",
+    {req(str("body", "body name")), where("node set"), req(vec("center", "length", "a point of the axis")),
+     vec("axis", "-", "direction of the axis (3D, required; 2D: the z axis, not given)", 3),
+     req(num("angle", "degree", "rotation angle at the end of the analysis, right-hand rule about the axis")),
+     num("ux", "length", "x translation added to the rotation"), num("uy", "length", "y translation"),
+     num("uz", "length", "z translation (3D)")},
+    "",
+    {}};
 const ObjectSchema kForce{"force condition",
                           "Force applied at every node of a set (per node, not shared).",
                           {req(str("body", "body name")), where("node set"), num("fx", "force", "x component"),
@@ -278,7 +290,11 @@ const ObjectSchema kBC{"boundary condition",
                        "Boundary condition or load, selected by `type`.",
                        {},
                        "type",
-                       {{"displacement", &kDisp}, {"symmetry", &kSym}, {"force", &kForce}, {"pressure", &kPressure}}};
+                       {{"displacement", &kDisp},
+                        {"symmetry", &kSym},
+                        {"rotation", &kRotation},
+                        {"force", &kForce},
+                        {"pressure", &kPressure}}};
 
 const ObjectSchema kContact{
     "contact pair",

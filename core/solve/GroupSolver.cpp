@@ -40,23 +40,33 @@ void GroupSolver::factorize(const Group& g) {
 void GroupSolver::factorize_values(const Group& g) {
   if (g.K.rows() != size_) {
     size_ = g.K.rows();
-    fixed_ = g.R.cols() ? fixing_dofs(g.R) : std::vector<int>{};
-    kept_.clear();
-    for (int i = 0, f = 0; i < size_; ++i)
-      if (f < static_cast<int>(fixed_.size()) && fixed_[f] == i)
-        ++f;
-      else if (!fixed_.empty())
-        kept_.push_back(i);
     factor_ = make_factorization(kind_);
+    analyzed_ = false;
+    fixed_.clear(), kept_.clear();
+    choose_fixed_dofs(g.R);
+  } else if (g.R.rows() != R_.rows() || g.R.cols() != R_.cols() || g.R != R_) {
+    choose_fixed_dofs(g.R);
   }
-  if (fixed_.empty()) {
-    if (factor_->stats().factorizations == 0) factor_->analyze(g.K);
-    factor_->factorize(g.K);
-    return;
-  }
-  const SparseMatrix Kpp = remove_dofs(g.K, kept_);
-  if (factor_->stats().factorizations == 0) factor_->analyze(Kpp);
-  factor_->factorize(Kpp);
+  const bool reduced = !fixed_.empty();
+  const SparseMatrix Kpp = reduced ? remove_dofs(g.K, kept_) : SparseMatrix();
+  const SparseMatrix& A = reduced ? Kpp : g.K;
+  if (!analyzed_) factor_->analyze(A);
+  analyzed_ = true;
+  factor_->factorize(A);
+}
+
+void GroupSolver::choose_fixed_dofs(const Eigen::MatrixXd& R) {
+  R_ = R;
+  std::vector<int> fixed = R.cols() ? fixing_dofs(R) : std::vector<int>{};
+  if (fixed == fixed_) return;
+  fixed_ = std::move(fixed);  // other dofs fixed (the kernel turned with a finite-strain group): a new pattern
+  kept_.clear();
+  for (int i = 0, f = 0; i < size_; ++i)
+    if (f < static_cast<int>(fixed_.size()) && fixed_[f] == i)
+      ++f;
+    else if (!fixed_.empty())
+      kept_.push_back(i);
+  analyzed_ = false;
 }
 
 Eigen::VectorXd GroupSolver::apply(const Eigen::VectorXd& b) {

@@ -14,7 +14,8 @@ class GroupSolver {
  public:
   /// `kind`: a factorization name of make_factorization ("cholmod", "skyline").
   explicit GroupSolver(std::string kind) : kind_(std::move(kind)) {}
-  /// Analyzes on the first call (or when the size changes) and factors K (or Kpp).
+  /// Analyzes on the first call (or when the size or the fixed dofs change) and factors K (or Kpp). The fixed dofs
+  /// are chosen again whenever the kernel R changes (a finite-strain group's rigid modes follow its rotation).
   /// Throws SingularMatrix naming the group, its column in the group's own numbering.
   void factorize(const Group& g);
   /// K⁺ b
@@ -27,8 +28,11 @@ class GroupSolver {
   std::unique_ptr<Factorization> factor_;
   std::vector<int> fixed_;  // dofs set to zero in K⁺ (floating groups)
   std::vector<int> kept_;   // kept_[i]: dof of row i of Kpp; empty when nothing is fixed
+  Eigen::MatrixXd R_;       // the kernel the fixed dofs were chosen for
   long size_ = -1;
+  bool analyzed_ = false;
   void factorize_values(const Group& g);
+  void choose_fixed_dofs(const Eigen::MatrixXd& R);
 };
 
 }  // namespace rollsim

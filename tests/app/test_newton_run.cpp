@@ -110,6 +110,40 @@ TEST(NewtonRun, BadPlasticityInputIsRefusedWithItsPath) {
       {"zero increments", "analysis.increments", [](json& p) { p["analysis"]["increments"] = 0; }, {}},
       {"unknown policy in the project", "solver.update", [](json& p) { p["solver"]["update"] = "selective:2"; }, {}},
       {"unknown policy on the command line", "--update", [](json&) {}, {"--update", "sometimes"}},
+      {"rotation without an axis in 3D",
+       "boundary_conditions[3].axis",
+       [](json& p) {
+         p["dimension"] = 3;
+         p["bodies"][0]["mesh"].update({{"nz", 2}, {"lz", 4.0}});
+         p["boundary_conditions"].push_back(
+             {{"type", "rotation"}, {"body", "block"}, {"set", "xmax"}, {"center", {0, 0, 0}}, {"angle", 5.0}});
+       },
+       {}},
+      {"rotation axis given in 2D",
+       "boundary_conditions[3].axis",
+       [](json& p) {
+         p["boundary_conditions"].push_back({{"type", "rotation"},
+                                             {"body", "block"},
+                                             {"set", "xmax"},
+                                             {"center", {0, 0}},
+                                             {"axis", {0, 0, 1}},
+                                             {"angle", 5.0}});
+       },
+       {}},
+      {"rotation without its angle",
+       "boundary_conditions[3].angle",
+       [](json& p) {
+         p["boundary_conditions"].push_back(
+             {{"type", "rotation"}, {"body", "block"}, {"set", "xmax"}, {"center", {0, 0}}});
+       },
+       {}},
+      {"rotation and a displacement on one node",
+       "boundary_conditions[3]",
+       [](json& p) {
+         p["boundary_conditions"].push_back(
+             {{"type", "rotation"}, {"body", "block"}, {"set", "ymax"}, {"center", {0, 0}}, {"angle", 5.0}});
+       },
+       {}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
