@@ -10,10 +10,9 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
   std::vector<std::map<int, Eigen::Vector3d>> force(pairs.size());
   for (size_t r = 0; r < kept.size(); ++r) {
     const ConstraintRow& row = rows[kept[r]];
-    const ContactPoint& c = pairs[row.pair].points[row.point];
     auto [it, fresh] = force[row.pair].try_emplace(row.point, Eigen::Vector3d::Zero());
     const double l = lambda[static_cast<Eigen::Index>(r)];
-    it->second -= row.comp < 0 ? Eigen::Vector3d(l * c.normal) : Eigen::Vector3d(l * Eigen::Vector3d::Unit(row.comp));
+    it->second -= l * row.dir;
   }
   results.contacts.clear();
   if (!pairs.empty())  // every body carries the field once the model has contact: 0 off the slave surfaces

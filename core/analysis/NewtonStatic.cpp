@@ -1,6 +1,7 @@
 #include "analysis/NewtonStatic.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -48,6 +49,7 @@ class NewtonRun {
     } catch (const std::runtime_error& e) {
       throw AnalysisError(e.what());
     }
+    for (const ContactPair& p : model.contacts) large_sliding_ = large_sliding_ || p.large_sliding;
     save();
   }
 
@@ -85,7 +87,9 @@ class NewtonRun {
   bool lambda_valid_ = false;  // λ belongs to the current constraint rows
   bool assembled_once_ = false;
   bool solved_once_ = false;
-  bool refresh_all_ = false;  // after a cut-back: every group gets a new tangent and factor (none is current)
+  bool refresh_all_ = false;    // after a cut-back: every group gets a new tangent and factor (none is current)
+  bool large_sliding_ = false;  // a pair is searched again at every iteration
+  std::vector<std::array<int, 3>> row_keys_;      // (pair, slave node, component) of the kept contact rows
   std::vector<Eigen::VectorXd> previous_, step_;  // the iterate before the last solve, and its correction
   double slope_ = 0;                              // the line search's s(0)
   double assembly_s_ = 0;                         // residual and tangent assembly, over the run
@@ -94,12 +98,18 @@ class NewtonRun {
 };
 
 void NewtonRun::set_constraints(double lf) {
+  if (large_sliding_) follow_contacts(model_, body_displacements(lf), pairs_);
   rows_ = contact_rows(model_, pairs_);
   contact_ = body_constraints(rows_, layout_.body_dofs(), lf);
   layout_.set_contact(contact_);
   BlockSystem& sys = layout_.system();
   for (size_t g = 0; g < sys.groups.size(); ++g) sys.d -= sys.groups[g].C * u_[g];  // C du = d − C u
-  if (lambda_.size() != sys.num_multipliers()) lambda_valid_ = false;
+  // λ stays the multiplier of the same rows while they are those of the same points (their coefficients may move)
+  std::vector<std::array<int, 3>> keys;
+  for (int r : contact_.kept)
+    keys.push_back({rows_[r].pair, pairs_[rows_[r].pair].points[rows_[r].point].slave_node, rows_[r].comp});
+  if (keys != row_keys_ || lambda_.size() != sys.num_multipliers()) lambda_valid_ = false;
+  row_keys_ = std::move(keys);
 }
 
 std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,

@@ -1,5 +1,6 @@
 #include "contact/ContactConstraints.h"
 
+#include <map>
 #include <stdexcept>
 
 namespace rollsim {
@@ -25,9 +26,51 @@ std::vector<PairState> search_contacts(const Model& model) {
 }
 
 namespace {
+Mesh displaced(const Mesh& m, const Eigen::VectorXd& u) {
+  Mesh d = m;
+  for (size_t n = 0; n < d.nodes.size(); ++n)
+    for (int k = 0; k < m.dim; ++k) d.nodes[n][k] += u[static_cast<Eigen::Index>(n) * m.dim + k];
+  return d;
+}
+
+/// X_s − Σ N_k X_k in the undeformed positions.
+Eigen::Vector3d reference_separation(const Mesh& slave, const Mesh& master, const ContactPoint& c) {
+  Eigen::Vector3d s(slave.nodes[c.slave_node][0], slave.nodes[c.slave_node][1], slave.nodes[c.slave_node][2]);
+  for (size_t k = 0; k < c.master_nodes.size(); ++k) {
+    const auto& X = master.nodes[c.master_nodes[k]];
+    s -= c.N[k] * Eigen::Vector3d(X[0], X[1], X[2]);
+  }
+  return s;
+}
+}  // namespace
+
+void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs) {
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    if (!p.large_sliding) continue;
+    const Mesh& slave = model.bodies[p.slave_body].mesh;
+    const Mesh& master = model.bodies[p.master_body].mesh;
+    std::map<int, char> was;
+    for (size_t j = 0; j < pairs[i].points.size(); ++j) was[pairs[i].points[j].slave_node] = pairs[i].active[j];
+    PairState now;
+    now.points = find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
+                                     displaced(master, u[p.master_body]), master.surfaces.at(p.master_surface),
+                                     p.search_distance);
+    const double touch = 1e-9 * p.search_distance;
+    for (ContactPoint& c : now.points) {
+      c.separation = reference_separation(slave, master, c);
+      const auto it = was.find(c.slave_node);
+      now.active.push_back(it != was.end() ? (it->second || c.gap < -touch) : c.gap <= touch);
+    }
+    pairs[i] = std::move(now);
+  }
+}
+
+namespace {
 /// coef_s u_s − Σ N_k u_k projected on `dir` (a unit axis for tied rows, the normal for frictionless ones).
 ConstraintRow relative_motion(const ContactPair& p, const ContactPoint& c, const Eigen::Vector3d& dir, int dim) {
   ConstraintRow row;
+  row.dir = dir;
   for (int k = 0; k < dim; ++k) {
     if (dir[k] == 0) continue;
     row.terms.push_back({p.slave_body, c.slave_node, k, dir[k]});
@@ -53,7 +96,7 @@ std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<Pa
         }
       } else {
         ConstraintRow row = relative_motion(p, c, c.normal, model.dim);
-        row.rhs = -c.gap;
+        row.rhs = -c.normal.dot(c.separation);  // the gap of the configuration the point was found in
         row.pair = static_cast<int>(i), row.point = static_cast<int>(j);
         rows.push_back(std::move(row));
       }
@@ -82,7 +125,7 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
     for (size_t j = 0; j < pairs[i].points.size(); ++j) {
       if (pairs[i].active[j]) continue;
       const ContactPoint& c = pairs[i].points[j];
-      double g = c.gap;
+      double g = c.normal.dot(c.separation);
       for (int k = 0; k < dim; ++k) {
         double um = 0;
         for (size_t m = 0; m < c.master_nodes.size(); ++m) um += c.N[m] * u[p.master_body][c.master_nodes[m] * dim + k];

@@ -20,6 +20,7 @@ struct ConstraintRow {
   std::vector<ConstraintTerm> terms;
   double rhs = 0;
   int pair = 0, point = 0, comp = -1;  // origin: contact pair, point, component (−1: normal row)
+  Eigen::Vector3d dir{0, 0, 0};        // the direction the row constrains: the force on the slave is −λ dir
 };
 
 /// The contact points of one pair and which of them are active (tied: all).
@@ -31,6 +32,11 @@ struct PairState {
 /// Contact search of every pair of the model; frictionless points start active where the gap is closed
 /// (gap ≤ 1e-9 of the search distance). Throws std::runtime_error naming a pair whose surfaces never meet.
 std::vector<PairState> search_contacts(const Model& model);
+
+/// Large sliding: the pairs that slide large (ContactPair::large_sliding) searched again in the current
+/// configuration (u: every dof of every body, node-major), so that a slave node travels from master facet to master
+/// facet. A slave node keeps its active flag; a node new to the pair is active where it touches or penetrates.
+void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs);
 
 /// The rows of the active points, pair by pair, point by point.
 std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<PairState>& pairs);

@@ -30,7 +30,9 @@ Projection project_on_segment(const Mesh& m, const std::vector<int>& nodes, cons
   p.cp.master_nodes = nodes;
   p.cp.N = {1 - sc, sc};
   p.cp.normal = Eigen::Vector3d(t.y(), -t.x(), 0);
+  p.cp.tangent[0] = t;
   const Eigen::Vector3d xp = a + sc * (b - a);
+  p.cp.separation = x - xp;
   p.cp.gap = p.cp.normal.dot(x - xp);
   p.distance = (x - xp).norm();
   return p;
@@ -70,6 +72,8 @@ Projection project_on_face(const Mesh& m, const std::vector<int>& nodes, const E
   }
   p.cp.master_nodes = nodes;
   p.cp.normal = dxi.cross(deta).normalized();
+  p.cp.tangent = {dxi.normalized(), p.cp.normal.cross(dxi.normalized())};
+  p.cp.separation = x - xp;
   p.cp.gap = p.cp.normal.dot(x - xp);
   p.distance = (x - xp).norm();
   return p;
@@ -117,6 +121,26 @@ std::vector<ContactPoint> find_contact_points(const Mesh& slave, const std::vect
     points.push_back(std::move(best.cp));
   }
   return points;
+}
+
+void facet_frame(const Mesh& master, const std::vector<int>& nodes, const std::vector<double>& N, ContactPoint& c) {
+  if (nodes.size() == 2) {
+    const Eigen::Vector3d t = (point(master, nodes[1]) - point(master, nodes[0])).normalized();
+    c.normal = Eigen::Vector3d(t.y(), -t.x(), 0);
+    c.tangent[0] = t;
+    return;
+  }
+  // bilinear face: the isoparametric map reproduces ξ and η from the nodal values
+  static const double xi_n[4] = {-1, 1, 1, -1}, eta_n[4] = {-1, -1, 1, 1};
+  double xi = 0, eta = 0;
+  for (int k = 0; k < 4; ++k) xi += N[k] * xi_n[k], eta += N[k] * eta_n[k];
+  Eigen::Vector3d dxi = Eigen::Vector3d::Zero(), deta = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k) {
+    dxi += 0.25 * xi_n[k] * (1 + eta_n[k] * eta) * point(master, nodes[k]);
+    deta += 0.25 * eta_n[k] * (1 + xi_n[k] * xi) * point(master, nodes[k]);
+  }
+  c.normal = dxi.cross(deta).normalized();
+  c.tangent = {dxi.normalized(), c.normal.cross(dxi.normalized())};
 }
 
 }  // namespace rollsim

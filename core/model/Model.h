@@ -66,7 +66,8 @@ struct Probe {
 /// Contact between a slave surface (carries the multipliers, paper: the base) and a master surface.
 /// tied: the slave nodes stick to the master surface in every component (the paper's "infinite friction");
 /// frictionless: normal, unilateral, with an active set (the contact zone is an unknown). Small sliding:
-/// each slave node keeps the master facet and the normal found in the undeformed configuration.
+/// each slave node keeps the master facet and the normal found in the undeformed configuration; large sliding
+/// (the Newton analysis): the projection is searched again in the current configuration at every iteration.
 enum class ContactKind { Tied, Frictionless };
 
 struct ContactPair {
@@ -75,6 +76,7 @@ struct ContactPair {
   int slave_body = 0, master_body = 0;
   std::string slave_surface, master_surface;
   double search_distance = 0;  // slave nodes farther than this from the master surface are ignored [length]
+  bool large_sliding = false;
 };
 
 struct Model {

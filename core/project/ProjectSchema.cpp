@@ -300,7 +300,9 @@ const ObjectSchema kContact{
     "contact pair",
     "Contact between two bodies through Lagrange multipliers on the slave surface's nodes (node-to-segment in 2D, "
     "node-to-face in 3D; meshes need not match). Small sliding: master facets and normals are found once, in the "
-    "undeformed configuration. A body held only by contact (no displacement condition) is a floating body: "
+    "undeformed configuration; large sliding (Newton analysis): searched again in the current configuration at "
+    "every iteration, so a slave node travels along the master surface. A body held only by contact (no displacement "
+    "condition) is a floating body: "
     "`direct` and `mixed` solve it, `skyline` refuses it.",
     {req(str("name", "pair name, unique (the key of results.contact in summary.json)")),
      choice("type", {"tied", "frictionless"}, "tied",
@@ -308,6 +310,9 @@ const ObjectSchema kContact{
             "only, unilateral, with an active set"),
      req(str("slave_body", "body carrying the multipliers")), req(str("slave_surface", "surface of the slave body")),
      req(str("master_body", "the other body")), req(str("master_surface", "surface of the master body")),
+     choice("sliding", {"auto", "small", "large"}, "auto",
+            "frictionless pairs: small or large sliding (auto: large when either body has finite kinematics; the "
+            "linear analysis always slides small)"),
      positive("search_distance", "length",
               "slave nodes farther from the master surface are ignored (default: 1e-6 of the model size for tied, "
               "5 % of the model size for frictionless)")},
