@@ -25,8 +25,10 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
     cr.candidate_nodes = static_cast<int>(pairs[i].points.size());
     Eigen::Vector3d tangential = Eigen::Vector3d::Zero();
     BodyResults& slave = results.bodies[p.slave_body];
-    for (const auto& [j, f] : force[i]) {
+    for (auto& [j, f] : force[i]) {
       const ContactPoint& c = pairs[i].points[j];
+      if (p.kind == ContactKind::Coulomb && pairs[i].slip[j])  // μ N against the slip, N from this λ
+        f += p.friction * f.dot(c.normal) * pairs[i].friction_dir[j];
       const double fn = f.dot(c.normal);
       cr.normal_force += fn;
       tangential += f - fn * c.normal;

@@ -60,7 +60,7 @@ std::vector<Eigen::VectorXd> full_displacements(const std::vector<std::unique_pt
 
 bool has_unilateral(const Model& model) {
   for (const ContactPair& p : model.contacts)
-    if (p.kind == ContactKind::Frictionless) return true;
+    if (p.kind != ContactKind::Tied) return true;
   return false;
 }
 

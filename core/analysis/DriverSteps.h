@@ -27,7 +27,7 @@ BlockSolution solve_checked(const Model& model, const std::vector<std::unique_pt
 std::vector<Eigen::VectorXd> full_displacements(const std::vector<std::unique_ptr<DofMap>>& dofs,
                                                 const std::vector<Eigen::VectorXd>& free, double load_factor);
 
-/// True when a contact pair is frictionless (an active set to settle).
+/// True when a contact pair is unilateral (an active set to settle): frictionless, sticking or Coulomb.
 bool has_unilateral(const Model& model);
 
 /// Throws AnalysisError when a rigid mode of a floating group moves no constrained dof (G = [C_g R_g] rank-deficient).

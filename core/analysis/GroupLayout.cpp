@@ -96,6 +96,22 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
   bodies_.push_back(std::move(bg));
 }
 
+void GroupLayout::add_body_load(const std::vector<Eigen::VectorXd>& load, const std::vector<size_t>& groups) {
+  std::vector<char> listed(sys_.groups.size(), 0);
+  for (size_t g : groups) listed[g] = 1;
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    const BodyGroups& bg = bodies_[b];
+    if (!bg.dec) {
+      if (listed[bg.first]) sys_.groups[bg.first].f += load[b];
+      continue;
+    }
+    const SparseMatrix row = SparseMatrix(Eigen::MatrixXd(load[b].transpose()).sparseView());
+    const std::vector<SparseMatrix> parts = split_constraint_columns(row, *bg.dec);
+    for (int i = 0; i < bg.count; ++i)
+      if (listed[bg.first + i]) sys_.groups[bg.first + i].f += Eigen::VectorXd(parts[i].transpose());
+  }
+}
+
 void GroupLayout::set_contact(const BodyConstraints& contact) {
   const long mc = contact.d.size();
   for (size_t b = 0; b < bodies_.size(); ++b) {

@@ -31,6 +31,9 @@ class GroupLayout {
   BlockSystem& system() { return sys_; }
   const BlockSystem& system() const { return sys_; }
   const std::vector<std::unique_ptr<DofMap>>& body_dofs() const { return dofs_; }
+  /// Adds a load on the bodies' free dofs (one vector per body) to the residuals f_g of the listed groups (a dof
+  /// shared by subdomains loads one of them, as a constraint term does).
+  void add_body_load(const std::vector<Eigen::VectorXd>& load, const std::vector<size_t>& groups);
   /// Puts the contact rows (blocks on the bodies' free dofs) in front of the interface rows.
   void set_contact(const BodyConstraints& contact);
   /// Free-dof vector of every body from the groups' solution (interface copies averaged).

@@ -13,6 +13,7 @@
 #include "analysis/LinearStatic.h"
 #include "analysis/Recovery.h"
 #include "contact/ContactConstraints.h"
+#include "contact/Friction.h"
 #include "solve/Stopwatch.h"
 
 namespace rollsim {
@@ -61,6 +62,8 @@ class NewtonRun {
   /// Residuals (and trial states) of `which`, tangents of `tangent`; empty cause when no element inverted.
   std::string assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                        GroupAssembler::Factors at);
+  /// The slipping points' friction forces (μ × the normal force of the last solve) added to the residuals of `which`.
+  void add_friction(const std::vector<size_t>& which);
   /// ‖R_g‖ = ‖f_g − C_gᵀλ‖ per group (λ of the last solve when it belongs to the current rows, else 0).
   std::vector<double> group_residuals() const;
   std::vector<Eigen::VectorXd> body_displacements(double lf) const;
@@ -117,9 +120,19 @@ std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vec
   Stopwatch watch;
   const InvertedElement bad = layout_.assembler().assemble_newton(which, tangent, u_, at, layout_.system());
   assembly_s_ += watch.seconds();
-  if (!bad) return "";
+  if (!bad) {
+    add_friction(which);
+    return "";
+  }
   return "element " + std::to_string(bad.element) + " of group '" + layout_.system().groups[bad.group].name +
          "' is inverted (det J ≤ 0)";
+}
+
+void NewtonRun::add_friction(const std::vector<size_t>& which) {
+  std::vector<Eigen::VectorXd> load = friction_loads(model_, pairs_);
+  if (load.empty()) return;
+  for (size_t b = 0; b < load.size(); ++b) load[b] = layout_.body_dofs()[b]->restrict_to_free(load[b]);
+  layout_.add_body_load(load, which);
 }
 
 std::vector<double> NewtonRun::group_residuals() const {
@@ -182,6 +195,8 @@ std::string NewtonRun::line_search(const std::vector<size_t>& tangent, GroupAsse
 Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
+  const std::vector<Eigen::VectorXd> step_start = body_displacements(from);  // every dof, where the step began
+  new_step(pairs_);
   const std::vector<size_t> all = all_groups(sys);
   double first = 0, correction = 0;
   int changed = 0;
@@ -255,8 +270,10 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     if (has_unilateral(model_)) {
       std::vector<ConstraintRow> kept;
       for (int r : contact_.kept) kept.push_back(rows_[r]);
-      changed = update_active_set(model_, kept, lambda_.head(contact_.d.size()), body_displacements(lf), pairs_,
-                                  solver_.multiplier_tolerance());
+      const std::vector<Eigen::VectorXd> u_now = body_displacements(lf);
+      changed = update_friction(model_, kept, lambda_.head(contact_.d.size()), u_now, step_start, pairs_);
+      changed += update_active_set(model_, kept, lambda_.head(contact_.d.size()), u_now, pairs_,
+                                   solver_.multiplier_tolerance());
       if (changed) lambda_valid_ = false;
     }
     log_.push_back({increment, attempt_no, k, lf, residual, relative, correction, 1.0, static_cast<int>(tangent.size()),

@@ -5,6 +5,18 @@
 
 namespace rollsim {
 
+namespace {
+/// Friction state of a fresh point: sticking where it is (u = 0: at its undeformed relative position).
+void add_point_state(PairState& s, const ContactPoint& c, bool active) {
+  s.active.push_back(active);
+  s.anchor.push_back(c.separation);
+  s.slip.push_back(0);
+  s.friction_dir.push_back(Eigen::Vector3d::Zero());
+  s.normal_force.push_back(0.0);
+  s.switches.push_back(0);
+}
+}  // namespace
+
 std::vector<PairState> search_contacts(const Model& model) {
   std::vector<PairState> states;
   for (const ContactPair& p : model.contacts) {
@@ -19,10 +31,20 @@ std::vector<PairState> search_contacts(const Model& model) {
                                "' of body '" + model.bodies[p.master_body].name + "' within the search distance " +
                                std::to_string(p.search_distance) + ": the surfaces never meet");
     for (const ContactPoint& c : s.points)
-      s.active.push_back(p.kind == ContactKind::Tied || c.gap <= 1e-9 * p.search_distance);
+      add_point_state(s, c, p.kind == ContactKind::Tied || c.gap <= 1e-9 * p.search_distance);
     states.push_back(std::move(s));
   }
   return states;
+}
+
+Eigen::Vector3d relative_position(const ContactPair& p, const ContactPoint& c, const std::vector<Eigen::VectorXd>& u,
+                                  int dim) {
+  Eigen::Vector3d r = c.separation;
+  for (int k = 0; k < dim; ++k) {
+    r[k] += u[p.slave_body][c.slave_node * dim + k];
+    for (size_t m = 0; m < c.master_nodes.size(); ++m) r[k] -= c.N[m] * u[p.master_body][c.master_nodes[m] * dim + k];
+  }
+  return r;
 }
 
 namespace {
@@ -42,6 +64,17 @@ Eigen::Vector3d reference_separation(const Mesh& slave, const Mesh& master, cons
   }
   return s;
 }
+
+/// Point j of `from` copied into `to` with its state.
+void carry(const PairState& from, size_t j, ContactPoint c, PairState& to) {
+  to.points.push_back(std::move(c));
+  to.active.push_back(from.active[j]);
+  to.anchor.push_back(from.anchor[j]);
+  to.slip.push_back(from.slip[j]);
+  to.friction_dir.push_back(from.friction_dir[j]);
+  to.normal_force.push_back(from.normal_force[j]);
+  to.switches.push_back(from.switches[j]);
+}
 }  // namespace
 
 void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs) {
@@ -50,24 +83,39 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
     if (!p.large_sliding) continue;
     const Mesh& slave = model.bodies[p.slave_body].mesh;
     const Mesh& master = model.bodies[p.master_body].mesh;
-    std::map<int, char> was;
-    for (size_t j = 0; j < pairs[i].points.size(); ++j) was[pairs[i].points[j].slave_node] = pairs[i].active[j];
+    const Mesh master_now = displaced(master, u[p.master_body]);
+    std::map<int, size_t> was;
+    for (size_t j = 0; j < pairs[i].points.size(); ++j) was[pairs[i].points[j].slave_node] = j;
     PairState now;
-    now.points = find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
-                                     displaced(master, u[p.master_body]), master.surfaces.at(p.master_surface),
-                                     p.search_distance);
     const double touch = 1e-9 * p.search_distance;
-    for (ContactPoint& c : now.points) {
+    for (ContactPoint& c : find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
+                                               master_now, master.surfaces.at(p.master_surface), p.search_distance)) {
       c.separation = reference_separation(slave, master, c);
       const auto it = was.find(c.slave_node);
-      now.active.push_back(it != was.end() ? (it->second || c.gap < -touch) : c.gap <= touch);
+      if (it == was.end()) {
+        add_point_state(now, c, c.gap <= touch);
+        now.anchor.back() = relative_position(p, c, u, model.dim);
+        continue;
+      }
+      const size_t j = it->second;
+      const bool stuck = frictional(p.kind) && pairs[i].active[j] && !pairs[i].slip[j];
+      if (stuck) {  // keeps its master point; the facet's frame turns
+        ContactPoint kept = pairs[i].points[j];
+        facet_frame(master_now, kept.master_nodes, kept.N, kept);
+        kept.gap = kept.normal.dot(relative_position(p, kept, u, model.dim));
+        carry(pairs[i], j, std::move(kept), now);
+        continue;
+      }
+      const bool penetrates = c.gap < -touch;
+      carry(pairs[i], j, std::move(c), now);
+      now.active.back() = now.active.back() || penetrates;
     }
     pairs[i] = std::move(now);
   }
 }
 
 namespace {
-/// coef_s u_s − Σ N_k u_k projected on `dir` (a unit axis for tied rows, the normal for frictionless ones).
+/// coef_s u_s − Σ N_k u_k projected on `dir` (a unit axis for tied rows, the normal or a tangent for the others).
 ConstraintRow relative_motion(const ContactPair& p, const ContactPoint& c, const Eigen::Vector3d& dir, int dim) {
   ConstraintRow row;
   row.dir = dir;
@@ -79,29 +127,37 @@ ConstraintRow relative_motion(const ContactPair& p, const ContactPoint& c, const
   }
   return row;
 }
+
+/// The rows of one active point: tied, one per axis; otherwise the normal row, and while the point sticks, one
+/// row per tangent holding its relative position at the anchor.
+void point_rows(const ContactPair& p, const PairState& s, size_t j, int dim, int pair,
+                std::vector<ConstraintRow>& out) {
+  const ContactPoint& c = s.points[j];
+  auto add = [&](ConstraintRow row, int comp) {
+    row.pair = pair, row.point = static_cast<int>(j), row.comp = comp;
+    out.push_back(std::move(row));
+  };
+  if (p.kind == ContactKind::Tied) {
+    for (int k = 0; k < dim; ++k) add(relative_motion(p, c, Eigen::Vector3d::Unit(k), dim), k);
+    return;
+  }
+  ConstraintRow normal = relative_motion(p, c, c.normal, dim);
+  normal.rhs = -c.normal.dot(c.separation);  // the gap of the configuration the point was found in
+  add(std::move(normal), -1);
+  if (!frictional(p.kind) || s.slip[j]) return;
+  for (int k = 0; k + 1 < dim; ++k) {
+    ConstraintRow t = relative_motion(p, c, c.tangent[k], dim);
+    t.rhs = c.tangent[k].dot(s.anchor[j] - c.separation);
+    add(std::move(t), k);
+  }
+}
 }  // namespace
 
 std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<PairState>& pairs) {
   std::vector<ConstraintRow> rows;
-  for (size_t i = 0; i < pairs.size(); ++i) {
-    const ContactPair& p = model.contacts[i];
-    for (size_t j = 0; j < pairs[i].points.size(); ++j) {
-      if (!pairs[i].active[j]) continue;
-      const ContactPoint& c = pairs[i].points[j];
-      if (p.kind == ContactKind::Tied) {
-        for (int k = 0; k < model.dim; ++k) {
-          ConstraintRow row = relative_motion(p, c, Eigen::Vector3d::Unit(k), model.dim);
-          row.pair = static_cast<int>(i), row.point = static_cast<int>(j), row.comp = k;
-          rows.push_back(std::move(row));
-        }
-      } else {
-        ConstraintRow row = relative_motion(p, c, c.normal, model.dim);
-        row.rhs = -c.normal.dot(c.separation);  // the gap of the configuration the point was found in
-        row.pair = static_cast<int>(i), row.point = static_cast<int>(j);
-        rows.push_back(std::move(row));
-      }
-    }
-  }
+  for (size_t i = 0; i < pairs.size(); ++i)
+    for (size_t j = 0; j < pairs[i].points.size(); ++j)
+      if (pairs[i].active[j]) point_rows(model.contacts[i], pairs[i], j, model.dim, static_cast<int>(i), rows);
   return rows;
 }
 
@@ -114,24 +170,22 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
   // leaving: the normal row's multiplier is tensile (force on the slave −λ n pulls it towards the master)
   for (size_t r = 0; r < rows.size(); ++r) {
     const ConstraintRow& row = rows[r];
-    if (model.contacts[row.pair].kind == ContactKind::Frictionless && lambda[static_cast<Eigen::Index>(r)] > tensile)
+    if (model.contacts[row.pair].kind != ContactKind::Tied && row.comp < 0 &&
+        lambda[static_cast<Eigen::Index>(r)] > tensile)
       next[row.pair][row.point] = 0;
   }
-  // entering: an inactive point whose gap after deformation is negative (beyond round-off)
-  const int dim = model.dim;
+  // entering: an inactive point whose gap after deformation is negative (beyond round-off); it sticks where it is
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
-    if (p.kind != ContactKind::Frictionless) continue;
+    if (p.kind == ContactKind::Tied) continue;
     for (size_t j = 0; j < pairs[i].points.size(); ++j) {
       if (pairs[i].active[j]) continue;
       const ContactPoint& c = pairs[i].points[j];
-      double g = c.normal.dot(c.separation);
-      for (int k = 0; k < dim; ++k) {
-        double um = 0;
-        for (size_t m = 0; m < c.master_nodes.size(); ++m) um += c.N[m] * u[p.master_body][c.master_nodes[m] * dim + k];
-        g += c.normal[k] * (u[p.slave_body][c.slave_node * dim + k] - um);
-      }
-      if (g < -1e-9 * p.search_distance) next[i][j] = 1;
+      const Eigen::Vector3d r = relative_position(p, c, u, model.dim);
+      if (c.normal.dot(r) >= -1e-9 * p.search_distance) continue;
+      next[i][j] = 1;
+      pairs[i].anchor[j] = r;
+      pairs[i].slip[j] = 0;
     }
     for (size_t j = 0; j < next[i].size(); ++j) changed += next[i][j] != pairs[i].active[j];
     pairs[i].active = next[i];

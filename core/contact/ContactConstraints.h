@@ -23,28 +23,44 @@ struct ConstraintRow {
   Eigen::Vector3d dir{0, 0, 0};        // the direction the row constrains: the force on the slave is −λ dir
 };
 
-/// The contact points of one pair and which of them are active (tied: all).
+/// The contact points of one pair and which of them are active (tied: all); for sticking and Coulomb pairs, per
+/// point: the relative position x_s − Σ N x_m it sticks at, whether it slips (Coulomb), the unit direction of the
+/// friction force on the slave node while it slips, and its normal force −λ_n of the last solve [force].
 struct PairState {
   std::vector<ContactPoint> points;
   std::vector<char> active;
+  std::vector<Eigen::Vector3d> anchor;
+  std::vector<char> slip;
+  std::vector<Eigen::Vector3d> friction_dir;
+  std::vector<double> normal_force;
+  std::vector<int> switches;  // stick ↔ slip changes in the current step (a point that came back to slip stays)
 };
 
-/// Contact search of every pair of the model; frictionless points start active where the gap is closed
-/// (gap ≤ 1e-9 of the search distance). Throws std::runtime_error naming a pair whose surfaces never meet.
+/// True for the kinds with tangential rows while they stick (sticking, coulomb).
+inline bool frictional(ContactKind k) { return k == ContactKind::Sticking || k == ContactKind::Coulomb; }
+
+/// x_s − Σ N_k x_k of a point in the displaced configuration (u: every dof of every body, node-major).
+Eigen::Vector3d relative_position(const ContactPair& p, const ContactPoint& c, const std::vector<Eigen::VectorXd>& u,
+                                  int dim);
+
+/// Contact search of every pair of the model; unilateral points start active (and sticking) where the gap is
+/// closed (gap ≤ 1e-9 of the search distance). Throws std::runtime_error naming a pair whose surfaces never meet.
 std::vector<PairState> search_contacts(const Model& model);
 
 /// Large sliding: the pairs that slide large (ContactPair::large_sliding) searched again in the current
 /// configuration (u: every dof of every body, node-major), so that a slave node travels from master facet to master
-/// facet. A slave node keeps its active flag; a node new to the pair is active where it touches or penetrates.
+/// facet. A slave node keeps its active flag and friction state; a node new to the pair is active where it touches
+/// or penetrates. A point that sticks keeps its master point, its normal and tangents turned with the master facet.
 void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs);
 
 /// The rows of the active points, pair by pair, point by point.
 std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<PairState>& pairs);
 
-/// Active-set update of the frictionless pairs from the displacements (node-major per body) and the multiplier
-/// of each row: a point leaves when its multiplier is tensile beyond `tolerance` × the largest |λ| of the rows (the
-/// relative accuracy of λ: round-off for a direct solve, the CG tolerance for an iterative one — a λ that is zero
-/// to that accuracy keeps its point), enters when it penetrates. Returns the number of points that changed status.
+/// Active-set update of the unilateral pairs from the displacements (node-major per body) and the multiplier
+/// of each row (a point that enters sticks where it is): a point leaves when its multiplier is tensile beyond
+/// `tolerance` × the largest |λ| of the rows (the relative accuracy of λ: round-off for a direct solve, the CG
+/// tolerance for an iterative one — a λ that is zero to that accuracy keeps its point), enters when it penetrates.
+/// Returns the number of points that changed status.
 int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
                       const std::vector<Eigen::VectorXd>& displacement, std::vector<PairState>& pairs,
                       double tolerance = 0.0);

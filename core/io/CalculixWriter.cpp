@@ -164,6 +164,8 @@ void write_contacts(std::ostringstream& s, const Model& m, const Offsets& o) {
     const std::string slave = surface_name(m, p.slave_body, p.slave_surface);
     const std::string master = surface_name(m, p.master_body, p.master_surface);
     const std::string name = sanitize(p.name);
+    if (p.kind == ContactKind::Sticking || p.kind == ContactKind::Coulomb)
+      throw std::invalid_argument("contact pair '" + p.name + "': sticking and coulomb contact are not exported");
     if (p.kind == ContactKind::Tied) {
       char tolerance[24];  // CalculiX reads a short number field
       std::snprintf(tolerance, sizeof tolerance, "%.6g", p.search_distance);

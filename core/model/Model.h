@@ -68,7 +68,10 @@ struct Probe {
 /// frictionless: normal, unilateral, with an active set (the contact zone is an unknown). Small sliding:
 /// each slave node keeps the master facet and the normal found in the undeformed configuration; large sliding
 /// (the Newton analysis): the projection is searched again in the current configuration at every iteration.
-enum class ContactKind { Tied, Frictionless };
+/// sticking: unilateral, and an active point keeps its master point (no slip: the paper's rolling condition);
+/// coulomb: unilateral, an active point sticks while its tangential force is within μ times its normal force and
+/// slips with exactly μ times it otherwise.
+enum class ContactKind { Tied, Frictionless, Sticking, Coulomb };
 
 struct ContactPair {
   std::string name;
@@ -77,6 +80,7 @@ struct ContactPair {
   std::string slave_surface, master_surface;
   double search_distance = 0;  // slave nodes farther than this from the master surface are ignored [length]
   bool large_sliding = false;
+  double friction = 0;  // Coulomb's μ [-]
 };
 
 struct Model {

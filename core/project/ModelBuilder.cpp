@@ -153,7 +153,17 @@ bool in_contact(const json& project, const json& name) {
   return false;
 }
 
+void check_friction(const json& c, const std::string& path, std::vector<Issue>& issues) {
+  const std::string type = c.at("type").get<std::string>();
+  if (type == "coulomb" && !c.contains("friction"))
+    issues.push_back({path + ".friction", "required for a coulomb pair: the friction coefficient μ"});
+  if (type != "coulomb" && c.contains("friction"))
+    issues.push_back(
+        {path + ".friction", "only a coulomb pair has a friction coefficient (this pair is " + type + ")"});
+}
+
 void check_contact(const json& c, const std::string& path, const json& bodies, int dim, std::vector<Issue>& issues) {
+  check_friction(c, path, issues);
   std::string found[2];
   const char* roles[2] = {"slave", "master"};
   for (int r = 0; r < 2; ++r) {
@@ -231,6 +241,9 @@ std::string nonlinear_because(const json& d) {
     if (m.contains("yield_stress")) return "material '" + m.value("name", "") + "' has a yield stress";
   for (const json& b : d.at("bodies"))
     if (b.value("kinematics", "small") == "finite") return "body '" + b.value("name", "") + "' has finite kinematics";
+  for (const json& c : d.value("contacts", json::array()))
+    if (c.value("type", "") == "sticking" || c.value("type", "") == "coulomb")
+      return "contact pair '" + c.value("name", "") + "' has friction";
   return "";
 }
 
@@ -436,7 +449,12 @@ void add_contacts(Model& model, const json& d) {
   for (const auto& c : d.at("contacts")) {
     ContactPair p;
     p.name = c.at("name").get<std::string>();
-    p.kind = c.at("type") == "tied" ? ContactKind::Tied : ContactKind::Frictionless;
+    const std::string type = c.at("type").get<std::string>();
+    p.kind = type == "tied"       ? ContactKind::Tied
+             : type == "sticking" ? ContactKind::Sticking
+             : type == "coulomb"  ? ContactKind::Coulomb
+                                  : ContactKind::Frictionless;
+    p.friction = c.value("friction", 0.0);
     p.slave_body = find_named(d.at("bodies"), c.at("slave_body").get<std::string>());
     p.master_body = find_named(d.at("bodies"), c.at("master_body").get<std::string>());
     p.slave_surface = c.at("slave_surface").get<std::string>();

@@ -305,13 +305,16 @@ const ObjectSchema kContact{
     "condition) is a floating body: "
     "`direct` and `mixed` solve it, `skyline` refuses it.",
     {req(str("name", "pair name, unique (the key of results.contact in summary.json)")),
-     choice("type", {"tied", "frictionless"}, "tied",
-            "tied: sticking in every component (the paper's infinite friction), bilateral; frictionless: normal "
-            "only, unilateral, with an active set"),
+     choice("type", {"tied", "frictionless", "sticking", "coulomb"}, "tied",
+            "tied: bilateral, every component held (glue); frictionless: normal only, unilateral, with an active "
+            "set; sticking: unilateral, and a point in contact keeps its place on the master (no slip: the paper's "
+            "infinite friction); coulomb: unilateral, sticks while the tangential force is below μ times the normal "
+            "force and slips with μ times it (Newton analysis)"),
+     non_negative("friction", "-", "Coulomb's friction coefficient μ (coulomb pairs only, required there)"),
      req(str("slave_body", "body carrying the multipliers")), req(str("slave_surface", "surface of the slave body")),
      req(str("master_body", "the other body")), req(str("master_surface", "surface of the master body")),
      choice("sliding", {"auto", "small", "large"}, "auto",
-            "frictionless pairs: small or large sliding (auto: large when either body has finite kinematics; the "
+            "unilateral pairs: small or large sliding (auto: large when either body has finite kinematics; the "
             "linear analysis always slides small)"),
      positive("search_distance", "length",
               "slave nodes farther from the master surface are ignored (default: 1e-6 of the model size for tied, "

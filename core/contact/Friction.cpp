@@ -1,0 +1,104 @@
+#include "contact/Friction.h"
+
+#include <algorithm>
+
+namespace rollsim {
+
+namespace {
+/// The multipliers of each active point: normal (comp −1) and tangential (comp k) of the kept rows.
+struct PointMultipliers {
+  double normal = 0;
+  Eigen::Vector3d tangential_force = Eigen::Vector3d::Zero();  // −Σ λ_k t_k: the force of the stick rows on the slave
+};
+
+std::vector<std::vector<PointMultipliers>> by_point(const std::vector<PairState>& pairs,
+                                                    const std::vector<ConstraintRow>& rows,
+                                                    const Eigen::VectorXd& lambda) {
+  std::vector<std::vector<PointMultipliers>> m(pairs.size());
+  for (size_t i = 0; i < pairs.size(); ++i) m[i].resize(pairs[i].points.size());
+  for (size_t r = 0; r < rows.size(); ++r) {
+    PointMultipliers& p = m[rows[r].pair][rows[r].point];
+    const double l = lambda[static_cast<Eigen::Index>(r)];
+    if (rows[r].comp < 0)
+      p.normal = l;
+    else
+      p.tangential_force -= l * rows[r].dir;
+  }
+  return m;
+}
+
+Eigen::Vector3d tangential_part(const Eigen::Vector3d& v, const Eigen::Vector3d& n) { return v - v.dot(n) * n; }
+}  // namespace
+
+int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
+                    const std::vector<Eigen::VectorXd>& u, const std::vector<Eigen::VectorXd>& u_start,
+                    std::vector<PairState>& pairs) {
+  const auto m = by_point(pairs, rows, lambda);
+  int changed = 0;
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    if (!frictional(p.kind)) continue;
+    PairState& s = pairs[i];
+    for (size_t j = 0; j < s.points.size(); ++j) {
+      if (!s.active[j]) continue;
+      const ContactPoint& c = s.points[j];
+      s.normal_force[j] = std::max(0.0, -m[i][j].normal);
+      if (p.kind != ContactKind::Coulomb) continue;
+      const double limit = p.friction * s.normal_force[j];
+      if (!s.slip[j]) {
+        const Eigen::Vector3d f = m[i][j].tangential_force;
+        if (f.norm() <= limit * (1 + 1e-9) || f.norm() == 0.0) continue;
+        s.slip[j] = 1, s.friction_dir[j] = f.normalized();  // the return onto the cone keeps the direction
+        ++s.switches[j], ++changed;
+        continue;
+      }
+      // slipping: the friction force opposes the slip over the step (backward Euler); a slip along the force means
+      // the point sticks where the step began. A point at the limit with next to no slip can chatter (stick, over
+      // μN, slip, along...): it gets one way back per step, then slips with the force against its slip.
+      const Eigen::Vector3d start = relative_position(p, c, u_start, model.dim);
+      const Eigen::Vector3d v = tangential_part(relative_position(p, c, u, model.dim) - start, c.normal);
+      if (v.norm() <= 1e-12 * p.search_distance) continue;
+      if (v.dot(s.friction_dir[j]) > 0 && s.switches[j] < 2) {
+        s.slip[j] = 0, s.anchor[j] = start;
+        ++s.switches[j], ++changed;
+      } else {
+        s.friction_dir[j] = -v.normalized();
+      }
+    }
+  }
+  return changed;
+}
+
+std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs) {
+  bool any = false;
+  for (const ContactPair& p : model.contacts) any = any || p.kind == ContactKind::Coulomb;
+  if (!any) return {};
+  const int dim = model.dim;
+  std::vector<Eigen::VectorXd> f;
+  for (const Body& b : model.bodies)
+    f.push_back(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(b.mesh.num_nodes()) * dim));
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    if (p.kind != ContactKind::Coulomb) continue;
+    const PairState& s = pairs[i];
+    for (size_t j = 0; j < s.points.size(); ++j) {
+      if (!s.active[j] || !s.slip[j]) continue;
+      const ContactPoint& c = s.points[j];
+      const Eigen::Vector3d d = tangential_part(s.friction_dir[j], c.normal);
+      if (d.norm() == 0.0) continue;
+      const Eigen::Vector3d F = p.friction * s.normal_force[j] * d.normalized();
+      for (int k = 0; k < dim; ++k) {
+        f[p.slave_body][c.slave_node * dim + k] += F[k];
+        for (size_t n = 0; n < c.master_nodes.size(); ++n)
+          f[p.master_body][c.master_nodes[n] * dim + k] -= c.N[n] * F[k];
+      }
+    }
+  }
+  return f;
+}
+
+void new_step(std::vector<PairState>& pairs) {
+  for (PairState& s : pairs) std::fill(s.switches.begin(), s.switches.end(), 0);
+}
+
+}  // namespace rollsim

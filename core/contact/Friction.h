@@ -1,0 +1,29 @@
+#pragma once
+// Coulomb friction inside the Newton loop, with no inner contact loop: a sticking point holds its relative position
+// through tangential rows; after each solve, a point whose tangential force exceeds μ times its normal force slips
+// (its tangential rows go, and a friction force of exactly μ times the normal force of the last solve acts against
+// its relative motion, as a load on both bodies), and a slipping point whose motion turns along that force sticks
+// again. The bodies' stiffness blocks stay symmetric; the friction force lags one iteration behind the normal force,
+// and Newton's residual carries the difference until it converges.
+#include <vector>
+
+#include "contact/ContactConstraints.h"
+
+namespace rollsim {
+
+/// Stick/slip update of the frictional pairs from the rows and multipliers of the last solve, the displacements
+/// now (u) and at the start of the step (u_start; every dof of every body, node-major). Records every active
+/// point's normal force; returns the number of points that changed between stick and slip. A point that went back
+/// from slip to stick once in the step and slips again stays slipping for the rest of the step (no chatter).
+int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
+                    const std::vector<Eigen::VectorXd>& u, const std::vector<Eigen::VectorXd>& u_start,
+                    std::vector<PairState>& pairs);
+
+/// A step begins: every point may switch between stick and slip again (see update_friction's chatter rule).
+void new_step(std::vector<PairState>& pairs);
+
+/// The friction forces of the slipping points, per body, every dof (node-major): μ N along the friction
+/// direction on the slave node, the opposite on the master nodes by their weights. Empty when no pair is Coulomb.
+std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs);
+
+}  // namespace rollsim
