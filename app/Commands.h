@@ -27,13 +27,15 @@ struct BenchOptions {
   std::string csv;
 };
 
-/// `rollsim gui [PROJECT] [--screenshot FILE.png] [--size WxH] [--run]`, and `rollsim` with no arguments.
+/// `rollsim gui [PROJECT] [--screenshot FILE.png] [--size WxH] [--run] [--partitions] [--color-by FIELD]`, and
+/// `rollsim` with no arguments.
 struct GuiOptions {
   std::string project;      // empty: the default project
   std::string screenshot;   // non-empty: render, save the whole window as PNG, exit
   std::string size;         // "WxH" window size
   bool run = false;         // run the analysis first (with --screenshot: results and residual plot in the image)
   bool partitions = false;  // show the partition panel and colour by subdomain
+  std::string color_by;     // a result field to colour the view by after the run
   int argc = 0;             // for QApplication
   char** argv = nullptr;
 };

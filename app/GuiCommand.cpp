@@ -1,4 +1,5 @@
-// `rollsim gui [PROJECT] [--screenshot FILE.png] [--size WxH] [--run] [--partitions]` and `rollsim` with no arguments:
+// `rollsim gui [PROJECT] [--screenshot FILE.png] [--size WxH] [--run] [--partitions] [--color-by FIELD]` and `rollsim`
+// with no arguments:
 // the window.
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
@@ -14,6 +15,7 @@
 
 #include "Commands.h"
 #include "MainWindow.h"
+#include "MeshView.h"
 #include "Resources.h"
 
 namespace rollsim::app {
@@ -51,6 +53,12 @@ int screenshot(ui::MainWindow& w, const GuiOptions& o) {
     if (w.run_status() == QLatin1String("error")) std::cerr << "rollsim: warning: the run failed (see the log)\n";
   }
   if (o.partitions) w.show_partitions();
+  if (!o.color_by.empty()) {
+    const QString field = QString::fromStdString(o.color_by);
+    if (!w.view()->can_color_by(field))
+      std::cerr << "rollsim: warning: --color-by " << o.color_by << ": no such field in these results\n";
+    w.view()->set_color_by(field);
+  }
   settle(300);
   const QImage image = w.screenshot();
   if (image.isNull() || !image.save(QString::fromStdString(o.screenshot), "PNG")) {

@@ -74,13 +74,15 @@ int main(int argc, char** argv) {
 
   auto* cmd_schema = cli.add_subcommand("schema", "print the project file reference (markdown)");
 
-  GuiOptions gui{"", "", "", false, false, argc, argv};
+  GuiOptions gui{"", "", "", false, false, "", argc, argv};
   auto* cmd_gui = cli.add_subcommand("gui", "open the desktop window (the default without arguments)");
   cmd_gui->add_option("project", gui.project, "project file (JSON); default: the built-in default project");
   cmd_gui->add_option("--screenshot", gui.screenshot, "render, save the whole window as PNG and exit");
   cmd_gui->add_option("--size", gui.size, "window size WxH (default 1280x800)");
   cmd_gui->add_flag("--run", gui.run, "run the analysis before the screenshot (results and residual plot shown)");
   cmd_gui->add_flag("--partitions", gui.partitions, "show the partition panel, the view coloured by subdomain");
+  cmd_gui->add_option("--color-by", gui.color_by,
+                      "after --run: colour the view by this result field (e.g. von_mises, plastic_strain)");
 
 #ifdef ROLLSIM_HAVE_GUI
   if (argc == 1) return gui_command(gui);  // no arguments: the window

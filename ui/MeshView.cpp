@@ -201,18 +201,26 @@ void MeshView::rebuild_grid() {
 }
 
 namespace {
-/// The colourable node field of the output registry named `mode` (null for the categorical colourings).
+/// The colourable field of the output registry named `mode` (null for the categorical colourings).
 const OutputField* result_field(const ColorBy& mode) {
   for (const OutputField& f : output_fields())
-    if (f.colourable && f.location == FieldLocation::Node && QString::fromStdString(f.name) == mode) return &f;
+    if (f.colourable && QString::fromStdString(f.name) == mode) return &f;
   return nullptr;
+}
+
+/// The grid's array of a field: point data for a node field, cell data for a cell field.
+vtkDataArray* field_array(vtkUnstructuredGrid* grid, const OutputField& f) {
+  vtkDataSetAttributes* data = f.location == FieldLocation::Node
+                                   ? static_cast<vtkDataSetAttributes*>(grid->GetPointData())
+                                   : static_cast<vtkDataSetAttributes*>(grid->GetCellData());
+  return data->GetArray(f.name.c_str());
 }
 }  // namespace
 
 bool MeshView::can_color_by(const ColorBy& mode) const {
   if (mode == color_by::Body || mode == color_by::Subdomain) return true;
   const OutputField* f = result_field(mode);
-  return f && results_ && grid_ && grid_->GetPointData()->GetArray(f->name.c_str());
+  return f && results_ && grid_ && field_array(grid_, *f);
 }
 
 void MeshView::set_color_by(const ColorBy& requested) {
@@ -268,14 +276,17 @@ void MeshView::apply_coloring() {
   } else {
     const OutputField& field = *result_field(color_by_);
     const char* name = field.name.c_str();
-    vtkDataArray* a = grid_->GetPointData()->GetArray(name);
+    vtkDataArray* a = field_array(grid_, field);
     double range[2] = {0, 1};
     if (a) a->GetRange(range, field.components > 1 ? -1 : 0);  // component -1: the magnitude of the vectors
     if (!(range[1] > range[0])) range[1] = range[0] + 1e-30;
     continuous_->SetVectorModeToMagnitude();
     continuous_->SetRange(range[0], range[1]);
     mapper_->SetLookupTable(continuous_);
-    mapper_->SetScalarModeToUsePointFieldData();
+    if (field.location == FieldLocation::Node)
+      mapper_->SetScalarModeToUsePointFieldData();
+    else
+      mapper_->SetScalarModeToUseCellFieldData();
     mapper_->SelectColorArray(name);
     mapper_->SetScalarRange(range[0], range[1]);
     mapper_->ScalarVisibilityOn();

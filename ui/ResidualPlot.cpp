@@ -87,7 +87,7 @@ void ResidualPlot::refresh(const RunSeries& series) {
     c.drawn = s.size();
     // one replace() per redraw: QXYSeries::append() of a list lays the whole series out again for every point
     c.line->replace(vertices(s));
-    xmax_ = std::max(xmax_, c.drawn);
+    xmax_ = std::max(xmax_, s.isEmpty() ? 0 : s.last().x);
     any = true;
   }
   if (!any) return;
@@ -137,7 +137,7 @@ QVector<QPointF> ResidualPlot::vertices(const QVector<ResidualSample>& s) {
   QVector<QPointF> v;
   if (n <= 2 * kMaxBuckets) {
     v.reserve(n);
-    for (int i = 0; i < n; ++i) v.append(QPointF(i + 1, plotted(s[i].residual)));
+    for (int i = 0; i < n; ++i) v.append(QPointF(s[i].x, plotted(s[i].residual)));
     return v;
   }
   // more samples than pixels: the smallest and the largest residual of each bucket, in iteration order, keep the
@@ -151,7 +151,7 @@ QVector<QPointF> ResidualPlot::vertices(const QVector<ResidualSample>& s) {
       if (s[i].residual > s[hi].residual) hi = i;
     }
     for (const int i : {std::min(lo, hi), std::max(lo, hi)}) {
-      v.append(QPointF(i + 1, plotted(s[i].residual)));
+      v.append(QPointF(s[i].x, plotted(s[i].residual)));
       if (lo == hi) break;
     }
   }

@@ -24,13 +24,16 @@ QVector<ResidualSample>& RunSeries::track(const QString& kind) {
 }
 
 void RunSeries::add_cg_iteration(int solve, int iteration, double residual) {
-  track(QStringLiteral("cg")).append({increment_, solve, iteration, residual});
+  QVector<ResidualSample>& cg = track(QStringLiteral("cg"));
+  cg.append({increment_, solve, iteration, residual, static_cast<int>(cg.size()) + 1});
   ++revision_;
 }
 
 void RunSeries::add_newton_iteration(int increment, int iteration, double residual) {
   const int solves = solves_.isEmpty() ? 0 : solves_.last().solve;
-  track(QStringLiteral("newton")).append({increment, solves, iteration, residual});
+  const int cg = static_cast<int>(residuals(QStringLiteral("cg")).size());
+  QVector<ResidualSample>& newton = track(QStringLiteral("newton"));
+  newton.append({increment, solves, iteration, residual, cg > 0 ? cg : static_cast<int>(newton.size()) + 1});
   ++revision_;
 }
 

@@ -13,6 +13,8 @@ struct ResidualSample {
   int solve = 0;        // linear solve (cg: the solve it belongs to; newton: the solves done so far)
   int iteration = 0;    // 1-based within its solve (cg) or increment (newton)
   double residual = 0;  // relative, dimensionless
+  int x = 0;            // where it is drawn: cg, its place among all CG iterations; newton, the CG iterations done
+                        // when it arrived (the end of its solve), or its own count when no solve used CG
 };
 
 struct SolveRecord {

@@ -21,8 +21,7 @@ ViewToolBar::ViewToolBar(MeshView* view, QWidget* parent) : QToolBar(tr("View"),
   color_->addItem(tr("body"), color_by::Body);
   color_->addItem(tr("subdomain"), color_by::Subdomain);
   for (const OutputField& f : output_fields())  // the results the view can show, from the output registry
-    if (f.colourable && f.location == FieldLocation::Node)
-      color_->addItem(QString::fromStdString(f.label), QString::fromStdString(f.name));
+    if (f.colourable) color_->addItem(QString::fromStdString(f.label), QString::fromStdString(f.name));
   addWidget(color_);
   addSeparator();
   deformed_ = new QCheckBox(tr("deformed ×"));

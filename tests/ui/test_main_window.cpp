@@ -1,7 +1,8 @@
 // The whole window under Xvfb: the view draws the project's meshes, an edit in the property editor updates the
 // status-bar counts and the view, a run from the Run button converges and colours the view by displacement,
 // Cancel ends a run "cancelled", the window's screenshot is not blank, and after a run of three load increments the
-// view toolbar's increment selector offers 1…3 and recolours the view with the chosen increment's fields.
+// view toolbar's increment selector offers 1…3 and recolours the view with the chosen increment's fields; after a
+// Newton run of a plastic block the view colours its elements by equivalent plastic strain.
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
 #include <QLabel>
@@ -133,6 +134,40 @@ class TestMainWindow : public QObject {
     QVERIFY(!w.view()->can_color_by(color_by::ContactPressure));
     w.view()->set_color_by(color_by::ContactPressure);
     QCOMPARE(w.view()->color_by(), color_by::Body);
+  }
+
+  void plastic_strain_colouring_after_a_newton_run() {
+    // a plastic block squeezed 2 % in 4 increments: a cell field, coloured on the element faces
+    const nlohmann::json project = {
+        {"name", "squeeze"},
+        {"dimension", 2},
+        {"materials", {{{"name", "steel"}, {"E", 200e3}, {"nu", 0.3}, {"yield_stress", 250.0}}}},
+        {"bodies",
+         {{{"name", "block"},
+           {"material", "steel"},
+           {"formulation", "bbar"},
+           {"mesh", {{"type", "block"}, {"nx", 8}, {"ny", 8}, {"lx", 10.0}, {"ly", 10.0}}}}}},
+        {"boundary_conditions",
+         {{{"type", "displacement"}, {"body", "block"}, {"set", "ymin"}, {"ux", 0.0}, {"uy", 0.0}},
+          {{"type", "displacement"}, {"body", "block"}, {"set", "ymax"}, {"uy", -0.2}}}},
+        {"analysis", {{"increments", 4}}}};
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("squeeze.json"));
+    std::ofstream(file.toStdString()) << project.dump(1);
+    MainWindow w;
+    QVERIFY(w.open_file(file));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    const ColorBy plastic = QStringLiteral("plastic_strain");
+    QVERIFY(!w.view()->can_color_by(plastic));  // no results yet
+    QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
+    QVERIFY(w.start_run());
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(w.run_status(), QStringLiteral("converged"));
+    QVERIFY(w.view()->can_color_by(plastic));
+    w.view()->set_color_by(plastic);
+    QCOMPARE(w.view()->color_by(), plastic);
+    QVERIFY2(grey_spread(w.screenshot()) > 10, "the window screenshot is blank");
   }
 
   void cancel_ends_the_run_cancelled() {
