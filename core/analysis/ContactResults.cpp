@@ -17,7 +17,8 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
   results.contacts.clear();
   if (!pairs.empty())  // every body carries the field once the model has contact: 0 off the slave surfaces
     for (size_t b = 0; b < results.bodies.size(); ++b)
-      results.bodies[b].contact_pressure = Eigen::VectorXd::Zero(model.bodies[b].mesh.num_nodes());
+      results.bodies[b].contact_pressure = results.bodies[b].contact_slip =
+          Eigen::VectorXd::Zero(model.bodies[b].mesh.num_nodes());
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
     ContactResult cr;
@@ -25,6 +26,8 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
     cr.candidate_nodes = static_cast<int>(pairs[i].points.size());
     Eigen::Vector3d tangential = Eigen::Vector3d::Zero();
     BodyResults& slave = results.bodies[p.slave_body];
+    for (size_t j = 0; j < pairs[i].points.size(); ++j)
+      slave.contact_slip[pairs[i].points[j].slave_node] = pairs[i].slid[j];
     for (auto& [j, f] : force[i]) {
       const ContactPoint& c = pairs[i].points[j];
       if (p.kind == ContactKind::Coulomb && pairs[i].slip[j])  // μ N against the slip, N from this λ

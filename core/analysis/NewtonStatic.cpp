@@ -93,6 +93,7 @@ class NewtonRun {
   bool refresh_all_ = false;    // after a cut-back: every group gets a new tangent and factor (none is current)
   bool large_sliding_ = false;  // a pair is searched again at every iteration
   std::vector<std::array<int, 3>> row_keys_;      // (pair, slave node, component) of the kept contact rows
+  std::vector<Eigen::VectorXd> step_start_;       // every dof of every body where the current step began
   std::vector<Eigen::VectorXd> previous_, step_;  // the iterate before the last solve, and its correction
   double slope_ = 0;                              // the line search's s(0)
   double assembly_s_ = 0;                         // residual and tangent assembly, over the run
@@ -195,7 +196,8 @@ std::string NewtonRun::line_search(const std::vector<size_t>& tangent, GroupAsse
 Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
-  const std::vector<Eigen::VectorXd> step_start = body_displacements(from);  // every dof, where the step began
+  step_start_ = body_displacements(from);  // every dof, where the step began
+  const std::vector<Eigen::VectorXd>& step_start = step_start_;
   new_step(pairs_);
   const std::vector<size_t> all = all_groups(sys);
   double first = 0, correction = 0;
@@ -322,6 +324,7 @@ Results NewtonRun::run() {
       continue;
     }
     layout_.assembler().commit();
+    accumulate_slip(model_, body_displacements(target), step_start_, pairs_);
     save();
     lf = target;
     ++increment;

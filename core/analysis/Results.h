@@ -21,6 +21,7 @@ struct BodyResults {
   // per node, sized only when the model has contact pairs: f·n / tributary length (2D) or area (3D) of each
   // contact point of a slave surface (positive in compression), 0 on every other node [stress]
   Eigen::VectorXd contact_pressure;
+  Eigen::VectorXd contact_slip;  // per node, sized like contact_pressure: tangential sliding so far [length]
 };
 
 /// Resultants of one contact pair on its slave surface (forces on the slave body).

@@ -14,6 +14,7 @@ void add_point_state(PairState& s, const ContactPoint& c, bool active) {
   s.friction_dir.push_back(Eigen::Vector3d::Zero());
   s.normal_force.push_back(0.0);
   s.switches.push_back(0);
+  s.slid.push_back(0.0);
 }
 }  // namespace
 
@@ -74,6 +75,7 @@ void carry(const PairState& from, size_t j, ContactPoint c, PairState& to) {
   to.friction_dir.push_back(from.friction_dir[j]);
   to.normal_force.push_back(from.normal_force[j]);
   to.switches.push_back(from.switches[j]);
+  to.slid.push_back(from.slid[j]);
 }
 }  // namespace
 

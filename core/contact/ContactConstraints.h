@@ -34,6 +34,7 @@ struct PairState {
   std::vector<Eigen::Vector3d> friction_dir;
   std::vector<double> normal_force;
   std::vector<int> switches;  // stick ↔ slip changes in the current step (a point that came back to slip stays)
+  std::vector<double> slid;   // tangential sliding accumulated over the converged steps [length]
 };
 
 /// True for the kinds with tangential rows while they stick (sticking, coulomb).

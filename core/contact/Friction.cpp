@@ -97,6 +97,21 @@ std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vecto
   return f;
 }
 
+void accumulate_slip(const Model& model, const std::vector<Eigen::VectorXd>& u,
+                     const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs) {
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    if (p.kind == ContactKind::Tied) continue;
+    PairState& s = pairs[i];
+    for (size_t j = 0; j < s.points.size(); ++j) {
+      if (!s.active[j]) continue;
+      const ContactPoint& c = s.points[j];
+      const Eigen::Vector3d v = relative_position(p, c, u, model.dim) - relative_position(p, c, u_start, model.dim);
+      s.slid[j] += tangential_part(v, c.normal).norm();
+    }
+  }
+}
+
 void new_step(std::vector<PairState>& pairs) {
   for (PairState& s : pairs) std::fill(s.switches.begin(), s.switches.end(), 0);
 }

@@ -22,6 +22,11 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
 /// A step begins: every point may switch between stick and slip again (see update_friction's chatter rule).
 void new_step(std::vector<PairState>& pairs);
 
+/// A step converged: every active point of a unilateral pair adds the tangential part of its relative motion over
+/// the step (u_start → u) to the distance it slid.
+void accumulate_slip(const Model& model, const std::vector<Eigen::VectorXd>& u,
+                     const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs);
+
 /// The friction forces of the slipping points, per body, every dof (node-major): μ N along the friction
 /// direction on the slave node, the opposite on the master nodes by their weights. Empty when no pair is Coulomb.
 std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs);

@@ -20,6 +20,9 @@ void nodal_von_mises(const Model&, size_t, const BodyResults& r, int n, double* 
 void contact_pressure(const Model&, size_t, const BodyResults& r, int n, double* out) {
   out[0] = n < r.contact_pressure.size() ? r.contact_pressure[n] : 0.0;
 }
+void contact_slip(const Model&, size_t, const BodyResults& r, int n, double* out) {
+  out[0] = n < r.contact_slip.size() ? r.contact_slip[n] : 0.0;
+}
 void element_stress(const Model&, size_t, const BodyResults& r, int e, double* out) {
   std::copy(r.element_stress[e].begin(), r.element_stress[e].end(), out);
 }
@@ -42,6 +45,8 @@ const std::vector<OutputField>& output_fields() {
       {"stress", "stress (nodal average)", "stress", "stress", L::Node, 6, false, {}, nodal_stress},
       {"von_mises", "von Mises stress", "von Mises", "stress", L::Node, 1, true, {}, nodal_von_mises},
       {"contact_pressure", "contact pressure", "contact p", "stress", L::Node, 1, true, has_contact, contact_pressure},
+      {"contact_slip", "contact slip (tangential sliding so far)", "slip", "length", L::Node, 1, true, has_contact,
+       contact_slip},
       {"stress", "stress (element mean)", "stress", "stress", L::Cell, 6, false, {}, element_stress},
       {"von_mises", "von Mises stress (element mean)", "von Mises", "stress", L::Cell, 1, false, {}, element_von_mises},
       {"plastic_strain", "equivalent plastic strain (element mean)", "plastic strain", "-", L::Cell, 1, true,

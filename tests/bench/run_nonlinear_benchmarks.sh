@@ -4,23 +4,25 @@
 # and tangent evaluations per group, interface CG iterations, contact force, in-process time, peak memory — and then
 # the time ratios against `direct` + `always`, paired, from farm-bench (when it is on the PATH).
 #
-# Usage: tests/bench/run_nonlinear_benchmarks.sh [--rollsim BIN] [--repeat N]
+# Usage: tests/bench/run_nonlinear_benchmarks.sh [--rollsim BIN] [--repeat N] [--sample FILE]
+# (--sample samples/cylinder-plastic-3d.json: Example 2 in 3D, Table V)
 # This script builds nothing. Timing is not a test: it fails only if a run fails.
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 ROLLSIM=$ROOT/build/app/rollsim
 REPEAT=5
+SAMPLE=$ROOT/samples/cylinder-plastic-2d.json
 while (($#)); do
   case $1 in
     --rollsim) ROLLSIM=$2; shift 2 ;;
     --repeat) REPEAT=$2; shift 2 ;;
-    -h|--help) sed -n 2,7p "$0"; exit 0 ;;
+    --sample) SAMPLE=$(realpath "$2"); shift 2 ;;
+    -h|--help) sed -n 2,8p "$0"; exit 0 ;;
     *) echo "run_nonlinear_benchmarks: unknown argument $1" >&2; exit 2 ;;
   esac
 done
 ROLLSIM=$(realpath "$ROLLSIM")
-SAMPLE=$ROOT/samples/cylinder-plastic-2d.json
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 VARIANTS=("skyline always" "direct always" "mixed always" "direct selective" "mixed selective")

@@ -66,6 +66,13 @@ TEST_P(Friction, ASlidingBlockCarriesExactlyMuTimesItsNormalForce) {
   // tilt of the normals on the (stiff) plane
   EXPECT_NEAR(r.contacts.at(0).tangential_force, mu * r.contacts.at(0).normal_force, 1e-6 * pressing);
   EXPECT_NEAR(dragging, mu * pressing, 1e-4 * pressing);
+  // the slip field: every node of the block's bottom slid the drag less the block's shear (μ p h / G ≈ 0.01)
+  const Eigen::VectorXd& slip = r.bodies[1].contact_slip;
+  ASSERT_EQ(slip.size(), 15);
+  for (int n = 0; n < 15; n += 3) {  // the bottom nodes: numbered along y first, 3 per column
+    EXPECT_GT(slip[n], 0.97) << "node " << n;
+    EXPECT_LT(slip[n], 1.0) << "node " << n;
+  }
 }
 
 TEST_P(Friction, ABlockDraggedLessThanItsSlipDistanceSticksBelowMuN) {
@@ -86,6 +93,7 @@ TEST_P(Friction, AStickingPairHoldsBeyondMuN) {
   const Results stuck = run(drag(1.0, "sticking", GetParam()));
   ASSERT_TRUE(stuck.status.ok()) << stuck.status.message;
   EXPECT_GT(top_force(stuck, 0), 2 * mu * -top_force(stuck, 1));
+  EXPECT_LT(stuck.bodies[1].contact_slip.cwiseAbs().maxCoeff(), 1e-9) << "nothing slides";
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, Friction, ::testing::Values("direct", "mixed"));
