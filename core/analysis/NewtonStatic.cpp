@@ -196,8 +196,7 @@ std::string NewtonRun::line_search(const std::vector<size_t>& tangent, GroupAsse
 Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
-  step_start_ = body_displacements(from);  // every dof, where the step began
-  const std::vector<Eigen::VectorXd>& step_start = step_start_;
+  step_start_ = body_displacements(from);
   new_step(pairs_);
   const std::vector<size_t> all = all_groups(sys);
   double first = 0, correction = 0;
@@ -273,7 +272,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       std::vector<ConstraintRow> kept;
       for (int r : contact_.kept) kept.push_back(rows_[r]);
       const std::vector<Eigen::VectorXd> u_now = body_displacements(lf);
-      changed = update_friction(model_, kept, lambda_.head(contact_.d.size()), u_now, step_start, pairs_);
+      changed = update_friction(model_, kept, lambda_.head(contact_.d.size()), u_now, step_start_, pairs_);
       changed += update_active_set(model_, kept, lambda_.head(contact_.d.size()), u_now, pairs_,
                                    solver_.multiplier_tolerance());
       if (changed) lambda_valid_ = false;
