@@ -50,7 +50,10 @@ class NewtonRun {
     } catch (const std::runtime_error& e) {
       throw AnalysisError(e.what());
     }
-    for (const ContactPair& p : model.contacts) large_sliding_ = large_sliding_ || p.large_sliding;
+    for (const ContactPair& p : model.contacts) {
+      step_sliding_ = step_sliding_ || p.sliding == ContactPair::Sliding::Step;
+      iteration_sliding_ = iteration_sliding_ || p.sliding == ContactPair::Sliding::Iteration;
+    }
     save();
   }
 
@@ -58,7 +61,9 @@ class NewtonRun {
 
  private:
   Attempt attempt(int increment, int attempt_no, double from, double lf);
-  void set_constraints(double lf);
+  /// The contact rows at the current iterate; `step_begins`: the pairs that slide large per step are searched again
+  /// (in the configuration the step starts from), those that slide per iteration always are.
+  void set_constraints(double lf, bool step_begins = false);
   /// Residuals (and trial states) of `which`, tangents of `tangent`; empty cause when no element inverted.
   std::string assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                        GroupAssembler::Factors at);
@@ -90,8 +95,10 @@ class NewtonRun {
   bool lambda_valid_ = false;  // λ belongs to the current constraint rows
   bool assembled_once_ = false;
   bool solved_once_ = false;
-  bool refresh_all_ = false;    // after a cut-back: every group gets a new tangent and factor (none is current)
-  bool large_sliding_ = false;  // a pair is searched again at every iteration
+  bool refresh_all_ = false;        // after a cut-back: every group gets a new tangent and factor (none is current)
+  bool step_sliding_ = false;       // a pair is searched again where each step begins
+  bool iteration_sliding_ = false;  // a pair is searched again at every iteration
+  bool search_again_ = false;       // the step converged on projections that moved: search at the iterate
   std::vector<std::array<int, 3>> row_keys_;      // (pair, slave node, component) of the kept contact rows
   std::vector<Eigen::VectorXd> step_start_;       // every dof of every body where the current step began
   std::vector<Eigen::VectorXd> previous_, step_;  // the iterate before the last solve, and its correction
@@ -101,8 +108,12 @@ class NewtonRun {
   std::vector<NewtonIteration> log_;
 };
 
-void NewtonRun::set_constraints(double lf) {
-  if (large_sliding_) follow_contacts(model_, body_displacements(lf), pairs_);
+void NewtonRun::set_constraints(double lf, bool step_begins) {
+  if (step_sliding_ && step_begins) follow_contacts(model_, step_start_, pairs_, ContactPair::Sliding::Step);
+  if (step_sliding_ && search_again_)
+    follow_contacts(model_, body_displacements(lf), pairs_, ContactPair::Sliding::Step);
+  search_again_ = false;
+  if (iteration_sliding_) follow_contacts(model_, body_displacements(lf), pairs_, ContactPair::Sliding::Iteration);
   rows_ = contact_rows(model_, pairs_);
   contact_ = body_constraints(rows_, layout_.body_dofs(), lf);
   layout_.set_contact(contact_);
@@ -204,7 +215,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
   for (int k = 1;; ++k) {
     if (obs_.cancel_requested())
       return {{Status::cancelled, Reason::none, "cancelled in increment " + std::to_string(increment)}, "", k - 1};
-    set_constraints(lf);
+    set_constraints(lf, k == 1);
     // the first iteration starts from the converged state, the prescribed increment predicted by the tangent
     const GroupAssembler::Factors at{lf, k == 1 ? from : lf, k == 1 ? lf - from : 0.0};
     std::vector<size_t> tangent = all;
@@ -235,8 +246,12 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     step = std::sqrt(step);
     if (k > 1) obs_.on_newton_iteration(increment, k - 1, relative);
     const bool balanced = residual == 0.0 || (k > 1 && relative <= opt_.tolerance);
-    if (balanced && lambda_valid_ && changed == 0 && correction <= opt_.displacement_tolerance * step)
-      return {{}, "", k - 1};
+    if (balanced && lambda_valid_ && changed == 0 && correction <= opt_.displacement_tolerance * step) {
+      if (!step_sliding_ || projections_moved(model_, body_displacements(lf), pairs_) == 0) return {{}, "", k - 1};
+      search_again_ = true;  // converged on the step's first projections: iterate on, projected where it now is
+      changed = 1;
+      continue;
+    }
     if (k > 1 && relative > 1e6) return {{}, "the residual grew to " + fmt(relative) + " times its first value", k - 1};
     if (k > opt_.max_iterations)
       return {{},

@@ -1,5 +1,6 @@
 #include "contact/ContactConstraints.h"
 
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -79,10 +80,11 @@ void carry(const PairState& from, size_t j, ContactPoint c, PairState& to) {
 }
 }  // namespace
 
-void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs) {
+void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs,
+                     ContactPair::Sliding when) {
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
-    if (!p.large_sliding) continue;
+    if (p.sliding != when) continue;
     const Mesh& slave = model.bodies[p.slave_body].mesh;
     const Mesh& master = model.bodies[p.master_body].mesh;
     const Mesh master_now = displaced(master, u[p.master_body]);
@@ -114,6 +116,24 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
     }
     pairs[i] = std::move(now);
   }
+}
+
+int projections_moved(const Model& model, const std::vector<Eigen::VectorXd>& u, const std::vector<PairState>& pairs) {
+  std::vector<PairState> now = pairs;
+  follow_contacts(model, u, now, ContactPair::Sliding::Step);
+  int moved = 0;
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    if (p.sliding != ContactPair::Sliding::Step) continue;
+    std::map<int, double> gap;
+    for (size_t j = 0; j < now[i].points.size(); ++j) gap[now[i].points[j].slave_node] = now[i].points[j].gap;
+    for (size_t j = 0; j < pairs[i].points.size(); ++j) {
+      if (!pairs[i].active[j]) continue;
+      const auto it = gap.find(pairs[i].points[j].slave_node);
+      moved += it == gap.end() || std::abs(it->second) > 1e-8 * p.search_distance;
+    }
+  }
+  return moved;
 }
 
 namespace {

@@ -48,11 +48,17 @@ Eigen::Vector3d relative_position(const ContactPair& p, const ContactPoint& c, c
 /// closed (gap ≤ 1e-9 of the search distance). Throws std::runtime_error naming a pair whose surfaces never meet.
 std::vector<PairState> search_contacts(const Model& model);
 
-/// Large sliding: the pairs that slide large (ContactPair::large_sliding) searched again in the current
-/// configuration (u: every dof of every body, node-major), so that a slave node travels from master facet to master
-/// facet. A slave node keeps its active flag and friction state; a node new to the pair is active where it touches
-/// or penetrates. A point that sticks keeps its master point, its normal and tangents turned with the master facet.
-void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs);
+/// Large sliding: the pairs that slide `when` (ContactPair::sliding) searched again in the configuration u (every
+/// dof of every body, node-major), so that a slave node travels from master facet to master facet. A slave node keeps
+/// its active flag and friction state; a node new to the pair is active where it touches or penetrates. A point that
+/// sticks keeps its master point, its normal and tangents turned with the master facet.
+void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs,
+                     ContactPair::Sliding when);
+
+/// How many active points of the pairs that slide per step would move if searched again in the configuration u:
+/// their new projection is off by more than 1e-8 of the search distance along the normal, or off the master surface.
+/// A step that converged on its first projections is not done while this is not zero.
+int projections_moved(const Model& model, const std::vector<Eigen::VectorXd>& u, const std::vector<PairState>& pairs);
 
 /// The rows of the active points, pair by pair, point by point.
 std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<PairState>& pairs);

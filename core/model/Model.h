@@ -67,7 +67,8 @@ struct Probe {
 /// tied: the slave nodes stick to the master surface in every component (the paper's "infinite friction");
 /// frictionless: normal, unilateral, with an active set (the contact zone is an unknown). Small sliding:
 /// each slave node keeps the master facet and the normal found in the undeformed configuration; large sliding
-/// (the Newton analysis): the projection is searched again in the current configuration at every iteration.
+/// (the Newton analysis): the projection is searched again in the configuration where each step begins (Step), or
+/// in the current configuration at every Newton iteration (Iteration).
 /// sticking: unilateral, and an active point keeps its master point (no slip: the paper's rolling condition);
 /// coulomb: unilateral, an active point sticks while its tangential force is within μ times its normal force and
 /// slips with exactly μ times it otherwise.
@@ -79,7 +80,7 @@ struct ContactPair {
   int slave_body = 0, master_body = 0;
   std::string slave_surface, master_surface;
   double search_distance = 0;  // slave nodes farther than this from the master surface are ignored [length]
-  bool large_sliding = false;
+  enum class Sliding { Small, Step, Iteration } sliding = Sliding::Small;
   double friction = 0;  // Coulomb's μ [-]
 };
 

@@ -461,10 +461,10 @@ void add_contacts(Model& model, const json& d) {
     p.master_surface = c.at("master_surface").get<std::string>();
     p.search_distance = c.contains("search_distance") ? c.at("search_distance").get<double>()
                                                       : (p.kind == ContactKind::Tied ? 1e-6 : 0.05) * model_size(model);
-    const std::string sliding = c.value("sliding", "auto");
-    const bool finite = model.bodies[p.slave_body].kinematics == Kinematics::Finite ||
-                        model.bodies[p.master_body].kinematics == Kinematics::Finite;
-    p.large_sliding = p.kind != ContactKind::Tied && (sliding == "large" || (sliding == "auto" && finite));
+    const std::string sliding = c.value("sliding", "small");
+    using S = ContactPair::Sliding;
+    if (p.kind != ContactKind::Tied)
+      p.sliding = sliding == "large_every_iteration" ? S::Iteration : sliding == "large" ? S::Step : S::Small;
     model.contacts.push_back(std::move(p));
   }
 }

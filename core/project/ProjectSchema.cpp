@@ -313,9 +313,13 @@ const ObjectSchema kContact{
      non_negative("friction", "-", "Coulomb's friction coefficient μ (coulomb pairs only, required there)"),
      req(str("slave_body", "body carrying the multipliers")), req(str("slave_surface", "surface of the slave body")),
      req(str("master_body", "the other body")), req(str("master_surface", "surface of the master body")),
-     choice("sliding", {"auto", "small", "large"}, "auto",
-            "unilateral pairs: small or large sliding (auto: large when either body has finite kinematics; the "
-            "linear analysis always slides small)"),
+     choice("sliding", {"small", "large", "large_every_iteration"}, "small",
+            "unilateral pairs: small sliding (the projection of the undeformed configuration), or large (Newton "
+            "analysis) — searched again where each step begins, its Newton iterations keeping that projection "
+            "(quadratic convergence), and again wherever the step converged while the projections moved by more "
+            "than 1e-8 of the search distance; or at every Newton iteration. The contact's geometric stiffness is "
+            "not linearised: where little slides, small sliding converges fastest (docs/BENCHMARKS-NONLINEAR.md). "
+            "The linear analysis always slides small"),
      positive("search_distance", "length",
               "slave nodes farther from the master surface are ignored (default: 1e-6 of the model size for tied, "
               "5 % of the model size for frictionless)")},

@@ -23,7 +23,7 @@ json drag(double distance, const std::string& type, const std::string& mode) {
   };
   json pair = {{"name", "drag"},          {"type", type},           {"slave_body", "block"},
                {"slave_surface", "ymin"}, {"master_body", "plane"}, {"master_surface", "ymax"},
-               {"search_distance", 0.2}};
+               {"search_distance", 0.2},  {"sliding", "large"}};
   if (type == "coulomb") pair["friction"] = mu;
   return {
       {"name", "drag"},
