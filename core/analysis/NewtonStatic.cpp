@@ -33,6 +33,17 @@ std::string fmt(double v) {
   return buf;
 }
 
+/// A tangent that fails to factor after the load took effect: what the factorization found, without the advice on
+/// supports (the model was held before) — at finite strain a part under heavy compression can lose stability alone.
+std::string tangent_failure(const std::string& what) {
+  size_t advice = what.find("): a body or part of it is not held");
+  if (advice != std::string::npos) ++advice;
+  if (advice == std::string::npos) advice = what.find(" — check that the contact surfaces");
+  return "the tangent is singular or not positive definite (" + what.substr(0, advice) +
+         "): under this load a part of the model loses its stiffness — plastic flow without hardening, or at finite "
+         "strain a compressed body or FETI subdomain that cannot carry the load alone";
+}
+
 /// The run: the block system, the current iterate (u per group, λ, active set) and the last converged state.
 class NewtonRun {
  public:
@@ -266,7 +277,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       sol = solve_checked(model_, layout_.body_dofs(), solver_, sys, obs_);
     } catch (const AnalysisError& e) {
       if (!solved_once_) throw;  // singular before any load took effect: the model itself is not held
-      return {{}, std::string("the tangent is singular (") + e.what() + ")", k - 1};
+      return {{}, tangent_failure(e.what()), k - 1};
     }
     solved_once_ = true;
     // an interface CG that stopped at the round-off level of its data gave the best correction the data allow:
