@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "contact/Friction.h"
+
 namespace rollsim {
 
 void contact_results(const Model& model, const std::vector<PairState>& pairs, const std::vector<ConstraintRow>& rows,
@@ -31,7 +33,7 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
     for (auto& [j, f] : force[i]) {
       const ContactPoint& c = pairs[i].points[j];
       if (p.kind == ContactKind::Coulomb && pairs[i].slip[j])  // μ N against the slip, N from this λ
-        f += p.friction * f.dot(c.normal) * pairs[i].friction_dir[j];
+        f += p.friction * f.dot(c.normal) * friction_direction(pairs[i], j);
       const double fn = f.dot(c.normal);
       cr.normal_force += fn;
       tangential += f - fn * c.normal;

@@ -14,6 +14,7 @@
 #include "analysis/Recovery.h"
 #include "contact/ContactConstraints.h"
 #include "contact/Friction.h"
+#include "solve/Factorization.h"
 #include "solve/Stopwatch.h"
 
 namespace rollsim {
@@ -33,13 +34,10 @@ std::string fmt(double v) {
   return buf;
 }
 
-/// A tangent that fails to factor after the load took effect: what the factorization found, without the advice on
-/// supports (the model was held before) — at finite strain a part under heavy compression can lose stability alone.
+/// A tangent that fails to factor after the load took effect (the model was held then, so no advice on supports):
+/// what the factorization found — at finite strain a part under heavy compression can lose stability alone.
 std::string tangent_failure(const std::string& what) {
-  size_t advice = what.find("): a body or part of it is not held");
-  if (advice != std::string::npos) ++advice;
-  if (advice == std::string::npos) advice = what.find(" — check that the contact surfaces");
-  return "the tangent is singular or not positive definite (" + what.substr(0, advice) +
+  return "the tangent is singular or not positive definite (" + what +
          "): under this load a part of the model loses its stiffness — plastic flow without hardening, or at finite "
          "strain a compressed body or FETI subdomain that cannot carry the load alone";
 }
@@ -273,10 +271,9 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     const long cg_before = solver_.stats().cg_iterations;
     check_floating_groups_held(sys);
     BlockSolution sol;
-    try {
-      sol = solve_checked(model_, layout_.body_dofs(), solver_, sys, obs_);
-    } catch (const AnalysisError& e) {
-      if (!solved_once_) throw;  // singular before any load took effect: the model itself is not held
+    try {  // the first solve's failures are the model's (supports, options): solve_checked names them
+      sol = solved_once_ ? solver_.solve(sys, &obs_) : solve_checked(model_, layout_.body_dofs(), solver_, sys, obs_);
+    } catch (const SingularMatrix& e) {
       return {{}, tangent_failure(e.what()), k - 1};
     }
     solved_once_ = true;

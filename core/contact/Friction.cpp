@@ -69,6 +69,11 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
   return changed;
 }
 
+Eigen::Vector3d friction_direction(const PairState& s, size_t j) {
+  const Eigen::Vector3d d = tangential_part(s.friction_dir[j], s.points[j].normal);
+  return d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::Zero();
+}
+
 std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs) {
   bool any = false;
   for (const ContactPair& p : model.contacts) any = any || p.kind == ContactKind::Coulomb;
@@ -84,9 +89,7 @@ std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vecto
     for (size_t j = 0; j < s.points.size(); ++j) {
       if (!s.active[j] || !s.slip[j]) continue;
       const ContactPoint& c = s.points[j];
-      const Eigen::Vector3d d = tangential_part(s.friction_dir[j], c.normal);
-      if (d.norm() == 0.0) continue;
-      const Eigen::Vector3d F = p.friction * s.normal_force[j] * d.normalized();
+      const Eigen::Vector3d F = p.friction * s.normal_force[j] * friction_direction(s, j);
       for (int k = 0; k < dim; ++k) {
         f[p.slave_body][c.slave_node * dim + k] += F[k];
         for (size_t n = 0; n < c.master_nodes.size(); ++n)

@@ -27,6 +27,10 @@ void new_step(std::vector<PairState>& pairs);
 void accumulate_slip(const Model& model, const std::vector<Eigen::VectorXd>& u,
                      const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs);
 
+/// The unit direction of the friction force on the slave node of slipping point j: its friction direction in the
+/// tangent plane of its master facet (zero when it has none).
+Eigen::Vector3d friction_direction(const PairState& s, size_t j);
+
 /// The friction forces of the slipping points, per body, every dof (node-major): μ N along the friction
 /// direction on the slave node, the opposite on the master nodes by their weights. Empty when no pair is Coulomb.
 std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs);
