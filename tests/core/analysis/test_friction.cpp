@@ -1,17 +1,16 @@
 // Coulomb friction (the check): a block pressed on a (much stiffer) plane and dragged along it by two of the
-// plane's segments carries exactly μ times its
-// normal force once it slips, and less while it sticks; a sticking pair holds beyond μ N. The same answers from
-// `direct` and `mixed` (the friction force acts on the bodies' residuals, the stiffness blocks stay symmetric).
+// plane's segments carries exactly μ times its normal force once it slips, and less while it sticks; a sticking pair
+// holds beyond μ N. The same answers from `direct` and `mixed` (the friction force acts on the bodies' residuals, the
+// stiffness blocks stay symmetric).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 
-#include "project/ModelBuilder.h"
-#include "project/Project.h"
-#include "project/RunProject.h"
+#include "common/RunJson.h"
 
 using namespace rollsim;
+using testing_support::run_json;
 using json = nlohmann::json;
 
 namespace {
@@ -40,25 +39,14 @@ json drag(double distance, const std::string& type, const std::string& mode) {
       {"solver", {{"mode", mode}, {"cg_tolerance", 1e-10}}}};
 }
 
-Results run(const json& j) {
-  const Project p = parse_project(j.dump(), "test.json");
-  return run_project(p, build_model(p), nullptr);
-}
-
-/// Σ f over the block's top (the prescribed nodes, uy = −0.01), component k: the force that drags and presses.
-double top_force(const Results& r, int k) {
-  const Eigen::VectorXd &f = r.bodies[1].nodal_force, &u = r.bodies[1].displacement;
-  double s = 0;
-  for (Eigen::Index n = 0; n < u.size() / 2; ++n)
-    if (std::abs(u[2 * n + 1] + 0.01) < 1e-12) s += f[2 * n + k];
-  return s;
-}
+/// The force that drags and presses the block: the reaction of its top (uy = −0.01), component k.
+double top_force(const Results& r, int k) { return testing_support::reaction_where_uy(r, 1, 2, -0.01, k); }
 }  // namespace
 
 class Friction : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Friction, ASlidingBlockCarriesExactlyMuTimesItsNormalForce) {
-  const Results r = run(drag(1.0, "coulomb", GetParam()));
+  const Results r = run_json(drag(1.0, "coulomb", GetParam()));
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   const double pressing = -top_force(r, 1), dragging = top_force(r, 0);
   EXPECT_GT(pressing, 1.0);
@@ -76,8 +64,8 @@ TEST_P(Friction, ASlidingBlockCarriesExactlyMuTimesItsNormalForce) {
 }
 
 TEST_P(Friction, ABlockDraggedLessThanItsSlipDistanceSticksBelowMuN) {
-  const Results r = run(drag(0.004, "coulomb", GetParam()));
-  const Results stuck = run(drag(0.004, "sticking", GetParam()));
+  const Results r = run_json(drag(0.004, "coulomb", GetParam()));
+  const Results stuck = run_json(drag(0.004, "sticking", GetParam()));
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_TRUE(stuck.status.ok()) << stuck.status.message;
   const double pressing = -top_force(r, 1), dragging = top_force(r, 0);
@@ -90,7 +78,7 @@ TEST_P(Friction, ABlockDraggedLessThanItsSlipDistanceSticksBelowMuN) {
 }
 
 TEST_P(Friction, AStickingPairHoldsBeyondMuN) {
-  const Results stuck = run(drag(1.0, "sticking", GetParam()));
+  const Results stuck = run_json(drag(1.0, "sticking", GetParam()));
   ASSERT_TRUE(stuck.status.ok()) << stuck.status.message;
   EXPECT_GT(top_force(stuck, 0), 2 * mu * -top_force(stuck, 1));
   EXPECT_LT(stuck.bodies[1].contact_slip.cwiseAbs().maxCoeff(), 1e-9) << "nothing slides";
@@ -133,7 +121,7 @@ TEST(Friction3D, ABlockSlidingOnAFaceCarriesMuN) {
   p["bodies"][1]["mesh"].update({{"nx", 2}, {"nz", 2}, {"lz", 2.0}, {"origin", {3.0, 1.0, 1.0}}});
   p["boundary_conditions"][0]["uz"] = 0.0;
   p["boundary_conditions"][1].update({{"ux", 0.6}, {"uz", 0.3}});
-  const Results r = run(p);
+  const Results r = run_json(p);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   const ContactResult& c = r.contacts.at(0);
   EXPECT_GT(c.normal_force, 1.0);
@@ -141,9 +129,7 @@ TEST(Friction3D, ABlockSlidingOnAFaceCarriesMuN) {
   // slightly (measured 13.53606 against 13.53616)
   EXPECT_NEAR(c.tangential_force, mu * c.normal_force, 1e-4 * c.normal_force);
   // the drag's reactions point along the drag: x : z = 2 : 1
-  const Eigen::VectorXd &f = r.bodies[1].nodal_force, &u = r.bodies[1].displacement;
-  double fx = 0, fz = 0;
-  for (Eigen::Index n = 0; n < u.size() / 3; ++n)
-    if (std::abs(u[3 * n + 1] + 0.01) < 1e-12) fx += f[3 * n], fz += f[3 * n + 2];
+  const double fx = testing_support::reaction_where_uy(r, 1, 3, -0.01, 0);
+  const double fz = testing_support::reaction_where_uy(r, 1, 3, -0.01, 2);
   EXPECT_NEAR(fz / fx, 0.5, 1e-3);
 }

@@ -8,11 +8,10 @@
 
 #include <cmath>
 
-#include "project/ModelBuilder.h"
-#include "project/Project.h"
-#include "project/RunProject.h"
+#include "common/RunJson.h"
 
 using namespace rollsim;
+using testing_support::run_json;
 using json = nlohmann::json;
 
 namespace {
@@ -43,26 +42,15 @@ json slider(double slide, const std::string& sliding, const std::string& mode) {
       {"solver", {{"mode", mode}, {"cg_tolerance", 1e-10}}}};
 }
 
-Results run(const json& j) {
-  const Project p = parse_project(j.dump(), "test.json");
-  return run_project(p, build_model(p), nullptr);
-}
-
-/// Σ f over the slider's top (the prescribed nodes), component k.
-double top_force(const Results& r, int k) {
-  const Eigen::VectorXd &f = r.bodies[1].nodal_force, &u = r.bodies[1].displacement;
-  double s = 0;
-  for (Eigen::Index n = 0; n < u.size() / 2; ++n)
-    if (std::abs(u[2 * n + 1] + 0.02) < 1e-12) s += f[2 * n + k];
-  return s;
-}
+/// The reaction of the slider's top (uy = −0.02), component k.
+double top_force(const Results& r, int k) { return testing_support::reaction_where_uy(r, 1, 2, -0.02, k); }
 }  // namespace
 
 class LargeSliding : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LargeSliding, ASlideOfTwentySegmentsCarriesNoShearAndTheSameNormalForce) {
-  const Results still = run(slider(0.0, "large", GetParam()));
-  const Results slid = run(slider(10.0, "large", GetParam()));
+  const Results still = run_json(slider(0.0, "large", GetParam()));
+  const Results slid = run_json(slider(10.0, "large", GetParam()));
   ASSERT_TRUE(still.status.ok()) << still.status.message;
   ASSERT_TRUE(slid.status.ok()) << slid.status.message;
   const double normal = still.contacts.at(0).normal_force;
@@ -74,8 +62,8 @@ TEST_P(LargeSliding, ASlideOfTwentySegmentsCarriesNoShearAndTheSameNormalForce) 
 }
 
 TEST(LargeSliding, SearchingEveryIterationGivesTheSameAnswer) {
-  const Results step = run(slider(10.0, "large", "direct"));
-  const Results every = run(slider(10.0, "large_every_iteration", "direct"));
+  const Results step = run_json(slider(10.0, "large", "direct"));
+  const Results every = run_json(slider(10.0, "large_every_iteration", "direct"));
   ASSERT_TRUE(step.status.ok()) << step.status.message;
   ASSERT_TRUE(every.status.ok()) << every.status.message;
   const double normal = step.contacts.at(0).normal_force;
@@ -86,8 +74,8 @@ TEST(LargeSliding, SearchingEveryIterationGivesTheSameAnswer) {
 double base_dent(const Results& r) { return r.bodies[0].displacement[2 * (36 * 3 + 2) + 1]; }
 
 TEST(LargeSliding, SmallSlidingPressesTheBaseWhereTheSliderStarted) {
-  const Results large = run(slider(10.0, "large", "direct"));
-  const Results small = run(slider(10.0, "small", "direct"));
+  const Results large = run_json(slider(10.0, "large", "direct"));
+  const Results small = run_json(slider(10.0, "small", "direct"));
   ASSERT_TRUE(large.status.ok()) << large.status.message;
   ASSERT_TRUE(small.status.ok()) << small.status.message;
   EXPECT_LT(base_dent(large), -2e-3);                               // dented under the slider

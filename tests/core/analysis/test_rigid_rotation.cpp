@@ -5,11 +5,10 @@
 
 #include <cmath>
 
-#include "project/ModelBuilder.h"
-#include "project/Project.h"
-#include "project/RunProject.h"
+#include "common/RunJson.h"
 
 using namespace rollsim;
+using testing_support::run_json;
 using json = nlohmann::json;
 
 namespace {
@@ -31,11 +30,6 @@ json block(const json& bcs, const std::string& mode = "direct") {
           {"solver", {{"mode", mode}, {"cg_tolerance", 1e-10}}}};
 }
 
-Results run(const json& j) {
-  const Project p = parse_project(j.dump(), "test.json");
-  return run_project(p, build_model(p), nullptr);
-}
-
 json rotation(const std::string& set, double degrees, std::array<double, 2> center, std::array<double, 2> t = {}) {
   return {{"type", "rotation"}, {"body", "block"}, {"set", set}, {"center", center},
           {"angle", degrees},   {"ux", t[0]},      {"uy", t[1]}};
@@ -52,7 +46,7 @@ double max_abs(const std::vector<std::array<double, 6>>& s) {
 class PrescribedRotation : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PrescribedRotation, AQuarterTurnByOneEdgeIsRigidAndUnstressed) {
-  const Results r = run(block(json::array({rotation("xmin", 90.0, {0.0, W / 2})}), GetParam()));
+  const Results r = run_json(block(json::array({rotation("xmin", 90.0, {0.0, W / 2})}), GetParam()));
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_EQ(r.increments.size(), 8u);
   // the far corner (L, 0) goes to (W/2, W/2 + L): u = (W/2 − L, W/2 + L − 0)
@@ -65,11 +59,11 @@ TEST_P(PrescribedRotation, AQuarterTurnByOneEdgeIsRigidAndUnstressed) {
 
 TEST_P(PrescribedRotation, AStretchedBlockTurnedCarriesTheSameStressesRotated) {
   const double stretch = 1.5, theta = 70.0, c = std::cos(theta * M_PI / 180), s = std::sin(theta * M_PI / 180);
-  const Results plain =
-      run(block({rotation("xmin", 0.0, {0.0, 0.0}), rotation("xmax", 0.0, {0.0, 0.0}, {stretch, 0.0})}, GetParam()));
-  const Results turned =
-      run(block({rotation("xmin", theta, {0.0, 0.0}), rotation("xmax", theta, {0.0, 0.0}, {c * stretch, s * stretch})},
-                GetParam()));
+  const Results plain = run_json(
+      block({rotation("xmin", 0.0, {0.0, 0.0}), rotation("xmax", 0.0, {0.0, 0.0}, {stretch, 0.0})}, GetParam()));
+  const Results turned = run_json(
+      block({rotation("xmin", theta, {0.0, 0.0}), rotation("xmax", theta, {0.0, 0.0}, {c * stretch, s * stretch})},
+            GetParam()));
   ASSERT_TRUE(plain.status.ok()) << plain.status.message;
   ASSERT_TRUE(turned.status.ok()) << turned.status.message;
   const auto &a = plain.bodies[0].element_stress, &b = turned.bodies[0].element_stress;
