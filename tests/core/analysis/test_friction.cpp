@@ -7,7 +7,7 @@
 #include <cmath>
 #include <functional>
 
-#include "common/RunJson.h"
+#include "../../common/RunJson.h"
 
 using namespace rollsim;
 using testing_support::run_json;

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "common/RunJson.h"
+#include "../../common/RunJson.h"
 
 using namespace rollsim;
 using testing_support::run_json;
