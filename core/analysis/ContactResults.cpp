@@ -32,8 +32,8 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
       slave.contact_slip[pairs[i].points[j].slave_node] = pairs[i].slid[j];
     for (auto& [j, f] : force[i]) {
       const ContactPoint& c = pairs[i].points[j];
-      if (p.kind == ContactKind::Coulomb && pairs[i].slip[j])  // μ N against the slip, N from this λ
-        f += p.friction * f.dot(c.normal) * friction_direction(pairs[i], j);
+      if (can_slip(p) && pairs[i].slip[j])  // μ N (capped) against the slip, N from this λ
+        f += slip_force(p, f.dot(c.normal), c.weight) * friction_direction(pairs[i], j);
       const double fn = f.dot(c.normal);
       cr.normal_force += fn;
       tangential += f - fn * c.normal;

@@ -86,6 +86,8 @@ class NewtonRun {
   /// One secant step on s(η) = du · (r(u_prev + η du) − Cᵀλ) when the full step leaves |s(1)| > |s(0)| / 2
   /// (Crisfield 1991, §9.3): moves the iterate back to u_prev + η du and re-assembles there.
   std::string line_search(const std::vector<size_t>& tangent, GroupAssembler::Factors at, double& eta);
+  /// Stick/slip and active-set update from the last solve (its λ and the iterate); the number of points changed.
+  int update_statuses(double lf);
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
@@ -213,6 +215,18 @@ std::string NewtonRun::line_search(const std::vector<size_t>& tangent, GroupAsse
   return assemble(all, tangent, at);
 }
 
+int NewtonRun::update_statuses(double lf) {
+  if (!has_unilateral(model_)) return 0;
+  std::vector<ConstraintRow> kept;
+  for (int r : contact_.kept) kept.push_back(rows_[r]);
+  const std::vector<Eigen::VectorXd> u_now = body_displacements(lf);
+  int changed = update_friction(model_, kept, lambda_.head(contact_.d.size()), u_now, step_start_, pairs_);
+  changed +=
+      update_active_set(model_, kept, lambda_.head(contact_.d.size()), u_now, pairs_, solver_.multiplier_tolerance());
+  if (changed) lambda_valid_ = false;
+  return changed;
+}
+
 Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
@@ -290,16 +304,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     slope_ = energy(step_);  // du · (r(u) − Cᵀλ) with the new λ: the line search's s(0)
     for (size_t g = 0; g < u_.size(); ++g) u_[g] += sol.u[g];
     correction = norm(sol.u);
-    changed = 0;
-    if (has_unilateral(model_)) {
-      std::vector<ConstraintRow> kept;
-      for (int r : contact_.kept) kept.push_back(rows_[r]);
-      const std::vector<Eigen::VectorXd> u_now = body_displacements(lf);
-      changed = update_friction(model_, kept, lambda_.head(contact_.d.size()), u_now, step_start_, pairs_);
-      changed += update_active_set(model_, kept, lambda_.head(contact_.d.size()), u_now, pairs_,
-                                   solver_.multiplier_tolerance());
-      if (changed) lambda_valid_ = false;
-    }
+    changed = update_statuses(lf);
     log_.push_back({increment, attempt_no, k, lf, residual, relative, correction, 1.0, static_cast<int>(tangent.size()),
                     changed, solver_.stats().cg_iterations - cg_before});
   }

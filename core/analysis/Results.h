@@ -3,9 +3,11 @@
 #include <Eigen/Dense>
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/RollingResults.h"
 #include "solve/RunStatus.h"
 #include "solve/SolveStats.h"
 
@@ -91,6 +93,7 @@ struct Results {
   std::vector<NewtonIteration> newton;
   std::map<std::string, long> stiffness_evaluations;
   std::string update_policy;  // the Newton driver's update policy ("always", "selective:0.01"); empty: linear
+  std::optional<RollingResults> rolling;  // a rolling pass: its measures over the completed increments
 };
 
 }  // namespace rollsim

@@ -1,6 +1,7 @@
 #include "contact/Friction.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace rollsim {
 
@@ -28,6 +29,19 @@ std::vector<std::vector<PointMultipliers>> by_point(const std::vector<PairState>
 }
 
 Eigen::Vector3d tangential_part(const Eigen::Vector3d& v, const Eigen::Vector3d& n) { return v - v.dot(n) * n; }
+
+/// A point that went from stick to slip, and by how much its tangential force passed its limit (force / limit).
+struct Overload {
+  size_t point = 0;
+  double ratio = std::numeric_limits<double>::max();
+};
+
+bool any_sticks(const PairState& s) {
+  for (size_t j = 0; j < s.points.size(); ++j)
+    if (s.active[j] && !s.slip[j]) return true;
+  return false;
+}
+
 }  // namespace
 
 int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
@@ -39,17 +53,19 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
     const ContactPair& p = model.contacts[i];
     if (!frictional(p.kind)) continue;
     PairState& s = pairs[i];
+    Overload least;  // the point that went from stick to slip with the smallest overload
     for (size_t j = 0; j < s.points.size(); ++j) {
       if (!s.active[j]) continue;
       const ContactPoint& c = s.points[j];
       s.normal_force[j] = std::max(0.0, -m[i][j].normal);
-      if (p.kind != ContactKind::Coulomb) continue;
-      const double limit = p.friction * s.normal_force[j];
+      if (!can_slip(p)) continue;
+      const double limit = slip_force(p, s.normal_force[j], c.weight);
       if (!s.slip[j]) {
         const Eigen::Vector3d f = m[i][j].tangential_force;
         if (f.norm() <= limit * (1 + 1e-9) || f.norm() == 0.0) continue;
         s.slip[j] = 1, s.friction_dir[j] = f.normalized();  // the return onto the cone keeps the direction
         ++s.switches[j], ++changed;
+        if (f.norm() / limit < least.ratio) least = {j, f.norm() / limit};
         continue;
       }
       // slipping: the friction force opposes the slip over the step (backward Euler); a slip along the force means
@@ -65,8 +81,22 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
         s.friction_dir[j] = -v.normalized();
       }
     }
+    if (p.holds_slave && least.ratio < std::numeric_limits<double>::max() && !any_sticks(s)) {
+      s.slip[least.point] = 0;  // keeps holding the body: all points slipping would leave it free
+      --s.switches[least.point], --changed;
+    }
   }
   return changed;
+}
+
+bool can_slip(const ContactPair& p) {
+  return p.kind == ContactKind::Coulomb || (p.kind == ContactKind::Sticking && p.shear_limit > 0);
+}
+
+double slip_force(const ContactPair& p, double normal_force, double weight) {
+  double limit = p.kind == ContactKind::Coulomb ? p.friction * normal_force : std::numeric_limits<double>::max();
+  if (p.shear_limit > 0) limit = std::min(limit, p.shear_limit * weight);
+  return limit;
 }
 
 Eigen::Vector3d friction_direction(const PairState& s, size_t j) {
@@ -76,7 +106,7 @@ Eigen::Vector3d friction_direction(const PairState& s, size_t j) {
 
 std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs) {
   bool any = false;
-  for (const ContactPair& p : model.contacts) any = any || p.kind == ContactKind::Coulomb;
+  for (const ContactPair& p : model.contacts) any = any || can_slip(p);
   if (!any) return {};
   const int dim = model.dim;
   std::vector<Eigen::VectorXd> f;
@@ -84,12 +114,12 @@ std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vecto
     f.push_back(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(b.mesh.num_nodes()) * dim));
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
-    if (p.kind != ContactKind::Coulomb) continue;
+    if (!can_slip(p)) continue;
     const PairState& s = pairs[i];
     for (size_t j = 0; j < s.points.size(); ++j) {
       if (!s.active[j] || !s.slip[j]) continue;
       const ContactPoint& c = s.points[j];
-      const Eigen::Vector3d F = p.friction * s.normal_force[j] * friction_direction(s, j);
+      const Eigen::Vector3d F = slip_force(p, s.normal_force[j], c.weight) * friction_direction(s, j);
       for (int k = 0; k < dim; ++k) {
         f[p.slave_body][c.slave_node * dim + k] += F[k];
         for (size_t n = 0; n < c.master_nodes.size(); ++n)

@@ -14,7 +14,10 @@ namespace rollsim {
 /// Stick/slip update of the frictional pairs from the rows and multipliers of the last solve, the displacements
 /// now (u) and at the start of the step (u_start; every dof of every body, node-major). Records every active
 /// point's normal force; returns the number of points that changed between stick and slip. A point that went back
-/// from slip to stick once in the step and slips again stays slipping for the rest of the step (no chatter).
+/// from slip to stick once in the step and slips again stays slipping for the rest of the step (no chatter). A pair
+/// that holds its slave body (ContactPair::holds_slave) keeps the least overloaded of the points that would start to
+/// slip sticking when no other point sticks: with every point slipping nothing would hold the body (a rolling slab
+/// whose friction cannot draw it in: its tangential force then stays above the limit).
 int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
                     const std::vector<Eigen::VectorXd>& u, const std::vector<Eigen::VectorXd>& u_start,
                     std::vector<PairState>& pairs);
@@ -26,6 +29,13 @@ void new_step(std::vector<PairState>& pairs);
 /// the step (u_start → u) to the distance it slid.
 void accumulate_slip(const Model& model, const std::vector<Eigen::VectorXd>& u,
                      const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs);
+
+/// Whether a pair's points can slip: Coulomb, or a sticking pair with a friction stress cap (shear_limit).
+bool can_slip(const ContactPair& p);
+
+/// The largest tangential force a point of pair p carries: μ × normal_force (Coulomb), capped at shear_limit × its
+/// tributary measure `weight`.
+double slip_force(const ContactPair& p, double normal_force, double weight);
 
 /// The unit direction of the friction force on the slave node of slipping point j: its friction direction in the
 /// tangent plane of its master facet (zero when it has none).

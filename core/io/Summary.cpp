@@ -62,6 +62,28 @@ json results_section(const Model& m, const Results& r) {
   return out;
 }
 
+// The pass's steady (or last) values, where it bit and settled, with units (the process works in mm and MPa).
+json rolling_section(const Model& m, const RollingResults& r) {
+  const bool plane = m.dim == 2;
+  const RollingIncrement& s = r.steady;
+  return {{"roll_force", s.roll_force},
+          {"roll_torque", s.roll_torque},
+          {plane ? "contact_length" : "contact_area", s.contact_length},
+          {"exit_thickness", s.exit_thickness},
+          {"spread", s.spread},
+          {"forward_slip", s.forward_slip},
+          {"bite_increment", r.bite_increment},
+          {"steady_state_increment", r.steady_state_increment},
+          {"units",
+           {{"roll_force", plane ? "N/mm (per unit width)" : "N"},
+            {"roll_torque", plane ? "N·mm/mm (per unit width)" : "N·mm"},
+            {plane ? "contact_length" : "contact_area", plane ? "mm" : "mm²"},
+            {"exit_thickness", "mm"},
+            {"spread", "mm"},
+            {"forward_slip", "-"}}},
+          {"values", r.steady_state_increment ? "mean over the steady increments" : "last increment (not steady)"}};
+}
+
 // One entry per completed load increment: its load factor, solves, CG iterations and contact resultants.
 json increments_section(const Results& r) {
   json list = json::array();
@@ -128,6 +150,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   s["increments"] = increments_section(r);
   if (!r.status.ok()) return s;
   s["results"] = results_section(model, r);
+  if (r.rolling) s["results"]["rolling"] = rolling_section(model, *r.rolling);
   s["fields"] = json::array();  // what result.vtu holds, from the output registry
   for (const OutputField& f : output_fields())
     if (is_present(f, model))

@@ -9,6 +9,7 @@
 #include "mesh/Mesh.h"
 #include "model/BodyPartition.h"
 #include "model/MaterialData.h"
+#include "model/RollingPass.h"
 
 namespace rollsim {
 
@@ -71,7 +72,8 @@ struct Probe {
 /// in the current configuration at every Newton iteration (Iteration).
 /// sticking: unilateral, and an active point keeps its master point (no slip: the paper's rolling condition);
 /// coulomb: unilateral, an active point sticks while its tangential force is within μ times its normal force and
-/// slips with exactly μ times it otherwise.
+/// slips with exactly μ times it otherwise. Either may cap the friction stress at `shear_limit` (Tresca): a point then
+/// slips once its tangential force passes shear_limit × its tributary measure.
 enum class ContactKind { Tied, Frictionless, Sticking, Coulomb };
 
 struct ContactPair {
@@ -81,7 +83,11 @@ struct ContactPair {
   std::string slave_surface, master_surface;
   double search_distance = 0;  // slave nodes farther than this from the master surface are ignored [length]
   enum class Sliding { Small, Step, Iteration } sliding = Sliding::Small;
-  double friction = 0;  // Coulomb's μ [-]
+  double friction = 0;     // Coulomb's μ [-]
+  double shear_limit = 0;  // sticking and coulomb: cap on the friction stress (0: none) [force / length^(dim−1)]
+  // the slave body has rigid modes its conditions leave free: this pair holds it, and friction keeps at least one of
+  // its active points sticking (all slipping would leave the body free; see contact/Friction.h)
+  bool holds_slave = false;
 };
 
 struct Model {
@@ -92,7 +98,8 @@ struct Model {
   std::vector<Pressure> pressures;
   std::vector<Probe> probes;
   std::vector<ContactPair> contacts;
-  std::vector<std::string> warnings;  // said to the user, e.g. a partition piece split automatically
+  std::vector<std::string> warnings;   // said to the user, e.g. a partition piece split automatically
+  std::optional<RollingPass> rolling;  // set when the project is a rolling pass
 
   long total_nodes() const;
   long total_elements() const;

@@ -7,6 +7,7 @@
 #include "mesh/Annulus.h"
 #include "mesh/Cylinder.h"
 #include "mesh/PlateWithHole.h"
+#include "mesh/RollGap.h"
 #include "mesh/StructuredBlock.h"
 
 namespace rollsim {
@@ -89,7 +90,15 @@ Mesh make_mesh(const json& m, int dim) {
     if (m.contains("origin"))
       for (int k = 0; k < dim; ++k) s.origin[k] = m["origin"][static_cast<size_t>(k)].get<double>();
     if (m.contains("x_grading")) s.x_grading = num(m, "x_grading");
-    return make_block(s);
+    Mesh mesh = make_block(s);
+    if (m.contains("roll_cut")) {  // written by the rolling process only: the pre-bitten slab (mesh/RollGap.h)
+      const json& c = m.at("roll_cut");
+      const int t = dim - 1;
+      cut_to_roll(mesh, t, s.origin[static_cast<size_t>(t)] + s.size[static_cast<size_t>(t)],
+                  {c.at("center")[0].get<double>(), c.at("center")[1].get<double>(), num(c, "radius"),
+                   c.at("n_around").get<int>()});
+    }
+    return mesh;
   }
   auto count = [&](const char* k) { return m.at(k).get<int>(); };
   if (type == "plate_with_hole")

@@ -160,6 +160,9 @@ void check_friction(const json& c, const std::string& path, std::vector<Issue>& 
   if (type != "coulomb" && c.contains("friction"))
     issues.push_back(
         {path + ".friction", "only a coulomb pair has a friction coefficient (this pair is " + type + ")"});
+  if (type != "coulomb" && type != "sticking" && c.contains("shear_limit"))
+    issues.push_back({path + ".shear_limit",
+                      "only sticking and coulomb pairs have a friction stress limit (this pair is " + type + ")"});
 }
 
 void check_contact(const json& c, const std::string& path, const json& bodies, int dim, std::vector<Issue>& issues) {
@@ -455,6 +458,7 @@ void add_contacts(Model& model, const json& d) {
              : type == "coulomb"  ? ContactKind::Coulomb
                                   : ContactKind::Frictionless;
     p.friction = c.value("friction", 0.0);
+    p.shear_limit = c.value("shear_limit", 0.0);
     p.slave_body = find_named(d.at("bodies"), c.at("slave_body").get<std::string>());
     p.master_body = find_named(d.at("bodies"), c.at("master_body").get<std::string>());
     p.slave_surface = c.at("slave_surface").get<std::string>();
@@ -483,8 +487,9 @@ SolverOptions solver_options(const Project& project) {
 }
 
 int load_increments(const Project& project) {
-  const auto a = project.data.find("analysis");
-  return a == project.data.end() ? 1 : a->value("increments", 1);
+  const json d = expand_process(project.data);  // a rolling pass sets the increments from its travel
+  const auto a = d.find("analysis");
+  return a == d.end() ? 1 : a->value("increments", 1);
 }
 
 std::string analysis_type(const Project& project) {
@@ -546,6 +551,7 @@ Model build_model(const Project& project) {
     add_condition(model, conditions[i], d.at("bodies"), static_cast<int>(i));
   for (Issue& conflict : prescribed_conflicts(model)) issues.push_back(std::move(conflict));
   add_contacts(model, d);
+  for (ContactPair& p : model.contacts) p.holds_slave = !free_rigid_modes(model, p.slave_body).empty();
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     if (in_contact(d, model.bodies[b].name)) continue;  // a floating body: the contact must hold it
     const auto modes = free_rigid_modes(model, static_cast<int>(b));
@@ -568,6 +574,7 @@ Model build_model(const Project& project) {
     }
     model.probes.push_back(std::move(probe));
   }
+  model.rolling = rolling_pass(project.data, model);
   return model;
 }
 

@@ -311,6 +311,10 @@ const ObjectSchema kContact{
             "infinite friction); coulomb: unilateral, sticks while the tangential force is below μ times the normal "
             "force and slips with μ times it (Newton analysis)"),
      non_negative("friction", "-", "Coulomb's friction coefficient μ (coulomb pairs only, required there)"),
+     non_negative("shear_limit", "stress",
+                  "sticking and coulomb pairs: the friction stress never exceeds this (a point slips once its "
+                  "tangential force passes shear_limit × its tributary length or area; Tresca's cap, e.g. the shear "
+                  "yield stress σ_0/√3 of a hot slab; 0 or absent: no cap)"),
      req(str("slave_body", "body carrying the multipliers")), req(str("slave_surface", "surface of the slave body")),
      req(str("master_body", "the other body")), req(str("master_surface", "surface of the master body")),
      choice("sliding", {"small", "large", "large_every_iteration"}, "small",

@@ -1,6 +1,7 @@
 #include "project/RollingProcess.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "project/MeshFactory.h"
 
@@ -32,11 +33,14 @@ Field count(std::string name, int def, std::string doc) {
 const ObjectSchema& rolling_process_schema() {
   static const ObjectSchema s{
       "rolling process",
-      "A flat-rolling pass. Generates bodies `slab` and `roll`, materials `slab` and `roll`, the frictionless "
-      "contact `roll-slab` (slave: the slab's top, master: the roll's surface) and the conditions: slab mid-plane "
-      "symmetry (and width symmetry y = 0 in 3D), slab rear end held in x, roll hub fixed. The slab's front end "
-      "touches the roll at the entry of the bite; the rolling analysis itself (plasticity, friction, roll rotation) "
-      "comes later. Units: mm and MPa (N/mm²).",
+      "A flat-rolling pass. Generates bodies `slab` (J2-plastic, finite strain, F-bar) and `roll` (elastic, finite "
+      "strain), their materials, the contact `roll-slab` (slave: the slab's top, master: the roll's surface; large "
+      "sliding) and the conditions: slab mid-plane symmetry (and width symmetry y = 0 in 3D) and the roll's hub "
+      "turned as a rigid body about the roll's axis, so that its surface travels `travel` in increments of "
+      "`travel_increment` (they set analysis.increments). Entry: the slab starts pre-bitten — its front end lies at "
+      "the exit plane with its top cut to the roll's surface over the arc of contact, touching the roll along the "
+      "whole arc, as a pusher would leave it once the roll grips; its rear end is free, so only friction draws it "
+      "in. Units: mm and MPa (N/mm²).",
       {[] {
          Field f;
          f.name = "type";
@@ -70,9 +74,37 @@ const ObjectSchema& rolling_process_schema() {
        count("roll_n_radial", 6, "roll elements across the ring"),
        count("roll_n_axial", 8, "roll elements along the half barrel (3D)"),
        number("slab_E", "stress", 1e5, 0, 1e12, "slab Young's modulus (hot steel)"),
+       number("slab_yield_stress", "stress", 100, 0, 1e12, "slab flow stress σ_0 (hot steel near 1100 °C)"),
+       [] {
+         Field f = number("slab_hardening", "stress", 0, 0, 1e12,
+                          "slab linear hardening modulus H (0: perfectly "
+                          "plastic)");
+         f.min_exclusive = false;
+         return f;
+       }(),
        number("slab_nu", "-", 0.3, -1, 0.5, "slab Poisson's ratio"),
        number("roll_E", "stress", 2.1e5, 0, 1e12, "roll Young's modulus"),
        number("roll_nu", "-", 0.3, -1, 0.5, "roll Poisson's ratio"),
+       [] {
+         Field f;
+         f.name = "friction";
+         f.kind = Kind::Choice;
+         f.choices = {"sticking", "coulomb", "frictionless"};
+         f.default_value = "sticking";
+         f.doc =
+             "roll–slab friction: sticking (the slab method's sticking friction: a point holds to the roll "
+             "until its friction stress reaches the slab's shear yield stress k = σ_0/√3, then slips with k), "
+             "coulomb (μ = friction_coefficient, capped at k) or frictionless";
+         return f;
+       }(),
+       [] {
+         Field f = number("friction_coefficient", "-", 0.3, 0, 10, "Coulomb's μ (friction: coulomb)");
+         f.min_exclusive = false;
+         return f;
+       }(),
+       number("travel", "length", 100, 0, 1e6,
+              "distance the roll's surface travels over the analysis (the roll turns travel / R)"),
+       number("travel_increment", "length", 2, 0, 1e6, "roll surface travel per increment"),
        [] {
          Field f;
          f.name = "slab_partition";
@@ -98,6 +130,13 @@ void check_process(const json& project, std::vector<Issue>& issues) {
   const json& p = project.at("process");
   if (auto why = grading_problem(p.at("grading").get<double>(), p.at("slab_nx").get<int>()); !why.empty())
     issues.push_back({"process.grading", why});
+  const double travel = p.at("travel").get<double>(), step = p.at("travel_increment").get<double>();
+  if (step > travel)
+    issues.push_back({"process.travel_increment", "is larger than process.travel (" + std::to_string(travel) + ")"});
+  else if (travel / step > 1000)
+    issues.push_back(
+        {"process.travel_increment", "gives " + std::to_string(std::ceil(travel / step)) +
+                                         " increments over process.travel: at most 1000 (analysis.increments)"});
 }
 
 json expand_process(const json& project) {
@@ -107,39 +146,42 @@ json expand_process(const json& project) {
   const double L = p.at("slab_length"), W = p.at("slab_width"), h0 = p.at("slab_thickness");
   const double R = p.at("roll_radius"), r = p.at("reduction");
   const double h1 = h0 * (1 - r), dh = (h0 - h1) / 2;
-  const double bite = std::sqrt(R * R - (R - dh) * (R - dh));  // x of the entry point, before the roll's axis
-  const double axis = h1 / 2 + R;                              // roll axis height above the slab's mid-plane
+  const double axis = h1 / 2 + R;  // roll axis height above the slab's mid-plane
   json out = project;
   // every field written out, defaults included: the generated entries skip schema validation
-  out["materials"].push_back(
-      {{"name", "slab"}, {"model", "linear_elastic"}, {"E", p.at("slab_E")}, {"nu", p.at("slab_nu")}});
+  json slab_material = {{"name", "slab"},
+                        {"model", "j2_plasticity"},
+                        {"E", p.at("slab_E")},
+                        {"nu", p.at("slab_nu")},
+                        {"yield_stress", p.at("slab_yield_stress")}};
+  if (p.at("slab_hardening").get<double>() > 0) slab_material["hardening_modulus"] = p.at("slab_hardening");
+  out["materials"].push_back(slab_material);
   out["materials"].push_back(
       {{"name", "roll"}, {"model", "linear_elastic"}, {"E", p.at("roll_E")}, {"nu", p.at("roll_nu")}});
-  json slab_mesh = {{"type", "block"}, {"nx", p.at("slab_nx")}, {"lx", L}, {"x_grading", p.at("grading")}};
+  const int around = p.at("roll_n_around");
+  json slab_mesh = {{"type", "block"},
+                    {"nx", p.at("slab_nx")},
+                    {"lx", L},
+                    {"x_grading", p.at("grading")},
+                    {"roll_cut", {{"center", {0.0, axis}}, {"radius", R}, {"n_around", around}}}};
   json roll_mesh = {{"inner_radius", p.at("roll_hub_radius")},
                     {"outer_radius", R},
                     {"n_radial", p.at("roll_n_radial")},
                     {"n_around", p.at("roll_n_around")}};
   if (dim == 2) {
-    slab_mesh.update({{"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-bite - L, 0.0}}});
+    slab_mesh.update({{"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-L, 0.0}}});
     roll_mesh.update({{"type", "annulus"}, {"center", {0.0, axis}}});
   } else {
-    slab_mesh.update({{"ny", p.at("slab_nw")},
-                      {"ly", W / 2},
-                      {"nz", p.at("slab_nt")},
-                      {"lz", h0 / 2},
-                      {"origin", {-bite - L, 0.0, 0.0}}});
+    slab_mesh.update(
+        {{"ny", p.at("slab_nw")}, {"ly", W / 2}, {"nz", p.at("slab_nt")}, {"lz", h0 / 2}, {"origin", {-L, 0.0, 0.0}}});
     roll_mesh.update({{"type", "cylinder"},
                       {"center", {0.0, axis}},
                       {"y0", 0.0},
                       {"length", p.at("barrel_width").get<double>() / 2},
                       {"n_axial", p.at("roll_n_axial")}});
   }
-  json slab = {{"name", "slab"},
-               {"material", "slab"},
-               {"formulation", "full"},
-               {"mesh", slab_mesh},
-               {"node_sets", json::array()}};
+  json slab = {{"name", "slab"},         {"material", "slab"}, {"formulation", "bbar"},
+               {"kinematics", "finite"}, {"mesh", slab_mesh},  {"node_sets", json::array()}};
   if (p.contains("slab_partition")) slab["partition"] = p.at("slab_partition");
   if (p.contains("slab_partition_map")) slab["partition_map"] = p.at("slab_partition_map");
   out["bodies"].push_back(slab);
@@ -147,6 +189,7 @@ json expand_process(const json& project) {
   out["bodies"].push_back({{"name", "roll"},
                            {"material", "roll"},
                            {"formulation", "full"},
+                           {"kinematics", "finite"},
                            {"mesh", roll_mesh},
                            {"node_sets", json::array()}});
   const std::string top = dim == 2 ? "ymax" : "zmax", mid = dim == 2 ? "ymin" : "zmin";
@@ -156,17 +199,53 @@ json expand_process(const json& project) {
                              {"slave_surface", top},
                              {"master_body", "roll"},
                              {"master_surface", "outer"},
-                             {"search_distance", 4 * dh + 1e-3 * h0}});
+                             {"search_distance", 4 * dh + 1e-3 * h0},
+                             {"sliding", "large"}});
+  const std::string friction = p.at("friction");
+  out["contacts"].back()["type"] = friction;
+  if (friction == "coulomb") out["contacts"].back()["friction"] = p.at("friction_coefficient");
+  // the friction stress never exceeds the slab's shear yield stress k = σ_0/√3 (sticking: τ = k where it slips)
+  if (friction != "frictionless")
+    out["contacts"].back()["shear_limit"] = p.at("slab_yield_stress").get<double>() / std::sqrt(3.0);
   json& bcs = out["boundary_conditions"];
   bcs.push_back({{"type", "symmetry"}, {"body", "slab"}, {"set", mid}, {"normal", dim == 2 ? "y" : "z"}});
-  bcs.push_back({{"type", "displacement"}, {"body", "slab"}, {"set", "xmin"}, {"ux", 0.0}});
-  json hub = {{"type", "displacement"}, {"body", "roll"}, {"set", "inner"}, {"ux", 0.0}, {"uy", 0.0}};
-  if (dim == 3) {
-    hub["uz"] = 0.0;
+  // the hub turns so that the roll's lowest point moves along +x: counter-clockwise about z in 2D, about −y in 3D
+  const double turn = p.at("travel").get<double>() / R * 180.0 / M_PI;
+  json hub = {{"type", "rotation"}, {"body", "roll"}, {"set", "inner"}, {"angle", turn}};
+  if (dim == 2) {
+    hub["center"] = {0.0, axis};
+  } else {
+    hub["center"] = {0.0, 0.0, axis};
+    hub["axis"] = {0.0, -1.0, 0.0};
     bcs.push_back({{"type", "symmetry"}, {"body", "slab"}, {"set", "ymin"}, {"normal", "y"}});
   }
   bcs.push_back(hub);
+  out["analysis"]["increments"] =
+      static_cast<int>(std::ceil(p.at("travel").get<double>() / p.at("travel_increment").get<double>() - 1e-9));
   return out;
+}
+
+std::optional<RollingPass> rolling_pass(const json& project, const Model& model) {
+  if (!project.contains("process")) return std::nullopt;
+  const json& p = project.at("process");
+  RollingPass pass;
+  auto body = [&](const std::string& name) {
+    for (size_t b = 0; b < model.bodies.size(); ++b)
+      if (model.bodies[b].name == name) return static_cast<int>(b);
+    throw std::logic_error("rolling pass without body '" + name + "'");
+  };
+  pass.slab = body("slab");
+  pass.roll = body("roll");
+  for (size_t i = 0; i < model.displacements.size(); ++i)
+    if (model.displacements[i].body == pass.roll && model.displacements[i].rotation) pass.hub = static_cast<int>(i);
+  pass.thickness_axis = model.dim - 1;
+  pass.width_axis = model.dim == 3 ? 1 : -1;
+  pass.radius = p.at("roll_radius");
+  pass.entry_thickness = p.at("slab_thickness");
+  pass.exit_thickness = pass.entry_thickness * (1 - p.at("reduction").get<double>());
+  pass.width = p.at("slab_width");
+  pass.travel = p.at("travel");
+  return pass;
 }
 
 }  // namespace rollsim

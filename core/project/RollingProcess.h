@@ -4,6 +4,9 @@
 // slab and roll bodies, their materials, the slab–roll contact pair and the symmetry / support conditions, so
 // that the rest of the engine sees an ordinary multi-body project. Symmetry: half thickness always (the slab's
 // mid-plane), half width in 3D. Axes: x rolling direction, y thickness (2D) / width (3D), z thickness (3D).
+#include <optional>
+
+#include "model/Model.h"
 #include "project/Schema.h"
 
 namespace rollsim {
@@ -18,5 +21,9 @@ void check_process(const json& project, std::vector<Issue>& issues);
 /// `project` with the bodies, materials, contacts and conditions of its process appended (unchanged without a
 /// process). The section must already be validated (defaults filled).
 json expand_process(const json& project);
+
+/// The pass as the model's rolling measures need it (bodies, the hub's rotation, nominal geometry), or nothing when
+/// the project has no process. `model` is the one built from expand_process(project).
+std::optional<RollingPass> rolling_pass(const json& project, const Model& model);
 
 }  // namespace rollsim

@@ -4,6 +4,7 @@
 
 #include "analysis/LinearStatic.h"
 #include "analysis/NewtonStatic.h"
+#include "analysis/RollingMeasures.h"
 #include "project/ModelBuilder.h"
 #include "solve/Blas.h"
 
@@ -74,6 +75,7 @@ Results run_project(const Project& project, const Model& model, AnalysisObserver
       Results r = info.run(project, model, observer);
       if (r.status.ok())  // never a NaN in a result: a converged run whose fields overflowed is an error
         if (auto bad = non_finite_results(model, r); !bad.empty()) r.status = {Status::error, Reason::none, bad};
+      if (model.rolling) r.rolling = measure_rolling(model, r);
       return r;
     }
   throw AnalysisError("analysis.type: no analysis named '" + type + "'");

@@ -84,6 +84,27 @@ TEST_P(Friction, AStickingPairHoldsBeyondMuN) {
   EXPECT_LT(stuck.bodies[1].contact_slip.cwiseAbs().maxCoeff(), 1e-9) << "nothing slides";
 }
 
+TEST_P(Friction, AShearLimitCapsTheFrictionStressAtItsValueTimesTheContactLength) {
+  // Tresca's cap on a sticking pair (a rolling slab's τ ≤ k): once dragged, every point slips with shear_limit × its
+  // tributary length — the block's bottom, 2.0 long and 0.4 % longer where the pressed block spreads — whatever the
+  // normal force; a Coulomb pair takes the smaller
+  const double tau = 0.4;
+  json p = drag(1.0, "sticking", GetParam());
+  p["contacts"][0]["shear_limit"] = tau;
+  const Results r = run_json(p);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  const double length = r.contacts.at(0).measure;
+  EXPECT_NEAR(length, 2.0, 0.01);
+  EXPECT_NEAR(r.contacts.at(0).tangential_force, tau * length, 1e-9);
+  EXPECT_LT(tau * 2.0, mu * r.contacts.at(0).normal_force);  // below what μ = 0.3 would carry...
+  json c = drag(1.0, "coulomb", GetParam());
+  c["contacts"][0]["shear_limit"] = tau;
+  const Results capped = run_json(c);
+  ASSERT_TRUE(capped.status.ok()) << capped.status.message;
+  EXPECT_NEAR(capped.contacts.at(0).tangential_force, tau * capped.contacts.at(0).measure,
+              1e-9);  // ...so the cap rules the Coulomb pair too
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, Friction, ::testing::Values("direct", "mixed"));
 
 TEST(FrictionInput, BadFrictionIsRefusedWithItsPath) {
@@ -96,6 +117,13 @@ TEST(FrictionInput, BadFrictionIsRefusedWithItsPath) {
       {"coulomb without μ", "contacts[0].friction", [](json& p) { p["contacts"][0].erase("friction"); }},
       {"μ on a frictionless pair", "contacts[0].friction", [](json& p) { p["contacts"][0]["type"] = "frictionless"; }},
       {"friction in a linear analysis", "analysis.type", [](json& p) { p["analysis"]["type"] = "linear"; }},
+      {"a shear limit on a frictionless pair", "contacts[0].shear_limit",
+       [](json& p) {
+         p["contacts"][0]["type"] = "frictionless";
+         p["contacts"][0].erase("friction");
+         p["contacts"][0]["shear_limit"] = 1.0;
+       }},
+      {"a negative shear limit", "contacts[0].shear_limit", [](json& p) { p["contacts"][0]["shear_limit"] = -1.0; }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);

@@ -1,5 +1,5 @@
-// The rolling process section: the paper's pass generates a slab and a roll whose surfaces meet at the entry of
-// the bite (gap within the roll polygon's chord sagitta), half thickness (and half width in 3D) by symmetry;
+// The rolling process section: the paper's pass generates a pre-bitten slab (its front end at the exit plane, its
+// top cut to the roll's polygon over the arc) and a roll, half thickness (and half width in 3D) by symmetry;
 // bad process values are refused with their JSON path; grading toward the roll gap moves the slab's nodes only.
 #include <gtest/gtest.h>
 
@@ -40,7 +40,8 @@ std::string refusal(const json& process) {
 }
 }  // namespace
 
-TEST(RollingProcess, GeneratesSlabAndRollThatMeetAtTheBite) {
+TEST(RollingProcess, GeneratesAPreBittenSlabTouchingTheRollAlongTheArc) {
+  const double bite = std::sqrt(300.0 * 300.0 - (300 - 6.6) * (300 - 6.6));  // x of the entry, 62.6 mm
   for (const int dim : {2, 3}) {
     SCOPED_TRACE(dim);
     const Model m = rolling(dim);
@@ -48,19 +49,37 @@ TEST(RollingProcess, GeneratesSlabAndRollThatMeetAtTheBite) {
     EXPECT_EQ(m.bodies[0].name, "slab");
     EXPECT_EQ(m.bodies[1].name, "roll");
     ASSERT_EQ(m.contacts.size(), 1u);
+    EXPECT_EQ(m.contacts[0].kind, ContactKind::Sticking);
+    EXPECT_NEAR(m.contacts[0].shear_limit, 100 / std::sqrt(3.0), 1e-12);  // k = σ_0/√3
+    EXPECT_TRUE(m.contacts[0].holds_slave);                               // the rear end is free: friction draws it
+    ASSERT_TRUE(m.rolling);
+    EXPECT_EQ(m.displacements[static_cast<size_t>(m.rolling->hub)].set, "inner");
+    // the slab's top nodes over the arc lie on the roll's polygon (active from the start), none penetrates it
     const auto pairs = search_contacts(m);
-    double gap = 1e300;
-    for (const ContactPoint& c : pairs[0].points) gap = std::min(gap, c.gap);
-    // the slab's front top edge lies on the circle; the mesh's chords pass inside it by R (1 − cos(π/n))
-    const double sagitta = 300 * (1 - std::cos(M_PI / 120));
-    EXPECT_GE(gap, -1e-9);
-    EXPECT_LE(gap, sagitta + 1e-9);
-    // half thickness 50 mm; the roll's lowest point at the exit half thickness 43.4 mm
-    double top = -1e300, roll_bottom = 1e300;
+    int on_arc = 0, active = 0;
+    for (size_t j = 0; j < pairs[0].points.size(); ++j) {
+      const ContactPoint& c = pairs[0].points[j];
+      const double x = m.bodies[0].mesh.nodes[static_cast<size_t>(c.slave_node)][0];
+      EXPECT_GE(c.gap, -1e-9);
+      if (x > -bite + 1e-9) EXPECT_LE(std::abs(c.gap), 1e-9) << "node " << c.slave_node << " at x = " << x;
+      on_arc += x > -bite + 1e-9;
+      active += pairs[0].active[j];
+    }
+    EXPECT_GT(on_arc, 0);
+    EXPECT_GE(active, on_arc);
+    // half thickness 50 mm behind the bite, 43.4 mm (the exit's) at the front end x = 0, the roll's lowest point
+    double rear = -1e300, front = -1e300, front_x = -1e300, roll_bottom = 1e300;
     const int up = dim == 2 ? 1 : 2;
-    for (const auto& x : m.bodies[0].mesh.nodes) top = std::max(top, x[up]);
+    for (const auto& x : m.bodies[0].mesh.nodes) {
+      if (x[0] < -bite) rear = std::max(rear, x[up]);
+      front_x = std::max(front_x, x[0]);
+    }
+    for (const auto& x : m.bodies[0].mesh.nodes)
+      if (x[0] == front_x) front = std::max(front, x[up]);
     for (const auto& x : m.bodies[1].mesh.nodes) roll_bottom = std::min(roll_bottom, x[up]);
-    EXPECT_NEAR(top, 50.0, 1e-9);
+    EXPECT_NEAR(rear, 50.0, 1e-9);
+    EXPECT_EQ(front_x, 0.0);
+    EXPECT_NEAR(front, 43.4, 1e-9);
     EXPECT_NEAR(roll_bottom, 43.4, 1e-9);
   }
 }
@@ -121,15 +140,15 @@ TEST(RollingProcess, GradingShrinksSlabElementsGeometricallyTowardTheGap) {
     EXPECT_EQ(g.num_elements(), u.num_elements());
     EXPECT_EQ(g.connectivity, u.connectivity);
     ASSERT_EQ(g.nodes.size(), u.nodes.size());
-    for (size_t n = 0; n < g.nodes.size(); ++n)
-      for (int c = 1; c < 3; ++c) EXPECT_EQ(g.nodes[n][c], u.nodes[n][c]);
+    const double bite = std::sqrt(300.0 * 300.0 - (300 - 6.6) * (300 - 6.6));
+    for (size_t n = 0; n < g.nodes.size(); ++n)  // behind the bite; over the arc the roll's cut depends on x
+      if (g.nodes[n][0] < -bite && u.nodes[n][0] < -bite)
+        for (int c = 1; c < 3; ++c) EXPECT_EQ(g.nodes[n][c], u.nodes[n][c]);
     const auto xu = x_planes(u), x = x_planes(g);
     ASSERT_EQ(x.size(), xu.size());
     EXPECT_EQ(x.front(), xu.front());  // rear end and front end (the gap) where they were: the length is unchanged
     EXPECT_EQ(x.back(), xu.back());
-    // the gap: where the roll touches the slab's front top edge, x = −sqrt(R² − (R − Δh/2)²)
-    const double dh = 100 * 0.132 / 2;
-    EXPECT_NEAR(x.back(), -std::sqrt(300.0 * 300.0 - (300 - dh) * (300 - dh)), 1e-9);
+    EXPECT_EQ(x.back(), 0.0);  // the front end at the exit plane (the pre-bitten slab)
     const size_t n = x.size() - 1;
     for (size_t i = 0; i + 1 < n; ++i) {
       const double h = x[i + 1] - x[i], next = x[i + 2] - x[i + 1];

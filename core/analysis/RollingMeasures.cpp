@@ -1,0 +1,119 @@
+#include "analysis/RollingMeasures.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rollsim {
+
+namespace {
+
+Eigen::Vector3d current(const Mesh& mesh, const Eigen::VectorXd& u, int node) {
+  Eigen::Vector3d x(mesh.nodes[node][0], mesh.nodes[node][1], mesh.nodes[node][2]);
+  for (int k = 0; k < mesh.dim; ++k) x[k] += u[node * mesh.dim + k];
+  return x;
+}
+
+/// The hub's reaction on the roll: roll force (minus its thickness component) and driving torque about the axis.
+void hub_reaction(const Model& model, const RollingPass& pass, const BodyResults& roll, RollingIncrement& out) {
+  const DisplacementBC& hub = model.displacements[static_cast<size_t>(pass.hub)];
+  const Mesh& mesh = model.bodies[static_cast<size_t>(pass.roll)].mesh;
+  const Eigen::Vector3d c(hub.rotation->center[0], hub.rotation->center[1], hub.rotation->center[2]);
+  const Eigen::Vector3d axis(hub.rotation->axis[0], hub.rotation->axis[1], hub.rotation->axis[2]);
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+  for (int n : hub.nodes) {
+    Eigen::Vector3d f = Eigen::Vector3d::Zero();
+    for (int k = 0; k < mesh.dim; ++k) f[k] = roll.nodal_force[n * mesh.dim + k];
+    force += f;
+    torque += (current(mesh, roll.displacement, n) - c).cross(f);
+  }
+  out.roll_force = -force[pass.thickness_axis];
+  out.roll_torque = torque.dot(axis);
+}
+
+/// Exit thickness and spread from the slab's nodes just past the exit plane (0 < x ≤ one nominal contact length).
+void exit_geometry(const RollingPass& pass, const Mesh& slab, const BodyResults& r, double window,
+                   RollingIncrement& out) {
+  double top = 0, side = 0;
+  for (int n = 0; n < slab.num_nodes(); ++n) {
+    const Eigen::Vector3d x = current(slab, r.displacement, n);
+    if (x[0] <= 0 || x[0] > window) continue;
+    top = std::max(top, x[pass.thickness_axis]);
+    if (pass.width_axis >= 0) side = std::max(side, x[pass.width_axis]);
+  }
+  out.exit_thickness = 2 * top;
+  if (pass.width_axis >= 0 && side > 0) out.spread = 2 * side - pass.width;
+}
+
+double mean_advance(const Mesh& slab, const std::vector<int>& nodes, const Eigen::VectorXd& u) {
+  double s = 0;
+  for (int n : nodes) s += u[n * slab.dim];
+  return nodes.empty() ? 0.0 : s / static_cast<double>(nodes.size());
+}
+
+/// First increment from which roll force and torque stay within kSteadyTolerance of their value over the
+/// preceding `window` of travel (0: none).
+int steady_from(const std::vector<RollingIncrement>& h, double window) {
+  for (size_t i = 0; i < h.size(); ++i) {
+    if (h[i].travel < window) continue;
+    bool settled = true;
+    for (size_t j = i + 1; j-- > 0 && h[j].travel >= h[i].travel - window;)
+      settled = settled &&
+                std::abs(h[j].roll_force - h[i].roll_force) <= kSteadyTolerance * std::abs(h[i].roll_force) &&
+                std::abs(h[j].roll_torque - h[i].roll_torque) <= kSteadyTolerance * std::abs(h[i].roll_torque);
+    if (settled) return static_cast<int>(i) + 1;
+  }
+  return 0;
+}
+
+RollingIncrement mean(const std::vector<RollingIncrement>& h, size_t from) {
+  RollingIncrement m;
+  const double n = static_cast<double>(h.size() - from);
+  for (size_t i = from; i < h.size(); ++i) {
+    m.travel = h[i].travel;
+    m.roll_force += h[i].roll_force / n;
+    m.roll_torque += h[i].roll_torque / n;
+    m.contact_length += h[i].contact_length / n;
+    m.exit_thickness += h[i].exit_thickness / n;
+    m.forward_slip += h[i].forward_slip / n;
+    m.spread += h[i].spread / n;
+  }
+  return m;
+}
+
+}  // namespace
+
+RollingResults measure_rolling(const Model& model, const Results& results) {
+  const RollingPass& pass = *model.rolling;
+  const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
+  const double symmetry = model.dim == 3 ? 2.0 : 1.0;  // 3D models half the width
+  const double contact = std::sqrt(pass.radius * (pass.entry_thickness - pass.exit_thickness));
+  RollingResults out;
+  double front_before = 0, rear_before = 0, travel_before = 0;
+  for (const IncrementResults& inc : results.increments) {
+    if (inc.bodies.size() != model.bodies.size()) continue;
+    RollingIncrement r;
+    r.travel = inc.load_factor * pass.travel;
+    hub_reaction(model, pass, inc.bodies[static_cast<size_t>(pass.roll)], r);
+    r.roll_force *= symmetry;
+    r.roll_torque *= symmetry;
+    for (const ContactResult& c : inc.contacts) r.contact_length += symmetry * c.measure;
+    exit_geometry(pass, slab, inc.bodies[static_cast<size_t>(pass.slab)], contact, r);
+    const Eigen::VectorXd& u = inc.bodies[static_cast<size_t>(pass.slab)].displacement;
+    const double front = mean_advance(slab, slab.node_sets.at("xmax"), u);
+    const double rear = mean_advance(slab, slab.node_sets.at("xmin"), u);
+    const double dt = r.travel - travel_before;
+    r.forward_slip = dt > 0 ? (front - front_before) / dt - 1 : 0.0;
+    // the roll bites once the rear end follows: it moves in by half of what the roll's travel would draw in
+    if (!out.bite_increment && dt > 0 && rear - rear_before >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
+      out.bite_increment = static_cast<int>(out.increments.size()) + 1;
+    front_before = front, rear_before = rear, travel_before = r.travel;
+    out.increments.push_back(r);
+  }
+  if (out.increments.empty()) return out;
+  out.steady_state_increment = steady_from(out.increments, contact);
+  out.steady = mean(out.increments, out.steady_state_increment ? static_cast<size_t>(out.steady_state_increment - 1)
+                                                               : out.increments.size() - 1);
+  return out;
+}
+
+}  // namespace rollsim

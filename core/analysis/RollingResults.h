@@ -1,0 +1,26 @@
+#pragma once
+// What a rolling pass reports (analysis/RollingMeasures computes it from the increments' fields): per increment the
+// roll force, torque, contact length, exit thickness, forward slip and spread, and where the roll bit and the pass
+// reached steady state. Whole-slab values: the symmetry halves are counted back in (2D: per unit width).
+#include <vector>
+
+namespace rollsim {
+
+struct RollingIncrement {
+  double travel = 0;          // roll surface travel R θ so far [length]
+  double roll_force = 0;      // force of the slab on the roll along the thickness, away from the slab [force]
+  double roll_torque = 0;     // torque on the roll's hub about its axis that drives it [force · length]
+  double contact_length = 0;  // arc of contact (2D) [length] / contact area (3D) [length²]
+  double exit_thickness = 0;  // whole slab thickness just past the exit plane (0: nothing there yet) [length]
+  double forward_slip = 0;    // slab exit speed / roll surface speed − 1 over this increment [-]
+  double spread = 0;          // 3D: whole width past the exit − entry width (0 in 2D) [length]
+};
+
+struct RollingResults {
+  std::vector<RollingIncrement> increments;
+  int bite_increment = 0;          // first increment whose travel drew the slab in (0: the roll did not bite)
+  int steady_state_increment = 0;  // first increment from which force and torque stay settled (0: not reached)
+  RollingIncrement steady;         // mean over the steady increments (the last increment when not reached)
+};
+
+}  // namespace rollsim

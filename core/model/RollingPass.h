@@ -1,0 +1,17 @@
+#pragma once
+// A rolling pass as the model knows it (built from the project's `process`): which bodies are the slab and the roll,
+// which prescribed motion turns the roll, and the nominal pass geometry the rolling quantities are measured against.
+namespace rollsim {
+
+struct RollingPass {
+  int slab = 0, roll = 1;                          // body indices
+  int hub = 0;                                     // index in Model::displacements of the hub's rigid rotation
+  int thickness_axis = 1;                          // y in 2D, z in 3D (the slab's mid-plane at 0)
+  int width_axis = -1;                             // y in 3D (width symmetry plane at 0), −1 in 2D
+  double radius = 0;                               // roll radius R [length]
+  double entry_thickness = 0, exit_thickness = 0;  // nominal h0 and h1 of the whole slab [length]
+  double width = 0;                                // whole slab width b0 (3D) [length]
+  double travel = 0;                               // roll surface travel R θ at load factor 1 [length]
+};
+
+}  // namespace rollsim
