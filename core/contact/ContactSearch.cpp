@@ -106,16 +106,33 @@ std::vector<ContactPoint> find_contact_points(const Mesh& slave, const std::vect
                                               const Mesh& master, const std::vector<Facet>& master_surface,
                                               double search_distance) {
   std::vector<std::vector<int>> facets;
-  for (const Facet& f : master_surface) facets.push_back(facet_nodes(master, f));
+  std::map<int, int> facets_of;  // master node → facets of the surface holding it
+  for (const Facet& f : master_surface) {
+    facets.push_back(facet_nodes(master, f));
+    for (int n : facets.back()) ++facets_of[n];
+  }
+  // a closest point clamped to a facet's border counts when that border is inside the surface (its nodes shared by
+  // as many facets as an interior node has): a convex master's vertex (2D) or edge (3D) region, which no facet's
+  // own projection reaches — a node there would otherwise drop out of contact
+  const int interior = master.dim == 2 ? 2 : 4;
+  auto inside_surface = [&](const ContactPoint& cp) {
+    for (size_t k = 0; k < cp.master_nodes.size(); ++k)
+      if (cp.N[k] > 0 && facets_of[cp.master_nodes[k]] < interior) return false;
+    return true;
+  };
   std::vector<ContactPoint> points;
   for (const auto& [node, weight] : tributary(slave, slave_surface)) {
     const Eigen::Vector3d x = point(slave, node);
-    Projection best;
+    Projection best, clamped;
     for (const auto& nodes : facets) {
       Projection p = master.dim == 2 ? project_on_segment(master, nodes, x) : project_on_face(master, nodes, x);
-      if (p.inside && p.distance < best.distance) best = std::move(p);
+      if (p.inside && p.distance < best.distance)
+        best = std::move(p);
+      else if (!p.inside && p.distance < clamped.distance)
+        clamped = std::move(p);
     }
-    if (!best.inside || best.distance > search_distance) continue;
+    if (!best.inside && clamped.distance < best.distance && inside_surface(clamped.cp)) best = std::move(clamped);
+    if (best.distance > search_distance) continue;
     best.cp.slave_node = node;
     best.cp.weight = weight;
     points.push_back(std::move(best.cp));

@@ -1,0 +1,53 @@
+// The contact search on a convex master: a slave node in a vertex's region — under the roll's lowest node, where
+// neither neighbouring segment's own projection reaches — is found at that vertex (it used to drop out of contact);
+// a node beyond the end of an open master surface is still ignored.
+#include <gtest/gtest.h>
+
+#include "contact/ContactSearch.h"
+#include "mesh/Annulus.h"
+#include "mesh/StructuredBlock.h"
+
+using namespace rollsim;
+
+namespace {
+Mesh slab_under(double top) {
+  BlockSpec s;
+  s.n = {2, 1, 1};
+  s.size = {1.0, 1.0, 1.0};
+  s.origin = {-0.5, top - 1.0, 0.0};
+  return make_block(s);
+}
+}  // namespace
+
+TEST(ContactSearch, ANodeInAConvexVertexRegionIsFoundAtTheVertex) {
+  AnnulusSpec ring;
+  ring.cx = 0, ring.cy = 10, ring.inner_radius = 2, ring.outer_radius = 5, ring.n_radial = 1, ring.n_around = 24;
+  const Mesh roll = make_annulus(ring);
+  const Mesh slab = slab_under(4.9);  // its top's middle node right under the lowest vertex (0, 5), 0.1 below
+  const auto points = find_contact_points(slab, slab.surfaces.at("ymax"), roll, roll.surfaces.at("outer"), 1.0);
+  ASSERT_EQ(points.size(), 3u);
+  bool middle = false;
+  for (const ContactPoint& c : points) {
+    if (slab.nodes[static_cast<size_t>(c.slave_node)][0] != 0.0) continue;
+    middle = true;
+    double at_vertex = 0;
+    for (size_t k = 0; k < c.master_nodes.size(); ++k) {
+      const auto& X = roll.nodes[static_cast<size_t>(c.master_nodes[k])];
+      if (std::abs(X[0]) < 1e-12 && std::abs(X[1] - 5.0) < 1e-12) at_vertex = c.N[k];
+    }
+    EXPECT_DOUBLE_EQ(at_vertex, 1.0);
+    EXPECT_GT(c.gap, 0.099);  // 0.1 along a normal tilted by half a segment's 15°
+    EXPECT_LE(c.gap, 0.1 + 1e-12);
+  }
+  EXPECT_TRUE(middle);
+}
+
+TEST(ContactSearch, ANodeBeyondTheEndOfAnOpenMasterIsIgnored) {
+  AnnulusSpec quarter;  // a quarter ring ending at its lowest point: (0, 5) ends the surface
+  quarter.cx = 0, quarter.cy = 10, quarter.inner_radius = 2, quarter.outer_radius = 5, quarter.n_radial = 1;
+  quarter.n_around = 6, quarter.theta0 = 180, quarter.theta1 = 270;
+  const Mesh roll = make_annulus(quarter);
+  const Mesh slab = slab_under(4.9);
+  const auto points = find_contact_points(slab, slab.surfaces.at("ymax"), roll, roll.surfaces.at("outer"), 1.0);
+  for (const ContactPoint& c : points) EXPECT_LT(slab.nodes[static_cast<size_t>(c.slave_node)][0], 0.0);
+}
