@@ -44,6 +44,15 @@ class ForwardingObserver final : public AnalysisObserver {
     flush();
     emit w_.newtonIteration(increment, iteration, residual);
   }
+  void on_tangents(int increment, int iteration, const std::vector<TangentChoice>& choices) override {
+    QStringList parts;
+    for (const TangentChoice& c : choices)
+      parts << QStringLiteral("%1 %2 (%3)")
+                   .arg(QString::fromStdString(c.group),
+                        c.refactored ? QStringLiteral("refactored") : QStringLiteral("kept"),
+                        QString::fromStdString(c.why));
+    emit w_.tangentsChosen(increment, iteration, parts.join(QStringLiteral("; ")));
+  }
   void on_cg_iteration(int solve, int iteration, double residual) override {
     pending_.append({solve, iteration, residual});
     // the first iteration of a solve at once (the plot starts moving), then at most every kBatch

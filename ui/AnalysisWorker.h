@@ -60,6 +60,9 @@ class AnalysisWorker : public QObject {
   void incrementFinished(int increment, int count);
   /// Newton iteration of an increment, relative out-of-balance residual (from the nonlinear driver, once it exists).
   void newtonIteration(int increment, int iteration, double residual);
+  /// Newton iteration `iteration` of `increment` refactors some groups and keeps the others' factors: `choices` says
+  /// which and why, e.g. "roll kept (share 0.0031 ≤ 0.01); slab refactored (share 0.43 > 0.01)".
+  void tangentsChosen(int increment, int iteration, const QString& choices);
   /// (Projected) CG iterations, in order: the first of each solve at once, then batches at most every kBatchMs, the
   /// rest of a solve before its solveFinished — the solver thread does not wake the GUI thread at every iteration.
   void cgIterations(const QVector<rollsim::ui::CgIteration>& batch);

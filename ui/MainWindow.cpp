@@ -109,6 +109,9 @@ MainWindow::MainWindow(QWidget* parent)
   });
   plot_->watch(worker_);
   connect(worker_, &AnalysisWorker::incrementStarted, run_panel_, &RunPanel::set_increment);
+  connect(worker_, &AnalysisWorker::tangentsChosen, this, [this](int increment, int iteration, const QString& choices) {
+    log_->info(tr("increment %1, iteration %2: %3").arg(increment).arg(iteration).arg(choices));
+  });
   connect(worker_, &AnalysisWorker::progress, run_panel_, &RunPanel::set_progress);
   connect(worker_, &AnalysisWorker::finished, this, &MainWindow::run_finished);
 

@@ -88,6 +88,10 @@ class NewtonRun {
   std::string line_search(const std::vector<size_t>& tangent, GroupAssembler::Factors at, double& eta);
   /// Stick/slip and active-set update from the last solve (its λ and the iterate); the number of points changed.
   int update_statuses(double lf);
+  /// Every group's tangent choice for an iteration: refactored (in `tangent`) or kept, and why — its residual share
+  /// against the policy's threshold, `all_why` when no residuals were taken (every group new), or a constant tangent.
+  std::vector<TangentChoice> tangent_choices(const std::vector<size_t>& tangent, const std::vector<double>& share,
+                                             const char* all_why) const;
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
@@ -227,6 +231,30 @@ int NewtonRun::update_statuses(double lf) {
   return changed;
 }
 
+std::vector<TangentChoice> NewtonRun::tangent_choices(const std::vector<size_t>& tangent,
+                                                      const std::vector<double>& share, const char* all_why) const {
+  const BlockSystem& sys = layout_.system();
+  std::vector<TangentChoice> out;
+  for (size_t g = 0; g < sys.groups.size(); ++g) {
+    TangentChoice c{sys.groups[g].name, std::find(tangent.begin(), tangent.end(), g) != tangent.end(), ""};
+    if (share.empty())
+      c.why = all_why;
+    else if (!c.refactored && layout_.assembler().constant_tangent(g))
+      c.why = "constant";
+    else
+      c.why = "share " + fmt(share[g]) + (c.refactored ? " > " : " ≤ ") + fmt(policy_.threshold());
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::string compact(const std::vector<TangentChoice>& choices) {
+  std::string s;
+  for (const TangentChoice& c : choices)
+    s += (s.empty() ? "" : "; ") + c.group + (c.refactored ? " new (" : " kept (") + c.why + ")";
+  return s;
+}
+
 Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
@@ -243,15 +271,18 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     const GroupAssembler::Factors at{lf, k == 1 ? from : lf, k == 1 ? lf - from : 0.0};
     std::vector<size_t> tangent = all;
     const bool residuals_first = assembled_once_ && !refresh_all_ && policy_.uses_residuals();
+    std::vector<double> share;
+    const char* all_why = !assembled_once_ ? "first" : refresh_all_ ? "cut-back" : "always";
     if (residuals_first) {  // the policy decides from the residuals
       if (auto cause = assemble(all, {}, at); !cause.empty()) return {{}, cause, k - 1};
-      std::vector<double> r = group_residuals();
-      const double total = norm(r);
-      for (double& x : r) x = total > 0 ? x / total : 0.0;
+      share = group_residuals();
+      const double total = norm(share);
+      for (double& x : share) x = total > 0 ? x / total : 0.0;
       tangent.clear();
-      for (size_t g : policy_.select(sys, r))  // a constant tangent (elastic, small strain) is never re-assembled
+      for (size_t g : policy_.select(sys, share))  // a constant tangent (elastic, small strain) is never re-assembled
         if (!layout_.assembler().constant_tangent(g)) tangent.push_back(g);
     }
+    const std::vector<TangentChoice> choices = tangent_choices(tangent, share, all_why);
     if (auto cause = assemble(residuals_first ? tangent : all, tangent, at); !cause.empty()) return {{}, cause, k - 1};
     assembled_once_ = true;
     refresh_all_ = false;
@@ -281,6 +312,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
               "no convergence in " + std::to_string(opt_.max_iterations) + " iterations (residual ratio " +
                   fmt(relative) + ", tolerance " + fmt(opt_.tolerance) + ")",
               k - 1};
+    obs_.on_tangents(increment, k, choices);  // told only for an iteration that solves (as convergence.csv's rows)
     mark_updated(sys, tangent);
     const long cg_before = solver_.stats().cg_iterations;
     check_floating_groups_held(sys);
@@ -306,7 +338,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     correction = norm(sol.u);
     changed = update_statuses(lf);
     log_.push_back({increment, attempt_no, k, lf, residual, relative, correction, 1.0, static_cast<int>(tangent.size()),
-                    changed, solver_.stats().cg_iterations - cg_before});
+                    changed, solver_.stats().cg_iterations - cg_before, compact(choices)});
   }
 }
 

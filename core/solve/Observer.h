@@ -4,7 +4,8 @@
 //
 //   on_stage("assemble")
 //   on_increment_begin(i, n)                 load increment i of n (analysis.increments; 1 of 1 by default)
-//     on_newton_iteration(i, k, residual)    Newton driver only, after each iteration (none emits it yet)
+//     on_tangents(i, k, choices)             Newton driver only: which groups iteration k refactors, and why
+//     on_newton_iteration(i, k, residual)    Newton driver only, after each iteration
 //     on_factorization(group)                each numeric factorization, named by group
 //     on_cg_iteration(solve, k, residual)    each (projected) CG iteration of linear solve `solve`
 //     on_solve_end(solve, cg_iterations)     a linear solve is complete (0 CG iterations for direct strategies)
@@ -16,8 +17,18 @@
 // increment). Calls come from the thread that runs the analysis, one at a time (factorizations on worker threads
 // are reported after they joined): a GUI forwards them through queued signals.
 #include <string>
+#include <vector>
 
 namespace rollsim {
+
+/// What a Newton iteration does with one group's tangent: re-assembles and refactors it, or keeps last iteration's
+/// factor, and why ("first iteration of the run", "after a cut-back", "policy always", "residual 43 % of the total >
+/// 1 %", "residual 0.3 % of the total ≤ 1 %", "constant tangent (elastic, small strain)").
+struct TangentChoice {
+  std::string group;
+  bool refactored = true;
+  std::string why;
+};
 
 class AnalysisObserver {
  public:
@@ -31,6 +42,8 @@ class AnalysisObserver {
   /// Newton iteration `iteration` (1-based) of increment `increment`: ‖r_k‖ / ‖r_0‖ of the out-of-balance force
   /// (dimensionless). Reserved for the nonlinear driver; the GUI plots it as the "newton" series.
   virtual void on_newton_iteration(int /*increment*/, int /*iteration*/, double /*residual*/) {}
+  /// Before the linear solve of Newton iteration `iteration` (1-based) of increment `increment`: every group's choice.
+  virtual void on_tangents(int /*increment*/, int /*iteration*/, const std::vector<TangentChoice>& /*choices*/) {}
   /// Iteration `iteration` (1-based) of the interface (projected) CG of linear solve `solve`: ‖P r_k‖ / ‖P r_0‖
   /// (paper eqs. (7)-(8), dimensionless).
   virtual void on_cg_iteration(int /*solve*/, int /*iteration*/, double /*residual*/) {}

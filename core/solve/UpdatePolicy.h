@@ -20,6 +20,8 @@ class UpdatePolicy {
   virtual std::vector<size_t> select(const BlockSystem& sys, const std::vector<double>& group_residuals) const = 0;
   /// False when select() ignores the residuals (the driver then need not compute them before assembling).
   virtual bool uses_residuals() const { return true; }
+  /// The residual share ‖r_g‖ / ‖r‖ above which select() picks a group (0: every group).
+  virtual double threshold() const { return 0.0; }
 };
 
 /// Mixed I / DD-I: every group, every iteration.
@@ -39,6 +41,7 @@ class SelectiveUpdate final : public UpdatePolicy {
   std::string name() const override;
   std::vector<size_t> select(const BlockSystem& sys, const std::vector<double>& group_residuals) const override;
   double tolerance() const { return tolerance_; }
+  double threshold() const override { return tolerance_; }
 
  private:
   double tolerance_;

@@ -2,7 +2,8 @@
 // status-bar counts and the view, a run from the Run button converges and colours the view by displacement,
 // Cancel ends a run "cancelled", the window's screenshot is not blank, and after a run of three load increments the
 // view toolbar's increment selector offers 1…3 and recolours the view with the chosen increment's fields; after a
-// Newton run of a plastic block the view colours its elements by equivalent plastic strain.
+// Newton run of a plastic block the view colours its elements by equivalent plastic strain and the log says which
+// groups each iteration refactored and why.
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
 #include <QLabel>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "LogPanel.h"
 #include "MainWindow.h"
 #include "MeshView.h"
 #include "ProjectDocument.h"
@@ -164,6 +166,10 @@ class TestMainWindow : public QObject {
     QVERIFY(w.start_run());
     QVERIFY(finished.wait(60000));
     QCOMPARE(w.run_status(), QStringLiteral("converged"));
+    // the log tells, iteration by iteration, which groups were refactored and why
+    const QString log = w.log()->toPlainText();
+    QVERIFY2(log.contains(QStringLiteral("increment 1, iteration 1: block refactored (first)")), qPrintable(log));
+    QVERIFY2(log.contains(QStringLiteral("block refactored (always)")), qPrintable(log));
     QVERIFY(w.view()->can_color_by(plastic));
     w.view()->set_color_by(plastic);
     QCOMPARE(w.view()->color_by(), plastic);

@@ -140,9 +140,13 @@ TEST(NewtonStatic, SelectiveKeepsTheFactorOfAnElasticGroup) {
     j["boundary_conditions"].push_back(bc);
   }
   j["boundary_conditions"].push_back({{"type", "displacement"}, {"body", "pad"}, {"set", "ymax"}, {"uy", -0.005}});
-  const Results always = run(j);
+  struct Choices : AnalysisObserver {
+    std::vector<std::vector<TangentChoice>> seen;
+    void on_tangents(int, int, const std::vector<TangentChoice>& c) override { seen.push_back(c); }
+  } told_always, told_selective;
+  const Results always = run(j, &told_always);
   j["solver"]["update"] = "selective";
-  const Results selective = run(j);
+  const Results selective = run(j, &told_selective);
   ASSERT_EQ(always.status.status, Status::converged) << always.status.message;
   ASSERT_EQ(selective.status.status, Status::converged) << selective.status.message;
   EXPECT_EQ(selective.solver.factorizations.at("pad"), 1) << "elastic: factored once";
@@ -152,6 +156,27 @@ TEST(NewtonStatic, SelectiveKeepsTheFactorOfAnElasticGroup) {
   for (size_t b = 0; b < 2; ++b)
     EXPECT_LE((selective.bodies[b].displacement - always.bodies[b].displacement).norm(),
               1e-7 * always.bodies[b].displacement.norm());
+  // which groups each iteration refactored, and why: told to the observer and written into convergence.csv's rows
+  ASSERT_EQ(told_always.seen.size(), always.newton.size());
+  EXPECT_EQ(told_always.seen.front()[0].why, "first");
+  for (const auto& it : told_always.seen)
+    for (const TangentChoice& c : it) EXPECT_TRUE(c.refactored) << c.group << ": " << c.why;
+  EXPECT_EQ(told_always.seen.back()[1].why, "always");
+  ASSERT_EQ(told_selective.seen.size(), selective.newton.size());
+  int kept = 0;
+  for (size_t i = 0; i < told_selective.seen.size(); ++i) {
+    const TangentChoice& pad = told_selective.seen[i][1];
+    ASSERT_EQ(pad.group, "pad");
+    if (pad.refactored) continue;
+    ++kept;
+    EXPECT_EQ(pad.why, "constant");  // elastic at small strain: its one factor serves every iteration
+    EXPECT_NE(selective.newton[i].tangents.find("pad kept (constant)"), std::string::npos)
+        << selective.newton[i].tangents;
+  }
+  EXPECT_EQ(kept, static_cast<int>(selective.newton.size()) - 1);  // all but the run's first iteration
+  bool share = false;  // the plastic block: refactored for its share of the residual, or kept below the threshold
+  for (const auto& it : told_selective.seen) share = share || it[0].why.rfind("share ", 0) == 0;
+  EXPECT_TRUE(share);
 }
 
 TEST(NewtonStatic, NoEquilibriumEndsDivergedNamingTheIncrement) {
