@@ -193,7 +193,10 @@ int run_command(const RunOptions& o) {
       if (results.load_increments > 1) write_increment_collection(dir / "results.pvd", model, results);
     }
     if (!results.newton.empty()) write_file_atomically(dir / "convergence.csv", convergence_csv(results));
-    if (results.rolling) write_file_atomically(dir / "rolling.csv", rolling_csv(*results.rolling));
+    if (results.rolling) {
+      write_file_atomically(dir / "rolling.csv", rolling_csv(*results.rolling));
+      write_file_atomically(dir / "contact_profile.csv", contact_profile_csv(*results.rolling));
+    }
     results.timing.total_s = wall.seconds();
     write_file_atomically(dir / "summary.json", make_summary(model, results, info).dump(2) + "\n");
   } catch (const std::exception& e) {

@@ -17,10 +17,12 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
     it->second -= l * row.dir;
   }
   results.contacts.clear();
-  if (!pairs.empty())  // every body carries the field once the model has contact: 0 off the slave surfaces
-    for (size_t b = 0; b < results.bodies.size(); ++b)
+  if (!pairs.empty())  // every body carries the fields once the model has contact: 0 off the slave surfaces
+    for (size_t b = 0; b < results.bodies.size(); ++b) {
       results.bodies[b].contact_pressure = results.bodies[b].contact_slip =
           Eigen::VectorXd::Zero(model.bodies[b].mesh.num_nodes());
+      results.bodies[b].contact_shear = Eigen::VectorXd::Zero(model.bodies[b].mesh.num_nodes() * model.dim);
+    }
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
     ContactResult cr;
@@ -40,6 +42,8 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
       const double pressure = fn / c.weight;
       cr.max_pressure = std::max(cr.max_pressure, pressure);
       slave.contact_pressure[c.slave_node] = pressure;
+      const Eigen::Vector3d shear = (f - fn * c.normal) / c.weight;
+      for (int k = 0; k < model.dim; ++k) slave.contact_shear[c.slave_node * model.dim + k] = shear[k];
       cr.measure += c.weight;
       ++cr.active_nodes;
     }

@@ -24,6 +24,9 @@ struct BodyResults {
   // contact point of a slave surface (positive in compression), 0 on every other node [stress]
   Eigen::VectorXd contact_pressure;
   Eigen::VectorXd contact_slip;  // per node, sized like contact_pressure: tangential sliding so far [length]
+  // per node, dim components (node-major), sized with contact_pressure: the tangential part of the contact force on
+  // each slave point over its tributary measure — the friction (shear) traction on the slave surface [stress]
+  Eigen::VectorXd contact_shear;
 };
 
 /// Resultants of one contact pair on its slave surface (forces on the slave body).

@@ -65,6 +65,28 @@ int steady_from(const std::vector<RollingIncrement>& h, double window) {
   return 0;
 }
 
+/// The slab's contact nodes at the state `r`, by decreasing angle (entry first).
+std::vector<ArcPoint> arc_profile(const Model& model, const RollingPass& pass, const BodyResults& r) {
+  const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
+  const DisplacementBC& hub = model.displacements[static_cast<size_t>(pass.hub)];
+  const Eigen::Vector3d c(hub.rotation->center[0], hub.rotation->center[1], hub.rotation->center[2]);
+  const int t = pass.thickness_axis, dim = slab.dim;
+  std::vector<ArcPoint> out;
+  for (int n = 0; n < slab.num_nodes(); ++n) {
+    if (n >= r.contact_pressure.size() || r.contact_pressure[n] <= 0) continue;
+    const Eigen::Vector3d x = current(slab, r.displacement, n);
+    const double phi = std::atan2(-(x[0] - c[0]), -(x[t] - c[t]));
+    Eigen::Vector3d tangent = Eigen::Vector3d::Zero();  // along the surface toward the exit
+    tangent[0] = std::cos(phi), tangent[t] = -std::sin(phi);
+    double shear = 0;
+    for (int k = 0; k < dim; ++k) shear += r.contact_shear[n * dim + k] * tangent[k];
+    out.push_back(
+        {phi * 180 / M_PI, x[0], pass.width_axis >= 0 ? x[pass.width_axis] : 0.0, r.contact_pressure[n], shear});
+  }
+  std::sort(out.begin(), out.end(), [](const ArcPoint& a, const ArcPoint& b) { return a.angle > b.angle; });
+  return out;
+}
+
 RollingIncrement mean(const std::vector<RollingIncrement>& h, size_t from) {
   RollingIncrement m;
   const double n = static_cast<double>(h.size() - from);
@@ -110,6 +132,11 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
     out.increments.push_back(r);
   }
   if (out.increments.empty()) return out;
+  for (auto it = results.increments.rbegin(); it != results.increments.rend(); ++it)
+    if (it->bodies.size() == model.bodies.size()) {
+      out.profile = arc_profile(model, pass, it->bodies[static_cast<size_t>(pass.slab)]);
+      break;
+    }
   out.steady_state_increment = steady_from(out.increments, contact);
   out.steady = mean(out.increments, out.steady_state_increment ? static_cast<size_t>(out.steady_state_increment - 1)
                                                                : out.increments.size() - 1);

@@ -2,7 +2,7 @@
 // The rolling quantities of a pass, measured from the fields of each completed increment: roll force and torque from
 // the hub's reactions, contact length from the contact pair, exit thickness and spread from the slab's nodes past
 // the exit plane, forward slip from the slab front's advance against the roll's surface travel; then where the roll
-// bit and where force and torque settled.
+// bit and where force and torque settled, and the pressure and shear along the arc at the last increment.
 #include "analysis/Results.h"
 #include "model/Model.h"
 

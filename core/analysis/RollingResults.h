@@ -16,8 +16,19 @@ struct RollingIncrement {
   double spread = 0;          // 3D: whole width past the exit − entry width (0 in 2D) [length]
 };
 
+/// One slab node in contact along the arc, in the rolling plane (3D: every node of the contact zone, across the
+/// width): where it is and the tractions on the slab there.
+struct ArcPoint {
+  double angle = 0;     // from the roll's lowest point about its axis, positive toward the entry [degree]
+  double x = 0;         // current position along the rolling direction (exit plane at 0) [length]
+  double width = 0;     // 3D: current position across the width (symmetry plane at 0); 2D: 0 [length]
+  double pressure = 0;  // normal contact pressure [stress]
+  double shear = 0;     // friction traction along the roll's surface in the rolling direction, on the slab [stress]
+};
+
 struct RollingResults {
   std::vector<RollingIncrement> increments;
+  std::vector<ArcPoint> profile;   // contact along the arc at the last increment, by angle
   int bite_increment = 0;          // first increment whose travel drew the slab in (0: the roll did not bite)
   int steady_state_increment = 0;  // first increment from which force and torque stay settled (0: not reached)
   RollingIncrement steady;         // mean over the steady increments (the last increment when not reached)

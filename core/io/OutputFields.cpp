@@ -23,6 +23,11 @@ void contact_pressure(const Model&, size_t, const BodyResults& r, int n, double*
 void contact_slip(const Model&, size_t, const BodyResults& r, int n, double* out) {
   out[0] = n < r.contact_slip.size() ? r.contact_slip[n] : 0.0;
 }
+void contact_shear(const Model& m, size_t b, const BodyResults& r, int n, double* out) {
+  const int dim = m.bodies[b].mesh.dim;
+  for (int c = 0; c < 3; ++c)
+    out[c] = c < dim && n * dim + c < r.contact_shear.size() ? r.contact_shear[n * dim + c] : 0.0;
+}
 void element_stress(const Model&, size_t, const BodyResults& r, int e, double* out) {
   std::copy(r.element_stress[e].begin(), r.element_stress[e].end(), out);
 }
@@ -47,6 +52,8 @@ const std::vector<OutputField>& output_fields() {
       {"contact_pressure", "contact pressure", "contact p", "stress", L::Node, 1, true, has_contact, contact_pressure},
       {"contact_slip", "contact slip (tangential sliding so far)", "slip", "length", L::Node, 1, true, has_contact,
        contact_slip},
+      {"contact_shear", "contact shear traction |t|", "contact shear", "stress", L::Node, 3, true, has_contact,
+       contact_shear},
       {"stress", "stress (element mean)", "stress", "stress", L::Cell, 6, false, {}, element_stress},
       {"von_mises", "von Mises stress (element mean)", "von Mises", "stress", L::Cell, 1, false, {}, element_von_mises},
       {"plastic_strain", "equivalent plastic strain (element mean)", "plastic strain", "-", L::Cell, 1, true,

@@ -16,4 +16,13 @@ std::string rolling_csv(const RollingResults& rolling) {
   return out.str();
 }
 
+std::string contact_profile_csv(const RollingResults& rolling) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "angle,x,width,pressure,shear\n";
+  for (const ArcPoint& p : rolling.profile)
+    out << p.angle << ',' << p.x << ',' << p.width << ',' << p.pressure << ',' << p.shear << '\n';
+  return out.str();
+}
+
 }  // namespace rollsim

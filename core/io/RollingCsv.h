@@ -9,4 +9,8 @@ namespace rollsim {
 
 std::string rolling_csv(const RollingResults& rolling);
 
+/// contact_profile.csv: the slab's contact nodes at the last increment, entry first: angle from the roll's lowest
+/// point [degree], x and (3D) width position [mm], pressure and shear along the roll's surface toward the exit [MPa].
+std::string contact_profile_csv(const RollingResults& rolling);
+
 }  // namespace rollsim

@@ -78,5 +78,5 @@ TEST(ModelGrid, OneArrayPerRegisteredOutputField) {
     for (int c = 0; c < f.components; ++c) EXPECT_EQ(a->GetComponent(last, c), expected[c]) << f.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 8);
+  EXPECT_EQ(checked, 9);
 }

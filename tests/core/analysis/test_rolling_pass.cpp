@@ -1,7 +1,8 @@
 // The first millimetres of the paper's plane-strain pass (100 → 86.8 mm, R 300 mm, σ_0 100 MPa, E 210 GPa, sticking
 // friction capped at k, coarse 36 × 6 slab): the roll bites at once (pre-bitten entry), and its measures are those of
 // a pass — roll force within the slab method's range, the lever arm of the torque a fraction of the contact length,
-// the contact length and exit thickness those of the nominal geometry, the slab leaving faster than the roll.
+// the contact length and exit thickness those of the nominal geometry, the slab leaving faster than the roll — and
+// its pressure along the arc carries the roll force, its friction capped at k.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -46,4 +47,20 @@ TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
   EXPECT_GT(last.forward_slip, 0.0);
   EXPECT_LT(last.forward_slip, 0.15);
   EXPECT_EQ(last.spread, 0.0);  // plane strain
+  // the arc: every contact node of the last increment, entry first, pressed, its friction within k = σ_0/√3; the
+  // pressure integrated along x (each node's share: half-way to its neighbours) carries the roll force
+  const std::vector<ArcPoint>& arc = roll.profile;
+  ASSERT_GE(arc.size(), 5u);
+  double integral = 0;
+  for (size_t i = 0; i < arc.size(); ++i) {
+    EXPECT_GT(arc[i].pressure, 0.0);
+    EXPECT_LE(std::abs(arc[i].shear), 100 / std::sqrt(3.0) * (1 + 1e-6)) << i;
+    if (i > 0) EXPECT_LT(arc[i].angle, arc[i - 1].angle);
+    const double left = i > 0 ? (arc[i].x - arc[i - 1].x) / 2 : (arc[1].x - arc[0].x) / 2;
+    const double right = i + 1 < arc.size() ? (arc[i + 1].x - arc[i].x) / 2 : (arc[i].x - arc[i - 1].x) / 2;
+    integral += arc[i].pressure * (left + right);
+  }
+  EXPECT_NEAR(integral, last.roll_force, 0.1 * last.roll_force);
+  EXPECT_GT(arc.front().angle, 8.0);  // from near the entry (bite angle 12°)…
+  EXPECT_LT(arc.back().angle, 2.0);   // …to near the exit
 }
