@@ -56,7 +56,19 @@ const ObjectSchema& rolling_process_schema() {
        number("roll_radius", "length", 300, 0, 1e6, "roll radius R"),
        number("roll_hub_radius", "length", 150, 0, 1e6, "inner radius of the modelled roll ring (fixed hub)"),
        number("barrel_width", "length", 400, 0, 1e6, "roll barrel width (3D; half is modelled)"),
-       number("reduction", "-", 0.132, 0, 0.9, "thickness reduction (h0 − h1) / h0"),
+       [] {
+         Field f = number("reduction", "-", 0, 0, 0.9,
+                          "thickness reduction (h0 − h1) / h0 (default 0.132, the paper's; or give exit_thickness)");
+         f.default_value = nullptr;
+         return f;
+       }(),
+       [] {
+         Field f =
+             number("exit_thickness", "length", 0, 0, 1e6,
+                    "exit thickness h1 of the whole slab, instead of `reduction` (at least 10 % of h0, below it)");
+         f.default_value = nullptr;
+         return f;
+       }(),
        count("slab_nx", 48, "slab elements along the length"),
        [] {
          Field f = number("grading", "-", 1, 1, 2,
@@ -125,9 +137,25 @@ const ObjectSchema& rolling_process_schema() {
   return s;
 }
 
+namespace {
+constexpr double kPaperReduction = 0.132;
+
+/// The whole exit thickness h1: exit_thickness, or h0 (1 − reduction), the paper's reduction when neither is given.
+double exit_thickness(const json& p) {
+  if (p.contains("exit_thickness")) return p.at("exit_thickness").get<double>();
+  return p.at("slab_thickness").get<double>() * (1 - p.value("reduction", kPaperReduction));
+}
+}  // namespace
+
 void check_process(const json& project, std::vector<Issue>& issues) {
   if (!project.contains("process")) return;
   const json& p = project.at("process");
+  const double h0 = p.at("slab_thickness").get<double>();
+  if (p.contains("reduction") && p.contains("exit_thickness"))
+    issues.push_back({"process.exit_thickness", "give either process.reduction or process.exit_thickness, not both"});
+  else if (p.contains("exit_thickness") && !(exit_thickness(p) < h0 && exit_thickness(p) >= 0.1 * h0))
+    issues.push_back({"process.exit_thickness", "must be below the entry thickness (" + std::to_string(h0) +
+                                                    ") and at least 10 % of it (reduction ≤ 0.9)"});
   if (auto why = grading_problem(p.at("grading").get<double>(), p.at("slab_nx").get<int>()); !why.empty())
     issues.push_back({"process.grading", why});
   const double travel = p.at("travel").get<double>(), step = p.at("travel_increment").get<double>();
@@ -144,8 +172,8 @@ json expand_process(const json& project) {
   const json& p = project.at("process");
   const int dim = project.at("dimension").get<int>();
   const double L = p.at("slab_length"), W = p.at("slab_width"), h0 = p.at("slab_thickness");
-  const double R = p.at("roll_radius"), r = p.at("reduction");
-  const double h1 = h0 * (1 - r), dh = (h0 - h1) / 2;
+  const double R = p.at("roll_radius");
+  const double h1 = exit_thickness(p), dh = (h0 - h1) / 2;
   const double axis = h1 / 2 + R;  // roll axis height above the slab's mid-plane
   json out = project;
   // every field written out, defaults included: the generated entries skip schema validation
@@ -242,7 +270,7 @@ std::optional<RollingPass> rolling_pass(const json& project, const Model& model)
   pass.width_axis = model.dim == 3 ? 1 : -1;
   pass.radius = p.at("roll_radius");
   pass.entry_thickness = p.at("slab_thickness");
-  pass.exit_thickness = pass.entry_thickness * (1 - p.at("reduction").get<double>());
+  pass.exit_thickness = exit_thickness(p);
   pass.width = p.at("slab_width");
   pass.travel = p.at("travel");
   return pass;

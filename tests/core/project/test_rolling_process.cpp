@@ -84,6 +84,31 @@ TEST(RollingProcess, GeneratesAPreBittenSlabTouchingTheRollAlongTheArc) {
   }
 }
 
+TEST(RollingProcess, ExitThicknessInsteadOfReduction) {
+  // the paper's 13.2 % given as the exit thickness 86.8 mm builds the same pass, node for node
+  const Model by_reduction = rolling(2), by_exit = rolling(2, {{"exit_thickness", 86.8}});
+  ASSERT_TRUE(by_exit.rolling);
+  EXPECT_DOUBLE_EQ(by_exit.rolling->exit_thickness, 86.8);
+  EXPECT_NEAR(by_reduction.rolling->exit_thickness, 86.8, 1e-12);
+  for (size_t b = 0; b < 2; ++b)
+    for (size_t n = 0; n < by_exit.bodies[b].mesh.nodes.size(); ++n)
+      for (int c = 0; c < 2; ++c)
+        EXPECT_NEAR(by_exit.bodies[b].mesh.nodes[n][c], by_reduction.bodies[b].mesh.nodes[n][c], 1e-9) << b << " " << n;
+  const Model heavier = rolling(2, {{"exit_thickness", 80.0}});
+  double roll_bottom = 1e300;
+  for (const auto& x : heavier.bodies[1].mesh.nodes) roll_bottom = std::min(roll_bottom, x[1]);
+  EXPECT_NEAR(roll_bottom, 40.0, 1e-9);
+  // one of the two, and a thickness the roll can reach
+  const std::string both = refusal({{"type", "rolling"}, {"reduction", 0.1}, {"exit_thickness", 90.0}});
+  EXPECT_NE(both.find("process.exit_thickness: give either process.reduction or process.exit_thickness"),
+            std::string::npos)
+      << both;
+  EXPECT_NE(refusal({{"type", "rolling"}, {"exit_thickness", 120.0}}).find("process.exit_thickness: must be below"),
+            std::string::npos);
+  EXPECT_NE(refusal({{"type", "rolling"}, {"exit_thickness", 5.0}}).find("process.exit_thickness: must be below"),
+            std::string::npos);
+}
+
 TEST(RollingProcess, BadValuesNameTheirPath) {
   json j = {{"dimension", 2}, {"process", {{"reduction", 1.5}}}};
   try {
