@@ -156,6 +156,23 @@ int mesh_command(const RunOptions& o) {
   return 0;
 }
 
+namespace {
+/// What a rolling engineer reads first: the pass's roll force, torque, forward slip and exit thickness, and whether
+/// they are steady (rolling.csv has every increment).
+std::string rolling_line(const Model& model, const RollingResults& r) {
+  const RollingIncrement& s = r.steady;
+  const bool plane = model.dim == 2;
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "rollsim: rolling: roll force %.4g %s, torque %.4g %s, forward slip %.2f %%, exit thickness %.3f mm "
+                "(%s; rolling.csv, contact_profile.csv)\n",
+                s.roll_force, plane ? "N/mm" : "N", s.roll_torque, plane ? "N·mm/mm" : "N·mm", 100 * s.forward_slip,
+                s.exit_thickness,
+                r.steady_state_increment ? "mean over the steady increments" : "last increment: not steady yet");
+  return buf;
+}
+}  // namespace
+
 int run_command(const RunOptions& o) {
   Stopwatch wall;
   StderrProgress progress(o.quiet);
@@ -211,6 +228,7 @@ int run_command(const RunOptions& o) {
   if (!o.quiet)
     std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s, %.3f s; results in %s/\n", project.name().c_str(),
                  results.dofs, info.mode.c_str(), results.timing.total_s, dir.string().c_str());
+  if (results.rolling && !o.quiet) std::cerr << rolling_line(model, *results.rolling);
   std::cout << summary << "\n";
   return 0;
 }

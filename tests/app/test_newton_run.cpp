@@ -1,6 +1,6 @@
 // `rollsim run` on a plastic project: the Newton analysis is chosen by the material, writes convergence.csv and the
 // plastic strain field, ends `diverged` with exit code 4 and the increment named when no equilibrium exists, and
-// refuses bad plasticity input with exit 2 and the JSON path.
+// refuses bad plasticity input with exit 2 and the JSON path; a rolling pass prints its measures and writes its tables.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -154,4 +154,39 @@ TEST(NewtonRun, BadPlasticityInputIsRefusedWithItsPath) {
     EXPECT_TRUE(contains(r.result.err, c.path)) << r.result.err;
     EXPECT_TRUE(r.summary.is_null()) << "nothing written for invalid input";
   }
+}
+
+TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {
+  // the first 2 mm of the paper's plane-strain pass (coarse): roll force, torque and forward slip on stderr, the
+  // increments in rolling.csv, the arc in contact_profile.csv, results.rolling with its units in summary.json
+  const json pass = {{"name", "pass"},
+                     {"dimension", 2},
+                     {"process",
+                      {{"type", "rolling"},
+                       {"slab_nx", 36},
+                       {"slab_nt", 6},
+                       {"slab_E", 210000.0},
+                       {"travel", 2.0},
+                       {"travel_increment", 1.0}}},
+                     {"solver", {{"mode", "direct"}}}};
+  NewtonOutcome r;
+  const std::string dir = make_temp_dir("rolling");
+  r.out = dir + "/out";
+  write_text(dir + "/p.json", pass.dump(1));
+  r.result = run_rollsim({"run", dir + "/p.json", "--out", r.out});
+  ASSERT_EQ(r.result.exit_code, 0) << r.result.err;
+  EXPECT_TRUE(contains(r.result.err, "rollsim: rolling: roll force ")) << r.result.err;
+  EXPECT_TRUE(contains(r.result.err, "N/mm, torque ")) << r.result.err;
+  EXPECT_TRUE(contains(r.result.err, "last increment: not steady yet")) << r.result.err;
+  const json summary = json::parse(read_text(r.out + "/summary.json"));
+  const json& rolling = summary["results"]["rolling"];
+  EXPECT_GT(rolling["roll_force"].get<double>(), 4000.0);
+  EXPECT_EQ(rolling["units"]["roll_force"], "N/mm (per unit width)");
+  EXPECT_EQ(rolling["bite_increment"], 1);
+  const std::string table = read_text(r.out + "/rolling.csv");
+  EXPECT_TRUE(contains(table, "increment,travel,roll_force,roll_torque,contact_length,exit_thickness")) << table;
+  EXPECT_GE(std::count(table.begin(), table.end(), '\n'), 3);
+  const std::string arc = read_text(r.out + "/contact_profile.csv");
+  EXPECT_TRUE(contains(arc, "angle,x,width,pressure,shear")) << arc;
+  EXPECT_GE(std::count(arc.begin(), arc.end(), '\n'), 6);
 }
