@@ -50,19 +50,19 @@ double mean_advance(const Mesh& slab, const std::vector<int>& nodes, const Eigen
   return nodes.empty() ? 0.0 : s / static_cast<double>(nodes.size());
 }
 
-/// First increment from which roll force and torque stay within kSteadyTolerance of their value over the
-/// preceding `window` of travel (0: none).
-int steady_from(const std::vector<RollingIncrement>& h, double window) {
-  for (size_t i = 0; i < h.size(); ++i) {
-    if (h[i].travel < window) continue;
-    bool settled = true;
-    for (size_t j = i + 1; j-- > 0 && h[j].travel >= h[i].travel - window;)
-      settled = settled &&
-                std::abs(h[j].roll_force - h[i].roll_force) <= kSteadyTolerance * std::abs(h[i].roll_force) &&
-                std::abs(h[j].roll_torque - h[i].roll_torque) <= kSteadyTolerance * std::abs(h[i].roll_torque);
-    if (settled) return static_cast<int>(i) + 1;
+RollingIncrement mean(const std::vector<RollingIncrement>& h, size_t from) {
+  RollingIncrement m;
+  const double n = static_cast<double>(h.size() - from);
+  for (size_t i = from; i < h.size(); ++i) {
+    m.travel = h[i].travel;
+    m.roll_force += h[i].roll_force / n;
+    m.roll_torque += h[i].roll_torque / n;
+    m.contact_length += h[i].contact_length / n;
+    m.exit_thickness += h[i].exit_thickness / n;
+    m.forward_slip += h[i].forward_slip / n;
+    m.spread += h[i].spread / n;
   }
-  return 0;
+  return m;
 }
 
 /// The slab's contact nodes at the state `r`, by decreasing angle (entry first).
@@ -87,22 +87,20 @@ std::vector<ArcPoint> arc_profile(const Model& model, const RollingPass& pass, c
   return out;
 }
 
-RollingIncrement mean(const std::vector<RollingIncrement>& h, size_t from) {
-  RollingIncrement m;
-  const double n = static_cast<double>(h.size() - from);
-  for (size_t i = from; i < h.size(); ++i) {
-    m.travel = h[i].travel;
-    m.roll_force += h[i].roll_force / n;
-    m.roll_torque += h[i].roll_torque / n;
-    m.contact_length += h[i].contact_length / n;
-    m.exit_thickness += h[i].exit_thickness / n;
-    m.forward_slip += h[i].forward_slip / n;
-    m.spread += h[i].spread / n;
-  }
-  return m;
-}
-
 }  // namespace
+
+int steady_state_from(const std::vector<RollingIncrement>& h, double window) {
+  for (size_t i = 0; i < h.size(); ++i) {
+    if (h[i].travel < window) continue;
+    bool settled = true;
+    for (size_t j = i + 1; j-- > 0 && h[j].travel >= h[i].travel - window;)
+      settled = settled &&
+                std::abs(h[j].roll_force - h[i].roll_force) <= kSteadyTolerance * std::abs(h[i].roll_force) &&
+                std::abs(h[j].roll_torque - h[i].roll_torque) <= kSteadyTolerance * std::abs(h[i].roll_torque);
+    if (settled) return static_cast<int>(i) + 1;
+  }
+  return 0;
+}
 
 RollingResults measure_rolling(const Model& model, const Results& results) {
   const RollingPass& pass = *model.rolling;
@@ -137,7 +135,7 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
       out.profile = arc_profile(model, pass, it->bodies[static_cast<size_t>(pass.slab)]);
       break;
     }
-  out.steady_state_increment = steady_from(out.increments, contact);
+  out.steady_state_increment = steady_state_from(out.increments, contact);
   out.steady = mean(out.increments, out.steady_state_increment ? static_cast<size_t>(out.steady_state_increment - 1)
                                                                : out.increments.size() - 1);
   return out;

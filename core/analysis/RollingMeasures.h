@@ -12,6 +12,10 @@ namespace rollsim {
 /// √(R Δh) (Δh = h0 − h1, the whole draft), neither moved by more than this fraction of its value.
 constexpr double kSteadyTolerance = 0.02;
 
+/// The first increment (1-based) whose roll force and torque, and those of every increment over the `window` of
+/// travel before it, agree within kSteadyTolerance of its own; 0 when none does (or the travel is shorter).
+int steady_state_from(const std::vector<RollingIncrement>& history, double window);
+
 /// The measures of `results` (its increments' fields) for the pass `model.rolling` (which must be set).
 RollingResults measure_rolling(const Model& model, const Results& results);
 

@@ -54,7 +54,8 @@ const ObjectSchema& rolling_process_schema() {
        number("slab_width", "length", 350, 0, 1e6, "slab width (3D: along y; half is modelled)"),
        number("slab_thickness", "length", 100, 0, 1e6, "entry thickness h0 (half is modelled)"),
        number("roll_radius", "length", 300, 0, 1e6, "roll radius R"),
-       number("roll_hub_radius", "length", 150, 0, 1e6, "inner radius of the modelled roll ring (fixed hub)"),
+       number("roll_hub_radius", "length", 150, 0, 1e6,
+              "inner radius of the modelled roll ring (the hub, turned as a rigid body)"),
        number("barrel_width", "length", 400, 0, 1e6, "roll barrel width (3D; half is modelled)"),
        [] {
          Field f = number("reduction", "-", 0, 0, 0.9,
@@ -88,9 +89,8 @@ const ObjectSchema& rolling_process_schema() {
        number("slab_E", "stress", 1e5, 0, 1e12, "slab Young's modulus (hot steel)"),
        number("slab_yield_stress", "stress", 100, 0, 1e12, "slab flow stress σ_0 (hot steel near 1100 °C)"),
        [] {
-         Field f = number("slab_hardening", "stress", 0, 0, 1e12,
-                          "slab linear hardening modulus H (0: perfectly "
-                          "plastic)");
+         Field f =
+             number("slab_hardening", "stress", 0, 0, 1e12, "slab linear hardening modulus H (0: perfectly plastic)");
          f.min_exclusive = false;
          return f;
        }(),
