@@ -45,13 +45,7 @@ class ForwardingObserver final : public AnalysisObserver {
     emit w_.newtonIteration(increment, iteration, residual);
   }
   void on_tangents(int increment, int iteration, const std::vector<TangentChoice>& choices) override {
-    QStringList parts;
-    for (const TangentChoice& c : choices)
-      parts << QStringLiteral("%1 %2 (%3)")
-                   .arg(QString::fromStdString(c.group),
-                        c.refactored ? QStringLiteral("refactored") : QStringLiteral("kept"),
-                        QString::fromStdString(c.why));
-    emit w_.tangentsChosen(increment, iteration, parts.join(QStringLiteral("; ")));
+    emit w_.tangentsChosen(increment, iteration, QString::fromStdString(describe(choices)));
   }
   void on_cg_iteration(int solve, int iteration, double residual) override {
     pending_.append({solve, iteration, residual});

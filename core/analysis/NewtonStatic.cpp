@@ -248,13 +248,6 @@ std::vector<TangentChoice> NewtonRun::tangent_choices(const std::vector<size_t>&
   return out;
 }
 
-std::string compact(const std::vector<TangentChoice>& choices) {
-  std::string s;
-  for (const TangentChoice& c : choices)
-    s += (s.empty() ? "" : "; ") + c.group + (c.refactored ? " new (" : " kept (") + c.why + ")";
-  return s;
-}
-
 Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
@@ -338,7 +331,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     correction = norm(sol.u);
     changed = update_statuses(lf);
     log_.push_back({increment, attempt_no, k, lf, residual, relative, correction, 1.0, static_cast<int>(tangent.size()),
-                    changed, solver_.stats().cg_iterations - cg_before, compact(choices)});
+                    changed, solver_.stats().cg_iterations - cg_before, describe(choices)});
   }
 }
 

@@ -64,9 +64,7 @@ struct NewtonIteration {
   int refactored = 0;       // groups given a new tangent (and factor) for this iteration's solve
   int contact_changes = 0;  // frictionless statuses changed by this iteration's solve
   long cg_iterations = 0;   // interface CG iterations of this iteration's solve
-  std::string tangents;     // every group's tangent: "slab new (share 0.43); roll kept (share 0.0031)" — see below
-  // (new: re-assembled and refactored; kept: last iteration's factor; the share ‖r_g‖ / ‖r‖, or why all are new:
-  // "first", "cut-back", "always"; "constant": an elastic small-strain group's one factor)
+  std::string tangents;     // every group's tangent choice and why (solve/Observer.h: describe)
 };
 
 struct Timing {

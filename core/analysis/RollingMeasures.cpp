@@ -13,11 +13,17 @@ Eigen::Vector3d current(const Mesh& mesh, const Eigen::VectorXd& u, int node) {
   return x;
 }
 
+/// The roll's axis: the centre of its hub's rotation.
+Eigen::Vector3d roll_axis_point(const Model& model, const RollingPass& pass) {
+  const auto& c = model.displacements[static_cast<size_t>(pass.hub)].rotation->center;
+  return {c[0], c[1], c[2]};
+}
+
 /// The hub's reaction on the roll: roll force (minus its thickness component) and driving torque about the axis.
 void hub_reaction(const Model& model, const RollingPass& pass, const BodyResults& roll, RollingIncrement& out) {
   const DisplacementBC& hub = model.displacements[static_cast<size_t>(pass.hub)];
   const Mesh& mesh = model.bodies[static_cast<size_t>(pass.roll)].mesh;
-  const Eigen::Vector3d c(hub.rotation->center[0], hub.rotation->center[1], hub.rotation->center[2]);
+  const Eigen::Vector3d c = roll_axis_point(model, pass);
   const Eigen::Vector3d axis(hub.rotation->axis[0], hub.rotation->axis[1], hub.rotation->axis[2]);
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
   for (int n : hub.nodes) {
@@ -68,8 +74,7 @@ RollingIncrement mean(const std::vector<RollingIncrement>& h, size_t from) {
 /// The slab's contact nodes at the state `r`, by decreasing angle (entry first).
 std::vector<ArcPoint> arc_profile(const Model& model, const RollingPass& pass, const BodyResults& r) {
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
-  const DisplacementBC& hub = model.displacements[static_cast<size_t>(pass.hub)];
-  const Eigen::Vector3d c(hub.rotation->center[0], hub.rotation->center[1], hub.rotation->center[2]);
+  const Eigen::Vector3d c = roll_axis_point(model, pass);
   const int t = pass.thickness_axis, dim = slab.dim;
   std::vector<ArcPoint> out;
   for (int n = 0; n < slab.num_nodes(); ++n) {

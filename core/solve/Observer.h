@@ -22,13 +22,23 @@
 namespace rollsim {
 
 /// What a Newton iteration does with one group's tangent: re-assembles and refactors it, or keeps last iteration's
-/// factor, and why ("first iteration of the run", "after a cut-back", "policy always", "residual 43 % of the total >
-/// 1 %", "residual 0.3 % of the total ≤ 1 %", "constant tangent (elastic, small strain)").
+/// factor, and why: "first" (the run's first iteration), "cut-back", "always" (the policy), "share 0.43 > 0.01" (its
+/// residual's share of the total against the selective threshold), "constant" (an elastic small-strain group's one
+/// factor).
 struct TangentChoice {
   std::string group;
   bool refactored = true;
   std::string why;
 };
+
+/// The choices in one line, as convergence.csv and the window's log show them:
+/// "slab refactored (share 0.43 > 0.01); roll kept (share 0.0031 ≤ 0.01)".
+inline std::string describe(const std::vector<TangentChoice>& choices) {
+  std::string s;
+  for (const TangentChoice& c : choices)
+    s += (s.empty() ? "" : "; ") + c.group + (c.refactored ? " refactored (" : " kept (") + c.why + ")";
+  return s;
+}
 
 class AnalysisObserver {
  public:

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../common/RollingPass.h"
 #include "RunBinary.h"
 
 using json = nlohmann::json;
@@ -159,16 +160,7 @@ TEST(NewtonRun, BadPlasticityInputIsRefusedWithItsPath) {
 TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {
   // the first 2 mm of the paper's plane-strain pass (coarse): roll force, torque and forward slip on stderr, the
   // increments in rolling.csv, the arc in contact_profile.csv, results.rolling with its units in summary.json
-  const json pass = {{"name", "pass"},
-                     {"dimension", 2},
-                     {"process",
-                      {{"type", "rolling"},
-                       {"slab_nx", 36},
-                       {"slab_nt", 6},
-                       {"slab_E", 210000.0},
-                       {"travel", 2.0},
-                       {"travel_increment", 1.0}}},
-                     {"solver", {{"mode", "direct"}}}};
+  const json pass = testing_support::paper_pass_2d(2.0, 1.0);
   NewtonOutcome r;
   const std::string dir = make_temp_dir("rolling");
   r.out = dir + "/out";

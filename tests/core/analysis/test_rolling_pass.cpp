@@ -7,28 +7,13 @@
 
 #include <cmath>
 
+#include "../../common/RollingPass.h"
 #include "../../common/RunJson.h"
 
 using namespace rollsim;
-using nlohmann::json;
-
-namespace {
-json pass(double travel) {
-  return {{"name", "pass"},
-          {"dimension", 2},
-          {"process",
-           {{"type", "rolling"},
-            {"slab_nx", 36},
-            {"slab_nt", 6},
-            {"slab_E", 210000.0},
-            {"travel", travel},
-            {"travel_increment", 2.0}}},
-          {"solver", {{"mode", "direct"}}}};
-}
-}  // namespace
 
 TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
-  const Results r = testing_support::run_json(pass(4.0));
+  const Results r = testing_support::run_json(testing_support::paper_pass_2d(4.0, 2.0));
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_TRUE(r.rolling);
   const RollingResults& roll = *r.rolling;
