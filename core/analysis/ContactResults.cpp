@@ -52,4 +52,19 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
   }
 }
 
+void add_contact_reactions(const std::vector<std::unique_ptr<DofMap>>& dofs, const std::vector<ConstraintRow>& rows,
+                           const std::vector<int>& kept, const Eigen::VectorXd& lambda,
+                           const std::vector<Eigen::VectorXd>& friction, Results& results) {
+  for (size_t b = 0; b < friction.size(); ++b)
+    for (Eigen::Index i = 0; i < friction[b].size(); ++i)
+      if (friction[b][i] != 0 && dofs[b]->equation(static_cast<int>(i) / dofs[b]->dim(), i % dofs[b]->dim()) < 0)
+        results.bodies[b].nodal_force[i] -= friction[b][i];
+  for (size_t r = 0; r < kept.size(); ++r)
+    for (const ConstraintTerm& t : rows[kept[r]].terms) {
+      if (dofs[t.body]->equation(t.node, t.comp) >= 0) continue;
+      const int dim = dofs[t.body]->dim();
+      results.bodies[t.body].nodal_force[t.node * dim + t.comp] += lambda[static_cast<Eigen::Index>(r)] * t.coef;
+    }
+}
+
 }  // namespace rollsim

@@ -74,7 +74,9 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
   dofs_.push_back(std::make_unique<DofMap>(body, b, model.displacements));
   BodyGroups bg;
   bg.first = static_cast<int>(sys_.groups.size());
-  if (split && body.partition.num_subdomains > 1) {
+  if (dofs_.back()->num_free() == 0) {  // a body moved wholly by its conditions (a rigid roll): nothing to solve
+    bg.count = 0;
+  } else if (split && body.partition.num_subdomains > 1) {
     DecomposeOptions opt;
     opt.multipliers = choice;
     opt.assemble = false;
@@ -101,6 +103,7 @@ void GroupLayout::add_body_load(const std::vector<Eigen::VectorXd>& load, const 
   for (size_t g : groups) listed[g] = 1;
   for (size_t b = 0; b < bodies_.size(); ++b) {
     const BodyGroups& bg = bodies_[b];
+    if (bg.count == 0) continue;
     if (!bg.dec) {
       if (listed[bg.first]) sys_.groups[bg.first].f += load[b];
       continue;
@@ -135,6 +138,10 @@ void GroupLayout::set_contact(const BodyConstraints& contact) {
 std::vector<Eigen::VectorXd> GroupLayout::body_solution(const BlockSolution& sol) const {
   std::vector<Eigen::VectorXd> u;
   for (const BodyGroups& bg : bodies_) {
+    if (bg.count == 0) {
+      u.emplace_back(0);
+      continue;
+    }
     if (!bg.dec) {
       u.push_back(sol.u[bg.first]);
       continue;

@@ -2,7 +2,7 @@
 // How the bodies become the block system's groups (DESIGN.md): one group per body, or — for a partitioned body
 // when the strategy works on subdomains (feti) — one group per subdomain, glued by the interface rows B_i
 // (paper §2). The multipliers are ordered [contact; interface]: contact rows change with the active set, the
-// interface rows never do.
+// interface rows never do. A body without free dofs (moved wholly by its conditions: a rigid roll) has no group.
 #include <memory>
 #include <optional>
 #include <vector>
@@ -46,7 +46,7 @@ class GroupLayout {
 
  private:
   struct BodyGroups {
-    int first = 0, count = 1;
+    int first = 0, count = 1;  // count 0: a body without free dofs has no group
     std::optional<BodyDecomposition> dec;
   };
   void add_body(const Model& model, int b, bool split, Multipliers choice);

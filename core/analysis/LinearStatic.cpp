@@ -38,6 +38,7 @@ struct DriverState {
         into.bodies.back().subdomain = model.bodies[b].partition.element_subdomain;
     }
     contact_results(model, pairs, rows, contact.kept, sol.lambda.head(contact.d.size()), into);
+    add_contact_reactions(layout.body_dofs(), rows, contact.kept, sol.lambda.head(contact.d.size()), {}, into);
   }
 
   /// One linear solve with the active set as it stands, at load factor `lf`.

@@ -188,6 +188,7 @@ void NewtonRun::recover_into(Results& into, double lf) const {
   const Eigen::VectorXd lc =
       lambda_valid_ ? Eigen::VectorXd(lambda_.head(contact_.d.size())) : Eigen::VectorXd::Zero(contact_.d.size());
   contact_results(model_, pairs_, rows_, contact_.kept, lc, into);
+  add_contact_reactions(layout_.body_dofs(), rows_, contact_.kept, lc, friction_loads(model_, pairs_), into);
 }
 
 double norm(const std::vector<double>& parts) {
@@ -286,7 +287,9 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     }
     const double residual = norm(group_residuals());
     if (!std::isfinite(residual)) return {{}, "the residual is not a finite number", k - 1};
-    if (k == 1) first = residual;
+    // the scale: the first residual, or the second where the increment is driven by motions that the first does not
+    // see (a prescribed rigid body, a moved contact surface: ‖r_1‖ is the last increment's round-off)
+    if (k <= 2) first = std::max(first, residual);
     const double relative = first > 0 ? residual / first : 0.0;
     double step = 0;
     for (size_t g = 0; g < u_.size(); ++g) step += (u_[g] - u_start[g]).squaredNorm();
@@ -299,7 +302,9 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       changed = 1;
       continue;
     }
-    if (k > 1 && relative > 1e6) return {{}, "the residual grew to " + fmt(relative) + " times its first value", k - 1};
+    if (k > 1 && relative > 1e6)
+      return {
+          {}, "the residual grew to " + fmt(relative) + " times its scale (the larger of its first two values)", k - 1};
     if (k > opt_.max_iterations)
       return {{},
               "no convergence in " + std::to_string(opt_.max_iterations) + " iterations (residual ratio " +

@@ -21,7 +21,7 @@ namespace rollsim {
 struct NewtonOptions {
   int increments = 10;                   // equal load steps N (a cut-back halves the current one)
   int max_iterations = 25;               // Newton iterations of one attempt
-  double tolerance = 1e-8;               // ‖r_k‖ ≤ tolerance × ‖r_1‖ of the attempt
+  double tolerance = 1e-8;               // ‖r_k‖ ≤ tolerance × max(‖r_1‖, ‖r_2‖) of the attempt
   double displacement_tolerance = 1e-2;  // and ‖du_k‖ ≤ this × ‖u − u_n‖ (the step's displacement)
   int max_cutbacks = 8;                  // failed attempts in the whole run before it is declared diverged
   bool line_search = true;               // one secant step along du when the residual's work along it did not halve

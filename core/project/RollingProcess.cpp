@@ -95,6 +95,18 @@ const ObjectSchema& rolling_process_schema() {
          return f;
        }(),
        number("slab_nu", "-", 0.3, -1, 0.5, "slab Poisson's ratio"),
+       [] {
+         Field f;
+         f.name = "roll";
+         f.kind = Kind::Choice;
+         f.choices = {"elastic", "rigid"};
+         f.default_value = "elastic";
+         f.doc =
+             "the roll: elastic (its hub turned, the ring deforms: roll flattening) or rigid (every node of the ring "
+             "turned as one body; nothing of the roll is factored: faster, and beside an elastic run a measure of "
+             "what flattening changes)";
+         return f;
+       }(),
        number("roll_E", "stress", 2.1e5, 0, 1e12, "roll Young's modulus"),
        number("roll_nu", "-", 0.3, -1, 0.5, "roll Poisson's ratio"),
        [] {
@@ -239,7 +251,8 @@ json expand_process(const json& project) {
   bcs.push_back({{"type", "symmetry"}, {"body", "slab"}, {"set", mid}, {"normal", dim == 2 ? "y" : "z"}});
   // the hub turns so that the roll's lowest point moves along +x: counter-clockwise about z in 2D, about −y in 3D
   const double turn = p.at("travel").get<double>() / R * 180.0 / M_PI;
-  json hub = {{"type", "rotation"}, {"body", "roll"}, {"set", "inner"}, {"angle", turn}};
+  const std::string turned = p.at("roll") == "rigid" ? "all" : "inner";
+  json hub = {{"type", "rotation"}, {"body", "roll"}, {"set", turned}, {"angle", turn}};
   if (dim == 2) {
     hub["center"] = {0.0, axis};
   } else {

@@ -49,3 +49,29 @@ TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
   EXPECT_GT(arc.front().angle, 8.0);  // from near the entry (bite angle 12°)…
   EXPECT_LT(arc.back().angle, 2.0);   // …to near the exit
 }
+
+// A rigid roll (process.roll: rigid) is moved wholly by its rotation: it has no group, so nothing of it is assembled
+// or factored, and its force comes from the contact on its driven nodes (their reactions include the contact
+// force). Over the same first 2 mm it carries the slab's contact force, and measures the pass like the elastic roll.
+TEST(RollingPass, RigidRollIsDrivenWithoutFactoringAndCarriesTheContactForce) {
+  nlohmann::json rigid = testing_support::paper_pass_2d(2.0, 1.0);
+  rigid["process"]["roll"] = "rigid";
+  const Results r = testing_support::run_json(rigid);
+  const Results e = testing_support::run_json(testing_support::paper_pass_2d(2.0, 1.0));
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_TRUE(e.status.ok()) << e.status.message;
+  EXPECT_EQ(r.solver.factorizations.count("roll"), 0u);
+  EXPECT_GT(r.solver.factorizations.at("slab"), 0);
+  EXPECT_GT(e.solver.factorizations.at("roll"), 0);
+  const RollingIncrement &rigid_last = r.rolling->increments.back(), &elastic_last = e.rolling->increments.back();
+  ASSERT_EQ(r.contacts.size(), 1u);
+  // the arc spans 12°: the normal force's thickness component is 0.98–1 of it
+  EXPECT_GT(rigid_last.roll_force, 0.97 * r.contacts[0].normal_force);
+  EXPECT_LT(rigid_last.roll_force, 1.01 * r.contacts[0].normal_force);
+  EXPECT_GT(rigid_last.roll_torque, 0.0);
+  // on this coarse slab a node more or less at the entry (the roll's flattening) moves the force by about a tenth
+  EXPECT_NEAR(rigid_last.roll_force, elastic_last.roll_force, 0.15 * elastic_last.roll_force);
+  EXPECT_NEAR(rigid_last.roll_torque / rigid_last.roll_force, elastic_last.roll_torque / elastic_last.roll_force,
+              0.15 * elastic_last.roll_torque / elastic_last.roll_force);
+  EXPECT_NEAR(rigid_last.exit_thickness, 86.8, 0.005 * 86.8);
+}
