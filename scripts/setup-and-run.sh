@@ -4,7 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh -DROLLSIM_BUILD_TESTS=OFF
-SAMPLE=${1:-samples/cantilever-2d-120x120.json}
+SAMPLE=${1:-samples/rolling-2d-36x6.json}
 OUT=results/$(basename "$SAMPLE" .json)
 build/app/rollsim run "$SAMPLE" --out "$OUT"
-echo "rollsim: results of $SAMPLE are in $OUT/ (summary.json; result.vtu opens in ParaView)"
+echo "rollsim: results of $SAMPLE are in $OUT/ (summary.json; result.vtu and results.pvd open in ParaView)"

@@ -33,7 +33,7 @@ class MainWindow : public QMainWindow {
   /// Opens a project file; on an invalid project returns false with the validator's message in `error` (the
   /// window keeps its current project).
   bool open_file(const QString& file, QString* error = nullptr);
-  /// The default project (resources/default-project.json), untitled.
+  /// The default project (samples/rolling-2d-36x6.json, embedded as :/rollsim/default-project.json), untitled.
   void new_project();
   /// Save / Save As; false when cancelled or failed (the message is logged).
   bool save();

@@ -34,7 +34,7 @@ class ProjectDocument : public QObject {
   void load_text(const std::string& text, const QString& file, const QString& source_name);
   /// Opens a project file. Throws ProjectError.
   void open(const QString& file);
-  /// The embedded default project (resources/default-project.json), untitled.
+  /// The embedded default project (samples/rolling-2d-36x6.json, embedded as :/rollsim/default-project.json), untitled.
   void load_default();
   /// Writes the document atomically (temporary file + rename) and makes `file` the document's file.
   /// Throws std::exception on I/O failure.

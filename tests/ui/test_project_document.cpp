@@ -137,7 +137,7 @@ class TestProjectDocument : public QObject {
     QVERIFY(doc.model());
     QVERIFY(doc.file().isEmpty());
     QCOMPARE(doc.display_name(), QStringLiteral("untitled"));
-    QCOMPARE(QString::fromStdString(doc.project().name()), QStringLiteral("rolling-pass"));
+    QCOMPARE(QString::fromStdString(doc.project().name()), QStringLiteral("rolling-2d-36x6"));
   }
 
   void invalid_file_is_refused_and_the_document_kept() {
