@@ -12,6 +12,9 @@
 #include "io/ConvergenceCsv.h"
 #include "io/OutputFolder.h"
 #include "io/RollingCsv.h"
+#ifdef ROLLSIM_HAVE_GUI
+#include "RollingCharts.h"
+#endif
 #include "io/Summary.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
@@ -165,7 +168,7 @@ std::string rolling_line(const Model& model, const RollingResults& r) {
   char buf[400];
   std::snprintf(buf, sizeof buf,
                 "rollsim: rolling: roll force %.4g %s, torque %.4g %s, forward slip %.2f %%, exit thickness %.3f mm "
-                "(%s; rolling.csv, contact_profile.csv)\n",
+                "(%s; rolling.csv, contact_profile.csv and their PNG plots)\n",
                 s.roll_force, plane ? "N/mm" : "N", s.roll_torque, plane ? "N·mm/mm" : "N·mm", 100 * s.forward_slip,
                 s.exit_thickness,
                 r.steady_state_increment ? "mean over the steady increments" : "last increment: not steady yet");
@@ -213,6 +216,9 @@ int run_command(const RunOptions& o) {
     if (results.rolling) {
       write_file_atomically(dir / "rolling.csv", rolling_csv(*results.rolling));
       write_file_atomically(dir / "contact_profile.csv", contact_profile_csv(*results.rolling));
+#ifdef ROLLSIM_HAVE_GUI
+      ui::write_rolling_plots(dir, *results.rolling, model.dim);  // rolling.png, contact_profile.png
+#endif
     }
     results.timing.total_s = wall.seconds();
     write_file_atomically(dir / "summary.json", make_summary(model, results, info).dump(2) + "\n");

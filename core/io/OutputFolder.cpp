@@ -17,8 +17,9 @@ bool is_result_increment(const std::string& name) {  // results_0001.vtu
 }
 
 bool is_final_output(const std::string& name) {
-  return name == "summary.json" || name == "result.vtu" || name == "results.pvd" || name == "convergence.csv" ||
-         is_result_increment(name);
+  static const char* const names[] = {"summary.json", "result.vtu",          "results.pvd", "convergence.csv",
+                                      "rolling.csv",  "contact_profile.csv", "rolling.png", "contact_profile.png"};
+  return std::find(std::begin(names), std::end(names), name) != std::end(names) || is_result_increment(name);
 }
 }  // namespace
 

@@ -1,13 +1,13 @@
 #pragma once
 // The output folder of `rollsim run` holds one run: before a run writes, every file an earlier run wrote there
-// (summary.json, result.vtu, results.pvd and its results_NNNN.vtu, and the hidden temporaries of an interrupted
-// write) is removed, so a failed run never leaves an older result beside its own summary. Other files are kept.
+// (summary.json, result.vtu, results.pvd and its results_NNNN.vtu, convergence.csv, a rolling pass's rolling.csv,
+// contact_profile.csv and their PNG plots, and the hidden temporaries of an interrupted write) is removed, so a
+// failed run never leaves an older result beside its own summary. Other files are kept.
 #include <filesystem>
 
 namespace rollsim {
 
-/// True for the names a run writes: summary.json, result.vtu, results.pvd, results_<digits>.vtu and `.<any of
-/// those>.tmp`.
+/// True for the names a run writes (above), results_<digits>.vtu and `.<any of those>.tmp`.
 bool is_run_output(const std::filesystem::path& name);
 
 /// Removes the run outputs (is_run_output) directly inside `dir`; throws std::runtime_error naming a file that
