@@ -55,10 +55,12 @@ void contact_results(const Model& model, const std::vector<PairState>& pairs, co
 void add_contact_reactions(const std::vector<std::unique_ptr<DofMap>>& dofs, const std::vector<ConstraintRow>& rows,
                            const std::vector<int>& kept, const Eigen::VectorXd& lambda,
                            const std::vector<Eigen::VectorXd>& friction, Results& results) {
-  for (size_t b = 0; b < friction.size(); ++b)
-    for (Eigen::Index i = 0; i < friction[b].size(); ++i)
-      if (friction[b][i] != 0 && dofs[b]->equation(static_cast<int>(i) / dofs[b]->dim(), i % dofs[b]->dim()) < 0)
+  for (size_t b = 0; b < friction.size(); ++b) {
+    const int dim = dofs[b]->dim();
+    for (int i = 0; i < static_cast<int>(friction[b].size()); ++i)
+      if (friction[b][i] != 0 && dofs[b]->equation(i / dim, i % dim) < 0)
         results.bodies[b].nodal_force[i] -= friction[b][i];
+  }
   for (size_t r = 0; r < kept.size(); ++r)
     for (const ConstraintTerm& t : rows[kept[r]].terms) {
       if (dofs[t.body]->equation(t.node, t.comp) >= 0) continue;

@@ -118,7 +118,8 @@ const ObjectSchema& rolling_process_schema() {
          f.doc =
              "roll–slab friction: sticking (the slab method's sticking friction: a point holds to the roll "
              "until its friction stress reaches the slab's shear yield stress k = σ_0/√3, then slips with k), "
-             "coulomb (μ = friction_coefficient, capped at k) or frictionless";
+             "coulomb (μ = friction_coefficient, capped at k) or frictionless. A pass whose μ is below tan α (the bite "
+             "angle: cos α = 1 − Δh / 2R), or frictionless, ends `no_bite` before anything is solved";
          return f;
        }(),
        [] {
@@ -286,6 +287,8 @@ std::optional<RollingPass> rolling_pass(const json& project, const Model& model)
   pass.exit_thickness = exit_thickness(p);
   pass.width = p.at("slab_width");
   pass.travel = p.at("travel");
+  const std::string friction = p.at("friction");
+  if (friction != "sticking") pass.friction = friction == "coulomb" ? p.at("friction_coefficient").get<double>() : 0.0;
   return pass;
 }
 

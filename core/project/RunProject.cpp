@@ -70,6 +70,12 @@ std::vector<std::string> analysis_names() {
 
 Results run_project(const Project& project, const Model& model, AnalysisObserver* observer) {
   const std::string type = analysis_type(project);
+  if (model.rolling)  // a pass the roll cannot bite is an answer, not a solver failure: nothing is solved
+    if (std::string no_bite = bite_refusal(*model.rolling); !no_bite.empty()) {
+      Results r;
+      r.status = {Status::no_bite, Reason::none, std::move(no_bite)};
+      return r;
+    }
   for (const AnalysisInfo& info : analysis_registry())
     if (info.name == type) {
       Results r = info.run(project, model, observer);

@@ -14,6 +14,8 @@ const char* to_string(Status s) {
       return "cancelled";
     case Status::error:
       return "error";
+    case Status::no_bite:
+      return "no_bite";
   }
   return "error";
 }
@@ -46,6 +48,8 @@ int exit_code(Status s) {
       return 4;
     case Status::cancelled:
       return 5;
+    case Status::no_bite:
+      return 6;
   }
   return 1;
 }

@@ -11,6 +11,7 @@ enum class Status {
   diverged,       // the iteration ran away (NaN, growing residuals); no result
   cancelled,      // stopped on request; the fields are those of the last iterate
   error,          // the model cannot be solved as given (invalid input, a singular system)
+  no_bite,        // a rolling pass whose friction cannot draw the slab in (μ below tan α): nothing was solved
 };
 
 enum class Reason {
@@ -29,13 +30,13 @@ struct RunStatus {
   bool ok() const { return status == Status::converged; }
 };
 
-/// "converged", "not_converged", "diverged", "cancelled", "error" — the words written to summary.json.
+/// "converged", "not_converged", "diverged", "cancelled", "error", "no_bite" — the words written to summary.json.
 const char* to_string(Status s);
 /// "", "iteration_limit", "breakdown", "round_off", "active_set_cycling".
 const char* to_string(Reason r);
 
 /// Exit code of `rollsim run` for a run that ended with `s`: 0 converged, 2 error (invalid input or model),
-/// 3 not_converged, 4 diverged, 5 cancelled (1 is kept for an internal failure of the program itself).
+/// 3 not_converged, 4 diverged, 5 cancelled, 6 no_bite (1 is kept for an internal failure of the program itself).
 int exit_code(Status s);
 
 }  // namespace rollsim

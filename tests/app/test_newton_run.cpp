@@ -157,6 +157,19 @@ TEST(NewtonRun, BadPlasticityInputIsRefusedWithItsPath) {
   }
 }
 
+TEST(NewtonRun, RollingPassThatCannotBiteExitsSix) {
+  json pass = testing_support::paper_pass_2d(1.0, 1.0);
+  pass["process"]["friction"] = "coulomb";
+  pass["process"]["friction_coefficient"] = 0.15;
+  const std::string dir = make_temp_dir("nobite");
+  write_text(dir + "/p.json", pass.dump(1));
+  const auto result = run_rollsim({"run", dir + "/p.json", "--out", dir + "/out"});
+  EXPECT_EQ(result.exit_code, 6) << result.err;
+  EXPECT_TRUE(contains(result.err, "rollsim: no_bite: the roll cannot draw the slab in")) << result.err;
+  const json summary = json::parse(read_text(dir + "/out/summary.json"));
+  EXPECT_EQ(summary["status"], "no_bite");
+}
+
 TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {
   // the first 2 mm of the paper's plane-strain pass (coarse): roll force, torque and forward slip on stderr, the
   // increments in rolling.csv, the arc in contact_profile.csv, results.rolling with its units in summary.json

@@ -75,3 +75,27 @@ TEST(RollingPass, RigidRollIsDrivenWithoutFactoringAndCarriesTheContactForce) {
               0.15 * elastic_last.roll_torque / elastic_last.roll_force);
   EXPECT_NEAR(rigid_last.exit_thickness, 86.8, 0.005 * 86.8);
 }
+
+// A pass whose friction cannot draw the slab in is answered `no_bite` before anything is solved, with the numbers:
+// the paper's draft (13.2 mm on R 300 mm) has a bite angle of 12.04°, tan α = 0.213; μ = 0.1 bites at most 2.98 mm.
+// Frictionless cannot bite at all; μ = 0.3 and sticking friction bite.
+TEST(RollingPass, FrictionBelowTheBiteAngleIsNoBite) {
+  nlohmann::json low = testing_support::paper_pass_2d(1.0, 1.0);
+  low["process"]["friction"] = "coulomb";
+  low["process"]["friction_coefficient"] = 0.1;
+  const Results r = testing_support::run_json(low);
+  EXPECT_EQ(r.status.status, Status::no_bite);
+  EXPECT_NE(r.status.message.find("0.1 is below tan α = 0.213"), std::string::npos) << r.status.message;
+  EXPECT_NE(r.status.message.find("α = 12.04°"), std::string::npos) << r.status.message;
+  EXPECT_NE(r.status.message.find("at most 2.98 mm"), std::string::npos) << r.status.message;
+  EXPECT_TRUE(r.increments.empty());
+  nlohmann::json frictionless = low;
+  frictionless["process"]["friction"] = "frictionless";
+  frictionless["process"].erase("friction_coefficient");
+  EXPECT_EQ(testing_support::run_json(frictionless).status.status, Status::no_bite);
+  nlohmann::json enough = low;
+  enough["process"]["friction_coefficient"] = 0.3;
+  const Results bites = testing_support::run_json(enough);
+  EXPECT_TRUE(bites.status.ok()) << bites.status.message;
+  EXPECT_EQ(bites.rolling->bite_increment, 1);
+}
