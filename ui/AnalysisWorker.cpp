@@ -64,6 +64,10 @@ class ForwardingObserver final : public AnalysisObserver {
     flush();
     emit w_.activeSetIteration(iteration, changed);
   }
+  void on_rolling_increment(double travel, double roll_force, double roll_torque) override {
+    flush();
+    emit w_.rollingIncrement(travel, roll_force, roll_torque);
+  }
   void on_progress(double fraction) override {
     flush();
     advance(kIncrementsBegin + (kIncrementsEnd - kIncrementsBegin) * fraction);

@@ -72,6 +72,9 @@ class AnalysisWorker : public QObject {
   void factorized(const QString& group);
   /// Frictionless contact: active-set iteration `iteration` changed `changed` statuses.
   void activeSetIteration(int iteration, int changed);
+  /// A rolling pass's increment is complete (AnalysisObserver::on_rolling_increment): travel [mm], roll force and
+  /// torque (2D: per unit width, N/mm and N·mm/mm).
+  void rollingIncrement(double travel, double rollForce, double rollTorque);
   /// Fraction of the run done, in [0, 1].
   void progress(double fraction);
   /// The run ended (always emitted once per start, on the GUI thread, after the worker thread has ended).

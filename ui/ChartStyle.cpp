@@ -25,13 +25,18 @@ QFont small_font(bool bold = false) {
 QChart* make_compact_chart(const QString& title) {
   auto* c = new QChart;
   c->setTitle(title);
-  c->setTitleFont(small_font(true));
   c->legend()->hide();
+  make_compact(c);
+  return c;
+}
+
+void make_compact(QChart* c) {
+  c->setTitleFont(small_font(true));
   c->legend()->setFont(small_font());
   c->setMargins(QMargins(2, 2, 2, 2));
   c->layout()->setContentsMargins(0, 0, 0, 0);
   c->setBackgroundRoundness(0);
-  return c;
+  for (QAbstractAxis* a : c->axes()) style_axis(a, a->titleText());
 }
 
 void set_integer_range(QValueAxis* axis, double max, int ticks) {

@@ -13,6 +13,9 @@ namespace rollsim::ui {
 
 /// A new chart titled `title`, legend hidden, small margins.
 QtCharts::QChart* make_compact_chart(const QString& title);
+/// The compact look (small fonts and margins, every axis styled with its own title) on a chart built elsewhere; the
+/// legend stays as it is.
+void make_compact(QtCharts::QChart* chart);
 /// Small label and title fonts on `axis`, titled `title` (empty: no title).
 void style_axis(QtCharts::QAbstractAxis* axis, const QString& title);
 /// Range [0, ≥ max] with about `ticks` ticks at integer multiples of 1, 2 or 5 × 10^k ("%d" labels).

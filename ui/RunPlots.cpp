@@ -6,19 +6,26 @@
 #include "AnalysisWorker.h"
 #include "FactorizationPlot.h"
 #include "ResidualPlot.h"
+#include "RollingPlot.h"
 #include "SolvePlot.h"
 
 namespace rollsim::ui {
 
 RunPlots::RunPlots(QWidget* parent)
-    : QWidget(parent), residuals_(new ResidualPlot), solves_(new SolvePlot), factorizations_(new FactorizationPlot) {
+    : QWidget(parent),
+      residuals_(new ResidualPlot),
+      solves_(new SolvePlot),
+      factorizations_(new FactorizationPlot),
+      rolling_(new RollingPlot) {
   auto* split = new QSplitter(Qt::Horizontal, this);
   split->addWidget(residuals_);
   split->addWidget(solves_);
   split->addWidget(factorizations_);
+  split->addWidget(rolling_);
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 1);
   split->setStretchFactor(2, 1);
+  split->setStretchFactor(3, 4);
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(split);
@@ -33,10 +40,18 @@ void RunPlots::watch(const AnalysisWorker* worker) {
   connect(worker, &AnalysisWorker::newtonIteration, this, &RunPlots::add_newton_iteration);
   connect(worker, &AnalysisWorker::solveFinished, this, &RunPlots::end_solve);
   connect(worker, &AnalysisWorker::factorized, this, &RunPlots::add_factorization);
+  connect(worker, &AnalysisWorker::rollingIncrement, rolling_, &RollingPlot::add_increment);
+  connect(worker, &AnalysisWorker::finished, this, &RunPlots::end_run);
 }
 
-void RunPlots::clear() {
+void RunPlots::end_run(const RunOutcome& outcome) {
+  if (outcome.results && outcome.model && outcome.results->rolling)
+    rolling_->set_results(*outcome.results->rolling, outcome.model->dim);
+}
+
+void RunPlots::clear(int dim) {
   timer_.stop();
+  rolling_->clear(dim);
   series_.clear();
   residuals_->clear();
   solves_->clear();

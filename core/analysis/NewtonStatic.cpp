@@ -12,6 +12,7 @@
 #include "analysis/GroupLayout.h"
 #include "analysis/LinearStatic.h"
 #include "analysis/Recovery.h"
+#include "analysis/RollingMeasures.h"
 #include "contact/ContactConstraints.h"
 #include "contact/Friction.h"
 #include "solve/Factorization.h"
@@ -95,6 +96,8 @@ class NewtonRun {
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
+  /// A rolling pass: the observer hears the last completed increment's roll force and torque.
+  void tell_rolling(const Results& so_far) const;
 
   const Model& model_;
   SolverStrategy& solver_;
@@ -160,6 +163,13 @@ void NewtonRun::add_friction(const std::vector<size_t>& which) {
   if (load.empty()) return;
   for (size_t b = 0; b < load.size(); ++b) load[b] = layout_.body_dofs()[b]->restrict_to_free(load[b]);
   layout_.add_body_load(load, which);
+}
+
+void NewtonRun::tell_rolling(const Results& so_far) const {
+  const RollingResults m = measure_rolling(model_, so_far);
+  if (m.increments.empty()) return;
+  const RollingIncrement& last = m.increments.back();
+  obs_.on_rolling_increment(last.travel, last.roll_force, last.roll_torque);
 }
 
 std::vector<double> NewtonRun::group_residuals() const {
@@ -400,6 +410,7 @@ Results NewtonRun::run() {
     }
     res.increments.push_back(std::move(inc));
     obs_.on_increment_end(increment, increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9)));
+    if (model_.rolling && lf < 1.0) tell_rolling(res);
     obs_.on_progress(lf);
     if (attempt_no == 0) step = std::min(2 * step, nominal);  // grow back after a cut-back once a step converges
     attempt_no = 0;

@@ -65,6 +65,9 @@ class AnalysisObserver {
   /// Active-set iteration `iteration` (1-based within the increment; with one increment, its linear solve) changed
   /// `changed` contact statuses (0: settled).
   virtual void on_active_set_iteration(int /*iteration*/, int /*changed*/) {}
+  /// An increment of a rolling pass is complete (not the last: its fields come with the results): roll travel so far
+  /// [length], roll force [force] and torque [force · length] of the whole slab (2D: per unit width).
+  virtual void on_rolling_increment(double /*travel*/, double /*roll_force*/, double /*roll_torque*/) {}
   /// Fraction of the increments done, in [0, 1].
   virtual void on_progress(double /*fraction*/) {}
   /// True asks the analysis to stop at the next safe point: between CG iterations, before every linear solve

@@ -3,7 +3,7 @@
 // Cancel ends a run "cancelled", the window's screenshot is not blank, and after a run of three load increments the
 // view toolbar's increment selector offers 1…3 and recolours the view with the chosen increment's fields; after a
 // Newton run of a plastic block the view colours its elements by equivalent plastic strain and the log says which
-// groups each iteration refactored and why.
+// groups each iteration refactored and why; a rolling pass plots its roll force and torque as it runs, and the arc.
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
 #include <QLabel>
@@ -25,7 +25,9 @@
 #include "ProjectTreePanel.h"
 #include "PropertyEditor.h"
 #include "ResidualPlot.h"
+#include "RollingPlot.h"
 #include "RunPanel.h"
+#include "RunPlots.h"
 
 using namespace rollsim;
 using namespace rollsim::ui;
@@ -174,6 +176,34 @@ class TestMainWindow : public QObject {
     w.view()->set_color_by(plastic);
     QCOMPARE(w.view()->color_by(), plastic);
     QVERIFY2(grey_spread(w.screenshot()) > 10, "the window screenshot is blank");
+  }
+
+  void rolling_pass_plots_force_torque_and_the_arc() {
+    // the window's default project, the paper's pass over its first 6 mm: the force/torque chart grows with every
+    // increment while it runs, and shows every increment and the arc once it ends
+    MainWindow w;
+    w.new_project();
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    RollingPlot* rolling = w.plot()->rolling_plot();
+    QVERIFY(!rolling->isVisible());  // nothing yet
+    QSignalSpy live(w.worker(), &AnalysisWorker::rollingIncrement);
+    QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
+    QVERIFY(w.start_run());
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(w.run_status(), QStringLiteral("converged"));
+    QVERIFY(live.count() >= 5);  // every increment but the last, as it completed
+    for (const QList<QVariant>& args : live) {
+      QVERIFY(args.at(0).toDouble() > 0 && args.at(0).toDouble() < 6);  // travel [mm]
+      QVERIFY(args.at(1).toDouble() > 4000);                            // roll force [N/mm]
+    }
+    const auto outcome = finished.takeFirst().at(0).value<RunOutcome>();
+    QVERIFY(rolling->isVisible());
+    QCOMPARE(rolling->increments(), static_cast<int>(outcome.results->rolling->increments.size()));
+    QCOMPARE(rolling->increments(), live.count() + 1);
+    QVERIFY(rolling->findChild<QWidget*>(QStringLiteral("rollingArc"))->isVisible());
+    w.plot()->clear(2);
+    QVERIFY(!rolling->isVisible());
   }
 
   void cancel_ends_the_run_cancelled() {
