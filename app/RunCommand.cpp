@@ -8,6 +8,7 @@
 #include "PvdWriter.h"
 #include "VtuWriter.h"
 #include "analysis/LinearStatic.h"
+#include "analysis/RollingTheory.h"
 #include "io/AtomicFile.h"
 #include "io/ConvergenceCsv.h"
 #include "io/OutputFolder.h"
@@ -164,14 +165,17 @@ namespace {
 /// they are steady (rolling.csv has every increment).
 std::string rolling_line(const Model& model, const RollingResults& r) {
   const RollingIncrement& s = r.steady;
+  const RollingTheory t = rolling_theory(*model.rolling);
   const bool plane = model.dim == 2;
-  char buf[400];
+  char buf[600];
   std::snprintf(buf, sizeof buf,
                 "rollsim: rolling: roll force %.4g %s, torque %.4g %s, forward slip %.2f %%, exit thickness %.3f mm "
-                "(%s; rolling.csv, contact_profile.csv and their PNG plots)\n",
+                "(%s; rolling.csv, contact_profile.csv and their PNG plots)\n"
+                "rollsim: rolling: Sims (sticking friction): roll force %.4g, torque %.4g, forward slip %.2f %%\n",
                 s.roll_force, plane ? "N/mm" : "N", s.roll_torque, plane ? "N·mm/mm" : "N·mm", 100 * s.forward_slip,
                 s.exit_thickness,
-                r.steady_state_increment ? "mean over the steady increments" : "last increment: not steady yet");
+                r.steady_state_increment ? "mean over the steady increments" : "last increment: not steady yet",
+                t.sims_force, t.sims_torque, 100 * t.sims_forward_slip);
   return buf;
 }
 }  // namespace
@@ -217,7 +221,7 @@ int run_command(const RunOptions& o) {
       write_file_atomically(dir / "rolling.csv", rolling_csv(*results.rolling));
       write_file_atomically(dir / "contact_profile.csv", contact_profile_csv(*results.rolling));
 #ifdef ROLLSIM_HAVE_GUI
-      ui::write_rolling_plots(dir, *results.rolling, model.dim);  // rolling.png, contact_profile.png
+      ui::write_rolling_plots(dir, *results.rolling, model.dim, rolling_theory(*model.rolling));
 #endif
     }
     results.timing.total_s = wall.seconds();

@@ -9,6 +9,7 @@
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QPainter>
+#include <QPen>
 #include <QScatterSeries>
 #include <QValueAxis>
 #include <algorithm>
@@ -60,6 +61,24 @@ void add_line(QChart* c, const QString& name, const std::vector<QPointF>& points
   y->applyNiceNumbers();
 }
 
+/// A dashed horizontal line at `value` over [from, to] (a closed form beside the measured line).
+void add_reference(QChart* c, const QString& name, std::pair<double, double> range, double value, QValueAxis* x,
+                   QValueAxis* y, QColor color) {
+  auto* line = new QLineSeries;
+  line->setName(name);
+  QPen pen(color);
+  pen.setStyle(Qt::DashLine);
+  pen.setWidthF(1.5);
+  line->setPen(pen);
+  line->append(range.first, value);
+  line->append(range.second, value);
+  c->addSeries(line);
+  line->attachAxis(x);
+  line->attachAxis(y);
+  y->setRange(std::min(y->min(), value * 1.1), std::max(y->max(), value * 1.1));
+  y->applyNiceNumbers();
+}
+
 QChart* new_chart(const QString& title) {
   auto* c = new QChart;
   c->setTitle(title);
@@ -74,7 +93,7 @@ QString increment_label(int increment) {
 
 }  // namespace
 
-QChart* make_history_chart(const RollingResults& r, int dim) {
+QChart* make_history_chart(const RollingResults& r, int dim, const RollingTheory* sims) {
   const bool plane = dim == 2;
   QChart* c = new_chart(QStringLiteral("Roll force and torque against travel (bite: increment %1, steady state: %2)")
                             .arg(increment_label(r.bite_increment), increment_label(r.steady_state_increment)));
@@ -90,6 +109,12 @@ QChart* make_history_chart(const RollingResults& r, int dim) {
   }
   add_line(c, QStringLiteral("roll force"), force, x, f, force_color);
   add_line(c, QStringLiteral("torque"), torque, x, t, torque_color);
+  if (sims && !r.increments.empty()) {
+    const double end = r.increments.back().travel;
+    add_reference(c, QStringLiteral("Sims's force"), {0, end}, sims->sims_force * 1e-3, x, f, force_color);
+    add_reference(c, QStringLiteral("Sims's torque"), {0, end}, sims->sims_torque * (plane ? 1e-3 : 1e-6), x, t,
+                  torque_color);
+  }
   return c;
 }
 
@@ -127,7 +152,8 @@ QByteArray render_png(QChart* chart, QSize size) {
   return bytes;
 }
 
-void write_rolling_plots(const std::filesystem::path& dir, const RollingResults& r, int dim) {
+void write_rolling_plots(const std::filesystem::path& dir, const RollingResults& r, int dim,
+                         const RollingTheory& sims) {
   std::unique_ptr<QApplication> own;
   if (!QApplication::instance()) {  // the batch command: no display is needed nor used
     qputenv("QT_QPA_PLATFORM", "offscreen");
@@ -141,7 +167,7 @@ void write_rolling_plots(const std::filesystem::path& dir, const RollingResults&
     const QByteArray png = render_png(chart, size);
     write_file_atomically(dir / file, std::string(png.constData(), static_cast<size_t>(png.size())));
   };
-  write("rolling.png", make_history_chart(r, dim));
+  write("rolling.png", make_history_chart(r, dim, &sims));
   write("contact_profile.png", make_arc_chart(r.profile));
 }
 

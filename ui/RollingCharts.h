@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/RollingResults.h"
+#include "analysis/RollingTheory.h"
 
 namespace QtCharts {
 class QChart;
@@ -16,14 +17,14 @@ class QChart;
 namespace rollsim::ui {
 
 /// Roll force (left axis) and torque (right axis) against roll travel; the bite and steady-state increments in the
-/// title. `dim` 2: per unit width.
-QtCharts::QChart* make_history_chart(const RollingResults& r, int dim);
+/// title; Sims's force and torque dashed when `sims` is given. `dim` 2: per unit width.
+QtCharts::QChart* make_history_chart(const RollingResults& r, int dim, const RollingTheory* sims = nullptr);
 /// Pressure and friction stress against x along the arc of the last increment (entry left, exit plane at 0).
 QtCharts::QChart* make_arc_chart(const std::vector<ArcPoint>& arc);
 /// `chart` rendered to PNG bytes of `size` pixels on white; the chart is deleted.
 QByteArray render_png(QtCharts::QChart* chart, QSize size);
 /// rolling.png and contact_profile.png of a pass into `dir`, each written atomically. Runs its own offscreen
 /// QApplication when none exists (the batch command). Throws std::runtime_error when a file cannot be written.
-void write_rolling_plots(const std::filesystem::path& dir, const RollingResults& r, int dim);
+void write_rolling_plots(const std::filesystem::path& dir, const RollingResults& r, int dim, const RollingTheory& sims);
 
 }  // namespace rollsim::ui

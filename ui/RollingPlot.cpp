@@ -56,10 +56,10 @@ QString RollingPlot::history_title() const {
   return tr("roll %1; steady: %2").arg(units, steady ? tr("from increment %1").arg(steady) : tr("not yet"));
 }
 
-void RollingPlot::set_results(const RollingResults& pass, int dim) {
+void RollingPlot::set_results(const RollingResults& pass, int dim, const RollingTheory& sims) {
   pass_ = pass;
   dim_ = dim;
-  show_chart(history_, make_history_chart(pass_, dim_), history_title());
+  show_chart(history_, make_history_chart(pass_, dim_, &sims), history_title());
   if (!pass_.profile.empty())
     show_chart(arc_, make_arc_chart(pass_.profile), tr("pressure, friction [MPa] along the arc"));
 }

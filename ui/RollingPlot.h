@@ -5,6 +5,7 @@
 #include <QWidget>
 
 #include "analysis/RollingResults.h"
+#include "analysis/RollingTheory.h"
 
 namespace QtCharts {
 class QChart;
@@ -27,8 +28,9 @@ class RollingPlot : public QWidget {
  public slots:
   /// One more increment of the running pass (2D: per unit width).
   void add_increment(double travel, double roll_force, double roll_torque);
-  /// The pass as it ended: every increment, the bite and steady state, the arc of the last increment.
-  void set_results(const rollsim::RollingResults& pass, int dim);
+  /// The pass as it ended: every increment, the bite and steady state, the arc of the last increment, and Sims's
+  /// force and torque beside them.
+  void set_results(const rollsim::RollingResults& pass, int dim, const rollsim::RollingTheory& sims);
 
  private:
   void show_chart(QtCharts::QChartView* view, QtCharts::QChart* chart, const QString& title);

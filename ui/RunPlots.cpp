@@ -46,7 +46,7 @@ void RunPlots::watch(const AnalysisWorker* worker) {
 
 void RunPlots::end_run(const RunOutcome& outcome) {
   if (outcome.results && outcome.model && outcome.results->rolling)
-    rolling_->set_results(*outcome.results->rolling, outcome.model->dim);
+    rolling_->set_results(*outcome.results->rolling, outcome.model->dim, rolling_theory(*outcome.model->rolling));
 }
 
 void RunPlots::clear(int dim) {

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "analysis/Recovery.h"
+#include "analysis/RollingTheory.h"
 #include "io/OutputFields.h"
 
 namespace rollsim {
@@ -62,6 +63,19 @@ json results_section(const Model& m, const Results& r) {
   return out;
 }
 
+// The closed forms beside the pass's values (analysis/RollingTheory), in the same units; angles in degrees.
+json theory_section(const RollingPass& pass) {
+  const RollingTheory t = rolling_theory(pass);
+  return {{"sims_roll_force", t.sims_force},
+          {"sims_roll_torque", t.sims_torque},
+          {"sims_forward_slip", t.sims_forward_slip},
+          {"sims_neutral_angle", t.neutral_angle * 180 / M_PI},
+          {"friction_hill_roll_force", t.friction_hill_force},
+          {"bite_angle", t.bite_angle * 180 / M_PI},
+          {"projected_contact_length", t.contact_length},
+          {"hitchcock_radius_ratio", t.hitchcock_radius_ratio}};
+}
+
 // The pass's steady (or last) values, where it bit and settled, with units (the process works in mm and MPa).
 json rolling_section(const Model& m, const RollingResults& r) {
   const bool plane = m.dim == 2;
@@ -81,7 +95,8 @@ json rolling_section(const Model& m, const RollingResults& r) {
             {"exit_thickness", "mm"},
             {"spread", "mm"},
             {"forward_slip", "-"}}},
-          {"values", r.steady_state_increment ? "mean over the steady increments" : "last increment (not steady)"}};
+          {"values", r.steady_state_increment ? "mean over the steady increments" : "last increment (not steady)"},
+          {"theory", theory_section(*m.rolling)}};
 }
 
 // One entry per completed load increment: its load factor, solves, CG iterations and contact resultants.

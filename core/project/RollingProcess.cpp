@@ -287,6 +287,8 @@ std::optional<RollingPass> rolling_pass(const json& project, const Model& model)
   pass.exit_thickness = exit_thickness(p);
   pass.width = p.at("slab_width");
   pass.travel = p.at("travel");
+  pass.flow_stress = p.at("slab_yield_stress");
+  if (p.at("roll") == "elastic") pass.roll_E = p.at("roll_E"), pass.roll_nu = p.at("roll_nu");
   const std::string friction = p.at("friction");
   if (friction != "sticking") pass.friction = friction == "coulomb" ? p.at("friction_coefficient").get<double>() : 0.0;
   return pass;

@@ -188,6 +188,12 @@ TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {
   EXPECT_GT(rolling["roll_force"].get<double>(), 4000.0);
   EXPECT_EQ(rolling["units"]["roll_force"], "N/mm (per unit width)");
   EXPECT_EQ(rolling["bite_increment"], 1);
+  // the closed forms beside (analysis/RollingTheory): Sims's 6.78 MN/m and 213 kN·m/m, printed and in the summary
+  EXPECT_TRUE(
+      contains(r.result.err, "Sims (sticking friction): roll force 6781, torque 2.127e+05, forward slip 2.47 %"))
+      << r.result.err;
+  EXPECT_NEAR(rolling["theory"]["sims_roll_force"].get<double>(), 6781, 1);
+  EXPECT_NEAR(rolling["theory"]["bite_angle"].get<double>(), 12.04, 0.01);
   const std::string table = read_text(r.out + "/rolling.csv");
   EXPECT_TRUE(contains(table, "increment,travel,roll_force,roll_torque,contact_length,exit_thickness")) << table;
   EXPECT_GE(std::count(table.begin(), table.end(), '\n'), 3);

@@ -1,0 +1,24 @@
+#pragma once
+// The closed forms a rolling pass is checked against (docs/VALIDATION.md), computed from the pass's geometry and
+// the slab's flow stress: Sims (1954) for roll force, torque and forward slip with sticking friction, the friction-
+// hill estimate of a homogeneously compressed slab with sticking friction, and Hitchcock's flattened roll radius
+// (1935). Plane strain, whole slab thicknesses h0 → h1 (two rolls), per unit width; 3D: times the slab's width.
+#include "model/RollingPass.h"
+
+namespace rollsim {
+
+struct RollingTheory {
+  double bite_angle = 0;              // α, cos α = 1 − Δh / 2R [rad]
+  double contact_length = 0;          // projected arc L = √(R Δh) [length]
+  double neutral_angle = 0;           // Sims's φ_n [rad]
+  double sims_force = 0;              // roll force 2k L Q_p [force (per unit width in 2D)]
+  double sims_torque = 0;             // torque per roll 2k R² (α/2 − φ_n) [force · length (per unit width in 2D)]
+  double sims_forward_slip = 0;       // h_n / h1 − 1, h_n = h1 + R φ_n² [-]
+  double friction_hill_force = 0;     // 2k L (1 + L / (4 h̄)), h̄ = (h0 + h1) / 2 [force (per unit width in 2D)]
+  double hitchcock_radius_ratio = 1;  // R′/R = 1 + 16 (1 − ν²) F_Sims / (π E Δh) (elastic roll; 1 for a rigid one)
+};
+
+/// The closed forms of `pass` (its geometry, the slab's flow stress, the roll's elasticity).
+RollingTheory rolling_theory(const RollingPass& pass);
+
+}  // namespace rollsim
