@@ -364,8 +364,10 @@ const ObjectSchema& solver_schema() {
 }
 
 Field newton_tolerance() {
-  Field f =
-      def(positive("tolerance", "-", "Newton: ‖r_k‖ / ‖r_1‖ of the out-of-balance force to converge a step"), 1e-8);
+  Field f = def(positive("tolerance", "-",
+                         "Newton: ‖r_k‖ / max(‖r_1‖, ‖r_2‖) of the out-of-balance force to converge a step (‖r_2‖: the "
+                         "scale of a step driven by a prescribed body alone)"),
+                1e-8);
   f.max = 1.0;
   f.max_exclusive = true;
   return f;
