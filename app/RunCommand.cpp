@@ -168,14 +168,14 @@ std::string rolling_line(const Model& model, const RollingResults& r) {
   const RollingTheory t = rolling_theory(*model.rolling);
   const bool plane = model.dim == 2;
   char buf[600];
-  std::snprintf(buf, sizeof buf,
-                "rollsim: rolling: roll force %.4g %s, torque %.4g %s, forward slip %.2f %%, exit thickness %.3f mm "
-                "(%s; rolling.csv, contact_profile.csv and their PNG plots)\n"
-                "rollsim: rolling: Sims (sticking friction): roll force %.4g, torque %.4g, forward slip %.2f %%\n",
-                s.roll_force, plane ? "N/mm" : "N", s.roll_torque, plane ? "N·mm/mm" : "N·mm", 100 * s.forward_slip,
-                s.exit_thickness,
-                r.steady_state_increment ? "mean over the steady increments" : "last increment: not steady yet",
-                t.sims_force, t.sims_torque, 100 * t.sims_forward_slip);
+  std::snprintf(
+      buf, sizeof buf,
+      "rollsim: rolling: roll force %.4g %s, torque %.4g %s, forward slip %.2f %%, exit thickness %.3f mm "
+      "(%s; rolling.csv, contact_profile.csv and their PNG plots)\n"
+      "rollsim: rolling: Sims (sticking friction): roll force %.4g %s, torque %.4g %s, forward slip %.2f %%\n",
+      s.roll_force, plane ? "N/mm" : "N", s.roll_torque, plane ? "N·mm/mm" : "N·mm", 100 * s.forward_slip,
+      s.exit_thickness, r.steady_state_increment ? "mean over the steady increments" : "last increment: not steady yet",
+      t.sims_force, plane ? "N/mm" : "N", t.sims_torque, plane ? "N·mm/mm" : "N·mm", 100 * t.sims_forward_slip);
   return buf;
 }
 }  // namespace

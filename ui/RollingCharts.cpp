@@ -13,6 +13,7 @@
 #include <QScatterSeries>
 #include <QValueAxis>
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 
 #include "io/AtomicFile.h"
@@ -155,8 +156,13 @@ QByteArray render_png(QChart* chart, QSize size) {
 void write_rolling_plots(const std::filesystem::path& dir, const RollingResults& r, int dim,
                          const RollingTheory& sims) {
   std::unique_ptr<QApplication> own;
+  QtMessageHandler previous = nullptr;
   if (!QApplication::instance()) {  // the batch command: no display is needed nor used
     qputenv("QT_QPA_PLATFORM", "offscreen");
+    // Qt's notes on its own set-up (no XDG_RUNTIME_DIR, fonts) are not the user's business in a batch run
+    previous = qInstallMessageHandler([](QtMsgType type, const QMessageLogContext&, const QString& msg) {
+      if (type == QtCriticalMsg || type == QtFatalMsg) std::fprintf(stderr, "rollsim: Qt: %s\n", qPrintable(msg));
+    });
     static int argc = 1;
     static char name[] = "rollsim";
     static char* argv[] = {name, nullptr};
@@ -169,6 +175,7 @@ void write_rolling_plots(const std::filesystem::path& dir, const RollingResults&
   };
   write("rolling.png", make_history_chart(r, dim, &sims));
   write("contact_profile.png", make_arc_chart(r.profile));
+  if (own) qInstallMessageHandler(previous);
 }
 
 }  // namespace rollsim::ui

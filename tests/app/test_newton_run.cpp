@@ -189,8 +189,8 @@ TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {
   EXPECT_EQ(rolling["units"]["roll_force"], "N/mm (per unit width)");
   EXPECT_EQ(rolling["bite_increment"], 1);
   // the closed forms beside (analysis/RollingTheory): Sims's 6.78 MN/m and 213 kN·m/m, printed and in the summary
-  EXPECT_TRUE(
-      contains(r.result.err, "Sims (sticking friction): roll force 6781, torque 2.127e+05, forward slip 2.47 %"))
+  EXPECT_TRUE(contains(r.result.err,
+                       "Sims (sticking friction): roll force 6781 N/mm, torque 2.127e+05 N·mm/mm, forward slip 2.47 %"))
       << r.result.err;
   EXPECT_NEAR(rolling["theory"]["sims_roll_force"].get<double>(), 6781, 1);
   EXPECT_NEAR(rolling["theory"]["bite_angle"].get<double>(), 12.04, 0.01);
