@@ -167,15 +167,21 @@ std::string rolling_line(const Model& model, const RollingResults& r) {
   const RollingIncrement& s = r.steady;
   const RollingTheory t = rolling_theory(*model.rolling);
   const bool plane = model.dim == 2;
-  char buf[600];
+  char state[120];
+  if (r.steady_state_increment)
+    std::snprintf(state, sizeof state, "mean over the steady increments");
+  else
+    std::snprintf(state, sizeof state, "last completed increment, %.4g mm of travel: not steady yet",
+                  r.increments.back().travel);
+  char buf[700];
   std::snprintf(
       buf, sizeof buf,
       "rollsim: rolling: roll force %.4g %s, torque %.4g %s, forward slip %.2f %%, exit thickness %.3f mm "
       "(%s; rolling.csv, contact_profile.csv and their PNG plots)\n"
       "rollsim: rolling: Sims (sticking friction): roll force %.4g %s, torque %.4g %s, forward slip %.2f %%\n",
       s.roll_force, plane ? "N/mm" : "N", s.roll_torque, plane ? "N·mm/mm" : "N·mm", 100 * s.forward_slip,
-      s.exit_thickness, r.steady_state_increment ? "mean over the steady increments" : "last increment: not steady yet",
-      t.sims_force, plane ? "N/mm" : "N", t.sims_torque, plane ? "N·mm/mm" : "N·mm", 100 * t.sims_forward_slip);
+      s.exit_thickness, state, t.sims_force, plane ? "N/mm" : "N", t.sims_torque, plane ? "N·mm/mm" : "N·mm",
+      100 * t.sims_forward_slip);
   return buf;
 }
 }  // namespace
@@ -230,7 +236,10 @@ int run_command(const RunOptions& o) {
     return invalid("cannot write the results into " + dir.string() + ": " + e.what());
   }
   const auto summary = (dir / "summary.json").string();
+  // a pass that stopped still says what it measured up to there (rolling.csv has every completed increment)
+  const bool measured = results.rolling && !results.rolling->increments.empty() && !o.quiet;
   if (!results.status.ok()) {
+    if (measured) std::cerr << rolling_line(model, *results.rolling);
     std::cerr << "rollsim: " << to_string(results.status.status) << ": " << results.status.message
               << " (summary written to " << summary << ")\n";
     return exit_code(results.status.status);
@@ -238,7 +247,7 @@ int run_command(const RunOptions& o) {
   if (!o.quiet)
     std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s, %.3f s; results in %s/\n", project.name().c_str(),
                  results.dofs, info.mode.c_str(), results.timing.total_s, dir.string().c_str());
-  if (results.rolling && !o.quiet) std::cerr << rolling_line(model, *results.rolling);
+  if (measured) std::cerr << rolling_line(model, *results.rolling);
   std::cout << summary << "\n";
   return 0;
 }

@@ -129,7 +129,8 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
   const double symmetry = model.dim == 3 ? 2.0 : 1.0;  // 3D models half the width
   const double contact = std::sqrt(pass.radius * (pass.entry_thickness - pass.exit_thickness));
   RollingResults out;
-  double front_before = 0, rear_before = 0, travel_before = 0;
+  double rear_before = 0, travel_before = 0;
+  std::vector<std::pair<double, double>> fronts{{0.0, 0.0}};  // (travel, front advance) from the start
   for (const IncrementResults& inc : results.increments) {
     if (inc.bodies.size() != model.bodies.size()) continue;
     RollingIncrement r;
@@ -143,11 +144,17 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
     const double front = mean_advance(slab, slab.node_sets.at("xmax"), u);
     const double rear = mean_advance(slab, slab.node_sets.at("xmin"), u);
     const double dt = r.travel - travel_before;
-    r.forward_slip = dt > 0 ? (front - front_before) / dt - 1 : 0.0;
+    // over the last tenth of a contact length of travel (from the start before that): a cut-back step's own advance
+    // is mostly the round-off of a tiny travel
+    size_t j = 0;
+    while (j + 1 < fronts.size() && fronts[j + 1].first <= r.travel - 0.1 * contact) ++j;
+    const double span = r.travel - fronts[j].first;
+    r.forward_slip = span > 0 ? (front - fronts[j].second) / span - 1 : 0.0;
+    fronts.emplace_back(r.travel, front);
     // the roll bites once the rear end follows: it moves in by half of what the roll's travel would draw in
     if (!out.bite_increment && dt > 0 && rear - rear_before >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
       out.bite_increment = static_cast<int>(out.increments.size()) + 1;
-    front_before = front, rear_before = rear, travel_before = r.travel;
+    rear_before = rear, travel_before = r.travel;
     out.increments.push_back(r);
   }
   if (out.increments.empty()) return out;

@@ -12,8 +12,10 @@ struct RollingIncrement {
   double roll_torque = 0;     // torque on the roll's hub about its axis that drives it [force · length]
   double contact_length = 0;  // arc of contact (2D) [length] / contact area (3D) [length²]
   double exit_thickness = 0;  // whole slab thickness just past the exit plane (0: nothing there yet) [length]
-  double forward_slip = 0;    // slab exit speed / roll surface speed − 1 over this increment [-]
-  double spread = 0;          // 3D: whole width past the exit − entry width (0 in 2D) [length]
+  // slab front's advance / roll surface travel − 1 over the last tenth of a nominal contact length √(R Δh) of travel
+  // (from the start before that) [-]
+  double forward_slip = 0;
+  double spread = 0;  // 3D: whole width past the exit − entry width (0 in 2D) [length]
 };
 
 /// One slab node in contact along the arc, in the rolling plane (3D: every node of the contact zone, across the

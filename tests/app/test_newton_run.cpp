@@ -182,7 +182,7 @@ TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {
   ASSERT_EQ(r.result.exit_code, 0) << r.result.err;
   EXPECT_TRUE(contains(r.result.err, "rollsim: rolling: roll force ")) << r.result.err;
   EXPECT_TRUE(contains(r.result.err, "N/mm, torque ")) << r.result.err;
-  EXPECT_TRUE(contains(r.result.err, "last increment: not steady yet")) << r.result.err;
+  EXPECT_TRUE(contains(r.result.err, "last completed increment, 2 mm of travel: not steady yet")) << r.result.err;
   const json summary = json::parse(read_text(r.out + "/summary.json"));
   const json& rolling = summary["results"]["rolling"];
   EXPECT_GT(rolling["roll_force"].get<double>(), 4000.0);
