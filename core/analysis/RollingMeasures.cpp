@@ -1,8 +1,9 @@
 #include "analysis/RollingMeasures.h"
 
+#include "analysis/RollingTheory.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace rollsim {
 
@@ -108,26 +109,11 @@ int steady_state_from(const std::vector<RollingIncrement>& h, double window) {
   return 0;
 }
 
-std::string bite_refusal(const RollingPass& pass) {
-  if (pass.friction < 0) return "";
-  const double R = pass.radius, draft = pass.entry_thickness - pass.exit_thickness;
-  const double alpha = std::acos(1 - draft / (2 * R)), tan_alpha = std::tan(alpha);
-  if (pass.friction >= tan_alpha) return "";
-  const double largest = 2 * R * (1 - std::cos(std::atan(pass.friction)));
-  char buf[400];
-  std::snprintf(buf, sizeof buf,
-                "the roll cannot draw the slab in — friction coefficient %.3g is below tan α = %.3f (bite "
-                "angle α = %.2f°: cos α = 1 − Δh / 2R with draft Δh = %.4g mm, R = %.4g mm); raise the friction to "
-                "%.3f or more, or take a draft of at most %.3g mm",
-                pass.friction, tan_alpha, alpha * 180 / M_PI, draft, R, tan_alpha, largest);
-  return buf;
-}
-
 RollingResults measure_rolling(const Model& model, const Results& results) {
   const RollingPass& pass = *model.rolling;
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
-  const double symmetry = model.dim == 3 ? 2.0 : 1.0;  // 3D models half the width
-  const double contact = std::sqrt(pass.radius * (pass.entry_thickness - pass.exit_thickness));
+  const double symmetry = model.dim == 3 ? 2.0 : 1.0;          // 3D models half the width
+  const double contact = rolling_theory(pass).contact_length;  // √(R Δh)
   RollingResults out;
   double rear_before = 0, travel_before = 0;
   std::vector<std::pair<double, double>> fronts{{0.0, 0.0}};  // (travel, front advance) from the start

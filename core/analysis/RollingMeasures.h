@@ -3,8 +3,6 @@
 // the hub's reactions, contact length from the contact pair, exit thickness and spread from the slab's nodes past
 // the exit plane, forward slip from the slab front's advance against the roll's surface travel; then where the roll
 // bit and where force and torque settled, and the pressure and shear along the arc at the last increment.
-#include <string>
-
 #include "analysis/Results.h"
 #include "model/Model.h"
 
@@ -17,11 +15,6 @@ constexpr double kSteadyTolerance = 0.02;
 /// The first increment (1-based) whose roll force and torque, and those of every increment over the `window` of
 /// travel before it, agree within kSteadyTolerance of its own; 0 when none does (or the travel is shorter).
 int steady_state_from(const std::vector<RollingIncrement>& history, double window);
-
-/// Whether the roll can draw the slab in (the bite condition μ ≥ tan α, cos α = 1 − Δh / 2R): "" when it can
-/// (sticking friction always can), else the refusal with the numbers — μ, tan α, α, and the largest draft this μ
-/// bites, 2R (1 − cos(atan μ)).
-std::string bite_refusal(const RollingPass& pass);
 
 /// The measures of `results` (its increments' fields) for the pass `model.rolling` (which must be set).
 RollingResults measure_rolling(const Model& model, const Results& results);

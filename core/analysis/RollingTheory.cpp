@@ -1,6 +1,7 @@
 #include "analysis/RollingTheory.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace rollsim {
 
@@ -25,6 +26,21 @@ RollingTheory rolling_theory(const RollingPass& pass) {
     t.hitchcock_radius_ratio =
         1 + 16 * (1 - pass.roll_nu * pass.roll_nu) * (t.sims_force / width) / (M_PI * pass.roll_E * draft);
   return t;
+}
+
+std::string bite_refusal(const RollingPass& pass) {
+  if (pass.friction < 0) return "";
+  const double alpha = rolling_theory(pass).bite_angle, tan_alpha = std::tan(alpha);
+  if (pass.friction >= tan_alpha) return "";
+  const double R = pass.radius, draft = pass.entry_thickness - pass.exit_thickness;
+  const double largest = 2 * R * (1 - std::cos(std::atan(pass.friction)));
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "the roll cannot draw the slab in — friction coefficient %.3g is below tan α = %.3f (bite "
+                "angle α = %.2f°: cos α = 1 − Δh / 2R with draft Δh = %.4g mm, R = %.4g mm); raise the friction to "
+                "%.3f or more, or take a draft of at most %.3g mm",
+                pass.friction, tan_alpha, alpha * 180 / M_PI, draft, R, tan_alpha, largest);
+  return buf;
 }
 
 }  // namespace rollsim

@@ -3,6 +3,8 @@
 // the slab's flow stress: Sims (1954) for roll force, torque and forward slip with sticking friction, the friction-
 // hill estimate of a homogeneously compressed slab with sticking friction, and Hitchcock's flattened roll radius
 // (1935). Plane strain, whole slab thicknesses h0 → h1 (two rolls), per unit width; 3D: times the slab's width.
+#include <string>
+
 #include "model/RollingPass.h"
 
 namespace rollsim {
@@ -20,5 +22,9 @@ struct RollingTheory {
 
 /// The closed forms of `pass` (its geometry, the slab's flow stress, the roll's elasticity).
 RollingTheory rolling_theory(const RollingPass& pass);
+
+/// Whether the roll can draw the slab in (the bite condition μ ≥ tan α): "" when it can (sticking friction always
+/// can), else the refusal with the numbers — μ, tan α, α, and the largest draft this μ bites, 2R (1 − cos(atan μ)).
+std::string bite_refusal(const RollingPass& pass);
 
 }  // namespace rollsim

@@ -5,6 +5,7 @@
 #include "analysis/LinearStatic.h"
 #include "analysis/NewtonStatic.h"
 #include "analysis/RollingMeasures.h"
+#include "analysis/RollingTheory.h"
 #include "project/ModelBuilder.h"
 #include "solve/Blas.h"
 
