@@ -7,8 +7,10 @@
 namespace rollsim {
 
 namespace {
-/// Friction state of a fresh point: sticking where it is (u = 0: at its undeformed relative position).
-void add_point_state(PairState& s, const ContactPoint& c, bool active) {
+/// A point new to the pair, with a fresh friction state: sticking where it is (u = 0: at its undeformed relative
+/// position).
+void add_point(PairState& s, const ContactPoint& c, bool active) {
+  s.points.push_back(c);
   s.active.push_back(active);
   s.anchor.push_back(c.separation);
   s.slip.push_back(0);
@@ -24,16 +26,16 @@ std::vector<PairState> search_contacts(const Model& model) {
   for (const ContactPair& p : model.contacts) {
     const Mesh& slave = model.bodies[p.slave_body].mesh;
     const Mesh& master = model.bodies[p.master_body].mesh;
-    PairState s;
-    s.points = find_contact_points(slave, slave.surfaces.at(p.slave_surface), master,
-                                   master.surfaces.at(p.master_surface), p.search_distance);
-    if (s.points.empty())
+    const std::vector<ContactPoint> found = find_contact_points(
+        slave, slave.surfaces.at(p.slave_surface), master, master.surfaces.at(p.master_surface), p.search_distance);
+    if (found.empty())
       throw std::runtime_error("contact pair '" + p.name + "': no node of surface '" + p.slave_surface + "' of body '" +
                                model.bodies[p.slave_body].name + "' lies over surface '" + p.master_surface +
                                "' of body '" + model.bodies[p.master_body].name + "' within the search distance " +
                                std::to_string(p.search_distance) + ": the surfaces never meet");
-    for (const ContactPoint& c : s.points)
-      add_point_state(s, c, p.kind == ContactKind::Tied || c.gap <= 1e-9 * p.search_distance);
+    PairState s;
+    for (const ContactPoint& c : found)
+      add_point(s, c, p.kind == ContactKind::Tied || c.gap <= 1e-9 * p.search_distance);
     states.push_back(std::move(s));
   }
   return states;
@@ -97,7 +99,7 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
       c.separation = reference_separation(slave, master, c);
       const auto it = was.find(c.slave_node);
       if (it == was.end()) {
-        add_point_state(now, c, c.gap <= touch);
+        add_point(now, c, c.gap <= touch);
         now.anchor.back() = relative_position(p, c, u, model.dim);
         continue;
       }
