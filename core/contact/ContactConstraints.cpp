@@ -17,6 +17,7 @@ void add_point(PairState& s, const ContactPoint& c, bool active) {
   s.friction_dir.push_back(Eigen::Vector3d::Zero());
   s.normal_force.push_back(0.0);
   s.switches.push_back(0);
+  s.contact_switches.push_back(0);
   s.slid.push_back(0.0);
 }
 }  // namespace
@@ -78,6 +79,7 @@ void carry(const PairState& from, size_t j, ContactPoint c, PairState& to) {
   to.friction_dir.push_back(from.friction_dir[j]);
   to.normal_force.push_back(from.normal_force[j]);
   to.switches.push_back(from.switches[j]);
+  to.contact_switches.push_back(from.contact_switches[j]);
   to.slid.push_back(from.slid[j]);
 }
 }  // namespace
@@ -195,8 +197,9 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
   for (size_t r = 0; r < rows.size(); ++r) {
     const ConstraintRow& row = rows[r];
     if (model.contacts[row.pair].kind != ContactKind::Tied && row.comp < 0 &&
-        lambda[static_cast<Eigen::Index>(r)] > tensile)
+        lambda[static_cast<Eigen::Index>(r)] > tensile && pairs[row.pair].contact_switches[row.point] < 2) {
       next[row.pair][row.point] = 0;
+    }
   }
   // entering: an inactive point whose gap after deformation is negative (beyond round-off); it sticks where it is
   for (size_t i = 0; i < pairs.size(); ++i) {
@@ -211,7 +214,8 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
       pairs[i].anchor[j] = r;
       pairs[i].slip[j] = 0;
     }
-    for (size_t j = 0; j < next[i].size(); ++j) changed += next[i][j] != pairs[i].active[j];
+    for (size_t j = 0; j < next[i].size(); ++j)
+      if (next[i][j] != pairs[i].active[j]) ++changed, ++pairs[i].contact_switches[j];
     pairs[i].active = next[i];
   }
   return changed;

@@ -34,7 +34,8 @@ struct PairState {
   std::vector<Eigen::Vector3d> friction_dir;
   std::vector<double> normal_force;
   std::vector<int> switches;  // stick ↔ slip changes in the current step (a point that came back to slip stays)
-  std::vector<double> slid;   // tangential sliding accumulated over the converged steps [length]
+  std::vector<int> contact_switches;  // in ↔ out changes in the current step (a point that came back in stays)
+  std::vector<double> slid;           // tangential sliding accumulated over the converged steps [length]
 };
 
 /// True for the kinds with tangential rows while they stick (sticking, coulomb).
@@ -67,6 +68,8 @@ std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<Pa
 /// of each row (a point that enters sticks where it is): a point leaves when its multiplier is tensile beyond
 /// `tolerance` × the largest |λ| of the rows (the relative accuracy of λ: round-off for a direct solve, the CG
 /// tolerance for an iterative one — a λ that is zero to that accuracy keeps its point), enters when it penetrates.
+/// A point that chatters (out, then in again within the step) stays in for the rest of the step, tensile or not:
+/// the exact answer lies between the two statuses (a node at the edge of the arc) and Newton would cycle.
 /// Returns the number of points that changed status.
 int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
                       const std::vector<Eigen::VectorXd>& displacement, std::vector<PairState>& pairs,

@@ -146,7 +146,10 @@ void accumulate_slip(const Model& model, const std::vector<Eigen::VectorXd>& u,
 }
 
 void new_step(std::vector<PairState>& pairs) {
-  for (PairState& s : pairs) std::fill(s.switches.begin(), s.switches.end(), 0);
+  for (PairState& s : pairs) {
+    std::fill(s.switches.begin(), s.switches.end(), 0);
+    std::fill(s.contact_switches.begin(), s.contact_switches.end(), 0);
+  }
 }
 
 }  // namespace rollsim

@@ -22,7 +22,8 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
                     const std::vector<Eigen::VectorXd>& u, const std::vector<Eigen::VectorXd>& u_start,
                     std::vector<PairState>& pairs);
 
-/// A step begins: every point may switch between stick and slip again (see update_friction's chatter rule).
+/// A step begins: every point may switch between stick and slip, in and out again (the chatter rules of
+/// update_friction and update_active_set).
 void new_step(std::vector<PairState>& pairs);
 
 /// A step converged: every active point of a unilateral pair adds the tangential part of its relative motion over

@@ -116,9 +116,10 @@ const ObjectSchema& rolling_process_schema() {
          f.choices = {"sticking", "coulomb", "frictionless"};
          f.default_value = "sticking";
          f.doc =
-             "roll–slab friction: sticking (the slab method's sticking friction: a point holds to the roll "
-             "until its friction stress reaches the slab's shear yield stress k = σ_0/√3, then slips with k), "
-             "coulomb (μ = friction_coefficient, capped at k) or frictionless. A pass whose μ is below tan α (the bite "
+             "roll–slab friction: sticking (the paper's: a point in contact holds to the roll and never slips; "
+             "the friction stress is limited by the slab's surface layer yielding in shear at k = σ_0/√3, as the "
+             "slab method's sticking friction assumes), coulomb (μ = friction_coefficient, capped at k) or "
+             "frictionless. A pass whose μ is below tan α (the bite "
              "angle: cos α = 1 − Δh / 2R), or frictionless, ends `no_bite` before anything is solved";
          return f;
        }(),
@@ -245,8 +246,9 @@ json expand_process(const json& project) {
   const std::string friction = p.at("friction");
   out["contacts"].back()["type"] = friction;
   if (friction == "coulomb") out["contacts"].back()["friction"] = p.at("friction_coefficient");
-  // the friction stress never exceeds the slab's shear yield stress k = σ_0/√3 (sticking: τ = k where it slips)
-  if (friction != "frictionless")
+  // Coulomb's friction stress never exceeds the slab's shear yield stress k = σ_0/√3. Sticking has no cap: the slab's
+  // surface layer, yielding in shear, is what limits it (a cap made the arc chatter between stick and slip)
+  if (friction == "coulomb")
     out["contacts"].back()["shear_limit"] = p.at("slab_yield_stress").get<double>() / std::sqrt(3.0);
   json& bcs = out["boundary_conditions"];
   bcs.push_back({{"type", "symmetry"}, {"body", "slab"}, {"set", mid}, {"normal", dim == 2 ? "y" : "z"}});

@@ -1,6 +1,6 @@
 #pragma once
 // The paper's plane-strain pass as the rolling tests run it: slab 36 × 6 (coarse, so a run takes about a second),
-// E 210 GPa, σ_0 100 MPa, sticking friction capped at k, `direct`, over `travel` mm of roll travel.
+// E 210 GPa, σ_0 100 MPa, sticking friction (no slip), `direct`, over `travel` mm of roll travel.
 #include <nlohmann/json.hpp>
 
 namespace testing_support {

@@ -1,8 +1,8 @@
 // The first millimetres of the paper's plane-strain pass (100 → 86.8 mm, R 300 mm, σ_0 100 MPa, E 210 GPa, sticking
-// friction capped at k, coarse 36 × 6 slab): the roll bites at once (pre-bitten entry), and its measures are those of
+// friction without slip, coarse 36 × 6 slab): the roll bites at once (pre-bitten entry), and its measures are those of
 // a pass — roll force within the slab method's range, the lever arm of the torque a fraction of the contact length,
 // the contact length and exit thickness those of the nominal geometry, the slab leaving faster than the roll — and
-// its pressure along the arc carries the roll force, its friction capped at k.
+// its pressure along the arc carries the roll force, its friction within the slab's shear yield stress k.
 #include <gtest/gtest.h>
 
 #include <cmath>

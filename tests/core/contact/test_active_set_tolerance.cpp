@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "contact/ContactConstraints.h"
+#include "contact/Friction.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
@@ -57,4 +58,29 @@ TEST(ActiveSetTolerance, ClearlyTensileMultiplierLeaves) {
   auto pairs = c.pairs;
   EXPECT_EQ(update_active_set(c.model, c.rows, lambda, c.zero_u(), pairs, 1e-4), 1);
   EXPECT_EQ(active(pairs), active(c.pairs) - 1);
+}
+
+// A point that chatters within a step (pulled off, then pressed in again) stays in contact for the rest of the step,
+// even when its multiplier is tensile again: without the rule a node at the exit of a rolling pass went in and out
+// at every iteration. The next step lets it leave.
+TEST(ActiveSetTolerance, PointThatCameBackInStaysForTheStep) {
+  Indent c;
+  Eigen::VectorXd lambda = -Eigen::VectorXd::Ones(static_cast<Eigen::Index>(c.rows.size()));
+  lambda[0] = 1.0;  // clearly tensile: the first row's point leaves
+  auto pairs = c.pairs;
+  const ConstraintRow& row = c.rows[0];
+  ASSERT_EQ(update_active_set(c.model, c.rows, lambda, c.zero_u(), pairs, 1e-8), 1);
+  ASSERT_FALSE(pairs[row.pair].active[row.point]);
+  std::vector<Eigen::VectorXd> u = c.zero_u();  // pressed in again: its slave node moved 1e-3 into the master
+  const ContactPoint& p = pairs[row.pair].points[row.point];
+  for (int k = 0; k < c.model.dim; ++k)
+    u[c.model.contacts[row.pair].slave_body][p.slave_node * c.model.dim + k] -= 1e-3 * p.normal[k];
+  ASSERT_EQ(update_active_set(c.model, {}, Eigen::VectorXd(), u, pairs, 1e-8), 1);
+  ASSERT_TRUE(pairs[row.pair].active[row.point]);
+  auto held = pairs;  // tensile again: it stays for this step
+  EXPECT_EQ(update_active_set(c.model, c.rows, lambda, u, held, 1e-8), 0);
+  EXPECT_TRUE(held[row.pair].active[row.point]);
+  new_step(pairs);  // a new step: it may leave
+  EXPECT_EQ(update_active_set(c.model, c.rows, lambda, u, pairs, 1e-8), 1);
+  EXPECT_FALSE(pairs[row.pair].active[row.point]);
 }

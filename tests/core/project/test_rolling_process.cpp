@@ -50,7 +50,11 @@ TEST(RollingProcess, GeneratesAPreBittenSlabTouchingTheRollAlongTheArc) {
     EXPECT_EQ(m.bodies[1].name, "roll");
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_EQ(m.contacts[0].kind, ContactKind::Sticking);
-    EXPECT_NEAR(m.contacts[0].shear_limit, 100 / std::sqrt(3.0), 1e-12);  // k = σ_0/√3
+    EXPECT_EQ(m.contacts[0].shear_limit, 0.0);  // the paper's sticking: no slip, the slab's shear yield limits it
+    const Model c = rolling(dim, {{"friction", "coulomb"}, {"friction_coefficient", 0.4}});
+    EXPECT_EQ(c.contacts[0].kind, ContactKind::Coulomb);
+    EXPECT_EQ(c.contacts[0].friction, 0.4);
+    EXPECT_NEAR(c.contacts[0].shear_limit, 100 / std::sqrt(3.0), 1e-12);  // μ p capped at k = σ_0/√3
     EXPECT_TRUE(m.contacts[0].holds_slave);                               // the rear end is free: friction draws it
     ASSERT_TRUE(m.rolling);
     EXPECT_EQ(m.displacements[static_cast<size_t>(m.rolling->hub)].set, "inner");
