@@ -169,19 +169,20 @@ std::string rolling_line(const Model& model, const RollingResults& r) {
   const bool plane = model.dim == 2;
   char state[120];
   if (r.steady_state_increment)
-    std::snprintf(state, sizeof state, "mean over the steady increments");
+    std::snprintf(state, sizeof state, "steady from %.4g mm of travel: means from there on",
+                  r.increments[static_cast<size_t>(r.steady_state_increment - 1)].travel);
   else
     std::snprintf(state, sizeof state, "last completed increment, %.4g mm of travel: not steady yet",
                   r.increments.back().travel);
   char buf[700];
   std::snprintf(
       buf, sizeof buf,
-      "rollsim: rolling: roll force %.4g %s, torque %.4g %s, forward slip %.2f %%, exit thickness %.3f mm "
-      "(%s; rolling.csv, contact_profile.csv and their PNG plots)\n"
+      "rollsim: rolling: roll force %.4g %s, torque %.4g %s, forward slip %.2f %%, exit thickness %.3f mm, slab "
+      "volume change %.1e (%s; rolling.csv, contact_profile.csv and their PNG plots)\n"
       "rollsim: rolling: Sims (sticking friction): roll force %.4g %s, torque %.4g %s, forward slip %.2f %%\n",
       s.roll_force, plane ? "N/mm" : "N", s.roll_torque, plane ? "N·mm/mm" : "N·mm", 100 * s.forward_slip,
-      s.exit_thickness, state, t.sims_force, plane ? "N/mm" : "N", t.sims_torque, plane ? "N·mm/mm" : "N·mm",
-      100 * t.sims_forward_slip);
+      s.exit_thickness, s.volume_change, state, t.sims_force, plane ? "N/mm" : "N", t.sims_torque,
+      plane ? "N·mm/mm" : "N·mm", 100 * t.sims_forward_slip);
   return buf;
 }
 }  // namespace

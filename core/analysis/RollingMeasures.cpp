@@ -2,6 +2,8 @@
 
 #include "analysis/RollingTheory.h"
 
+#include "fem/SolidElement.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -58,19 +60,52 @@ double mean_advance(const Mesh& slab, const std::vector<int>& nodes, const Eigen
   return nodes.empty() ? 0.0 : s / static_cast<double>(nodes.size());
 }
 
-RollingIncrement mean(const std::vector<RollingIncrement>& h, size_t from) {
+}  // namespace
+
+RollingIncrement window_mean(const std::vector<RollingIncrement>& h, double from, double to) {
   RollingIncrement m;
-  const double n = static_cast<double>(h.size() - from);
-  for (size_t i = from; i < h.size(); ++i) {
-    m.travel = h[i].travel;
-    m.roll_force += h[i].roll_force / n;
-    m.roll_torque += h[i].roll_torque / n;
-    m.contact_length += h[i].contact_length / n;
-    m.exit_thickness += h[i].exit_thickness / n;
-    m.forward_slip += h[i].forward_slip / n;
-    m.spread += h[i].spread / n;
+  double weight = 0, before = 0;
+  for (const RollingIncrement& r : h) {
+    const double w = r.travel - before;  // each increment counts for the travel it covered
+    before = r.travel;
+    if (r.travel <= from || r.travel > to) continue;
+    m.travel = r.travel;
+    m.roll_force += w * r.roll_force, m.roll_torque += w * r.roll_torque;
+    m.contact_length += w * r.contact_length, m.exit_thickness += w * r.exit_thickness;
+    m.forward_slip += w * r.forward_slip, m.spread += w * r.spread, m.volume_change += w * r.volume_change;
+    weight += w;
   }
+  if (weight <= 0) return m;
+  for (double* v : {&m.roll_force, &m.roll_torque, &m.contact_length, &m.exit_thickness, &m.forward_slip, &m.spread,
+                    &m.volume_change})
+    *v /= weight;
   return m;
+}
+
+namespace {
+/// The slab's volume (area in 2D) with its nodes displaced by u: the sum of det J × weight of each element (the
+/// 2-point Gauss rule is exact for the bilinear / trilinear map's det J).
+template <int D>
+double volume(const Mesh& mesh, const Eigen::VectorXd& u) {
+  using E = SolidElement<D>;
+  double v = 0;
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    typename E::Coords x;
+    for (int a = 0; a < E::NN; ++a) {
+      const int n = mesh.element(e)[a];
+      for (int k = 0; k < D; ++k) x(k, a) = mesh.nodes[static_cast<size_t>(n)][static_cast<size_t>(k)] + u[n * D + k];
+    }
+    std::array<typename E::Gradients, E::NGP> dN;
+    std::array<double, E::NGP> dv;
+    typename E::Gradients centre;
+    E::gradients(x, dN, dv, centre);
+    for (double w : dv) v += w;
+  }
+  return v;
+}
+
+double volume(const Mesh& mesh, const Eigen::VectorXd& u) {
+  return mesh.dim == 2 ? volume<2>(mesh, u) : volume<3>(mesh, u);
 }
 
 /// The slab's contact nodes at the state `r`, by decreasing angle (entry first).
@@ -97,14 +132,13 @@ std::vector<ArcPoint> arc_profile(const Model& model, const RollingPass& pass, c
 }  // namespace
 
 int steady_state_from(const std::vector<RollingIncrement>& h, double window) {
+  const auto near = [](double a, double b) { return std::abs(a - b) <= kSteadyTolerance * std::abs(a); };
   for (size_t i = 0; i < h.size(); ++i) {
-    if (h[i].travel < window) continue;
-    bool settled = true;
-    for (size_t j = i + 1; j-- > 0 && h[j].travel >= h[i].travel - window;)
-      settled = settled &&
-                std::abs(h[j].roll_force - h[i].roll_force) <= kSteadyTolerance * std::abs(h[i].roll_force) &&
-                std::abs(h[j].roll_torque - h[i].roll_torque) <= kSteadyTolerance * std::abs(h[i].roll_torque);
-    if (settled) return static_cast<int>(i) + 1;
+    const double t = h[i].travel;
+    if (t < 2 * window) continue;
+    const RollingIncrement last = window_mean(h, t - window, t), before = window_mean(h, t - 2 * window, t - window);
+    if (near(last.roll_force, before.roll_force) && near(last.roll_torque, before.roll_torque))
+      return static_cast<int>(i) + 1;
   }
   return 0;
 }
@@ -114,6 +148,7 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
   const double symmetry = model.dim == 3 ? 2.0 : 1.0;          // 3D models half the width
   const double contact = rolling_theory(pass).contact_length;  // √(R Δh)
+  const double volume0 = volume(slab, Eigen::VectorXd::Zero(slab.num_nodes() * slab.dim));
   RollingResults out;
   double rear_before = 0, travel_before = 0;
   std::vector<std::pair<double, double>> fronts{{0.0, 0.0}};  // (travel, front advance) from the start
@@ -140,6 +175,7 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
     // the roll bites once the rear end follows: it moves in by half of what the roll's travel would draw in
     if (!out.bite_increment && dt > 0 && rear - rear_before >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
       out.bite_increment = static_cast<int>(out.increments.size()) + 1;
+    r.volume_change = volume(slab, u) / volume0 - 1;
     rear_before = rear, travel_before = r.travel;
     out.increments.push_back(r);
   }
@@ -149,9 +185,13 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
       out.profile = arc_profile(model, pass, it->bodies[static_cast<size_t>(pass.slab)]);
       break;
     }
-  out.steady_state_increment = steady_state_from(out.increments, contact);
-  out.steady = mean(out.increments, out.steady_state_increment ? static_cast<size_t>(out.steady_state_increment - 1)
-                                                               : out.increments.size() - 1);
+  const double window = kSteadyWindow * contact;
+  out.steady_state_increment = steady_state_from(out.increments, window);
+  const double last = out.increments.back().travel;
+  const double from = out.steady_state_increment
+                          ? out.increments[static_cast<size_t>(out.steady_state_increment - 1)].travel - window
+                          : (out.increments.size() > 1 ? out.increments[out.increments.size() - 2].travel : 0.0);
+  out.steady = window_mean(out.increments, from, last);
   return out;
 }
 

@@ -15,7 +15,8 @@ struct RollingIncrement {
   // slab front's advance / roll surface travel − 1 over the last tenth of a nominal contact length √(R Δh) of travel
   // (from the start before that) [-]
   double forward_slip = 0;
-  double spread = 0;  // 3D: whole width past the exit − entry width (0 in 2D) [length]
+  double spread = 0;         // 3D: whole width past the exit − entry width (0 in 2D) [length]
+  double volume_change = 0;  // the slab's current volume (area in 2D) / its initial one − 1 [-]
 };
 
 /// One slab node in contact along the arc, in the rolling plane (3D: every node of the contact zone, across the
@@ -33,7 +34,8 @@ struct RollingResults {
   std::vector<ArcPoint> profile;   // contact along the arc at the last increment, by angle
   int bite_increment = 0;          // first increment whose travel drew the slab in (0: the roll did not bite)
   int steady_state_increment = 0;  // first increment from which force and torque stay settled (0: not reached)
-  RollingIncrement steady;         // mean over the steady increments (the last increment when not reached)
+  RollingIncrement
+      steady;  // travel-weighted mean from the steady state on (from its last window; not reached: the last increment)
 };
 
 }  // namespace rollsim

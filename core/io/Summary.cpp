@@ -86,6 +86,7 @@ json rolling_section(const Model& m, const RollingResults& r) {
           {"exit_thickness", s.exit_thickness},
           {"spread", s.spread},
           {"forward_slip", s.forward_slip},
+          {"volume_change", s.volume_change},
           {"bite_increment", r.bite_increment},
           {"steady_state_increment", r.steady_state_increment},
           {"units",
@@ -94,8 +95,10 @@ json rolling_section(const Model& m, const RollingResults& r) {
             {plane ? "contact_length" : "contact_area", plane ? "mm" : "mm²"},
             {"exit_thickness", "mm"},
             {"spread", "mm"},
-            {"forward_slip", "-"}}},
-          {"values", r.steady_state_increment ? "mean over the steady increments" : "last increment (not steady)"},
+            {"forward_slip", "-"},
+            {"volume_change", "-"}}},
+          {"values",
+           r.steady_state_increment ? "travel-weighted mean from the steady state on" : "last increment (not steady)"},
           {"theory", theory_section(*m.rolling)}};
 }
 
