@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# Rolling benchmark of issue 13 -> docs/BENCHMARKS-ROLLING.md.
+#   table13: the paper's Table XIII — the plane-strain pass on slab meshes 36x6 … 72x12 (roll mesh fixed, 120 x 6)
+#            over TRAVEL mm in 1 mm increments, solved by direct + always (the paper's direct), mixed + always
+#            (Mixed I) and mixed + selective (Mixed II): Newton iterations, factorizations per body, in-process time
+#            (median of REPEAT runs), peak memory, and the time reduction against direct beside the paper's.
+#   convergence: the pass to steady state (150 mm) on three meshes refined together (slab 36x6, 54x9, 72x12; roll
+#            120, 180, 240 around; increments 1, 0.75, 0.5 mm), direct: steady force, torque, forward slip, exit
+#            thickness, volume change.
+# Usage: tests/bench/run_rolling_benchmarks.sh [table13|convergence] [--rollsim BIN] [--repeat N] [--travel MM]
+# This script builds nothing. Timing is not a test: it fails only if a run fails.
+set -euo pipefail
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+ROLLSIM=$ROOT/build/app/rollsim
+REPEAT=3
+TRAVEL=20
+PART=${1:-table13}
+(($#)) && shift
+while (($#)); do
+  case $1 in
+    --rollsim) ROLLSIM=$2; shift 2 ;;
+    --repeat) REPEAT=$2; shift 2 ;;
+    --travel) TRAVEL=$2; shift 2 ;;
+    -h|--help) sed -n 2,11p "$0"; exit 0 ;;
+    *) echo "run_rolling_benchmarks: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+ROLLSIM=$(realpath "$ROLLSIM")
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+
+# project NAME NX NT AROUND INCREMENT TRAVEL -> $WORK/NAME.json (the default sample's pass with these meshes)
+project() {
+  python3 - "$ROOT/samples/rolling-2d-36x6.json" "$WORK/$1.json" "$@" <<'PY'
+import json, sys
+src, dst, name, nx, nt, around, inc, travel = sys.argv[1:]
+p = json.load(open(src))
+p["name"] = name
+p["process"].update(slab_nx=int(nx), slab_nt=int(nt), roll_n_around=int(around),
+                    travel_increment=float(inc), travel=float(travel))
+json.dump(p, open(dst, "w"))
+PY
+}
+
+table13() {
+  echo "| slab mesh | dofs | variant | Newton iterations | factorizations slab / roll | in-process s (median of $REPEAT) | peak MiB | vs direct | paper |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+  for mesh in 36x6 48x8 60x10 72x12; do
+    nx=${mesh%x*} nt=${mesh#*x}
+    project "t13-$mesh" "$nx" "$nt" 120 1 "$TRAVEL"
+    for v in "direct always" "mixed always" "mixed selective"; do
+      read -r mode update <<<"$v"
+      for r in $(seq "$REPEAT"); do
+        /usr/bin/time -f "%M" -o "$WORK/$mesh-$mode-$update-$r.mem" "$ROLLSIM" run "$WORK/t13-$mesh.json" --quiet \
+          --out "$WORK/$mesh-$mode-$update-$r" --solver "$mode" --update "$update" >/dev/null
+      done
+    done
+    python3 - "$WORK" "$mesh" "$REPEAT" "$ROOT/tests/bench/paper/t13_rolling2d_mixed.csv" <<'PY'
+import csv, json, statistics, sys
+work, mesh, repeat, paper = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+rows = {r["slab_mesh_XxZ"]: r for r in csv.DictReader(l for l in open(paper) if not l.startswith("#"))}
+p = rows.get(mesh)
+times, label = {}, {"direct always": "direct", "mixed always": "Mixed I", "mixed selective": "Mixed II"}
+for v in label:
+    mode, update = v.split()
+    runs = [f"{work}/{mesh}-{mode}-{update}-{r}" for r in range(1, repeat + 1)]
+    d = json.load(open(runs[0] + "/summary.json"))
+    assert d["status"] == "converged", (mesh, v, d["status"])
+    times[v] = statistics.median(json.load(open(r + "/summary.json"))["timing"]["total_s"] for r in runs)
+    peak = max(int(open(r + ".mem").read().split()[-1]) for r in runs) / 1024
+    f = d["solver"]["factorizations"]
+    fac = " / ".join(str(f.get(b, 0)) for b in ("slab", "roll"))
+    ratio = times[v] / times["direct always"]
+    ref = {"direct always": "1", "mixed always": p and f"{float(p['mixed1']) / float(p['direct']):.3f}",
+           "mixed selective": p and f"{float(p['mixed2']) / float(p['direct']):.3f}"}[v]
+    print(f"| {mesh} | {d['model']['dofs']} | {label[v]} | {d['solver']['newton_iterations']} | {fac} | "
+          f"{times[v]:.2f} | {peak:.0f} | {ratio:.3f} | {ref or '–'} (paper: {p['ndof'] if p else '–'} dofs) |")
+PY
+  done
+}
+
+convergence() {
+  echo "| slab mesh | roll around | increment mm | dofs | steady from mm | roll force N/mm | torque kN·m/m | forward slip % | exit thickness mm | volume change | run s |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  for m in "36 6 120 1" "54 9 180 0.75" "72 12 240 0.5"; do
+    read -r nx nt around inc <<<"$m"
+    project "c$nx" "$nx" "$nt" "$around" "$inc" 150
+    "$ROLLSIM" run "$WORK/c$nx.json" --quiet --out "$WORK/c$nx" --solver direct >/dev/null
+    python3 - "$WORK/c$nx" "$nx" "$nt" "$around" "$inc" <<'PY'
+import json, sys
+out, nx, nt, around, inc = sys.argv[1:]
+d = json.load(open(out + "/summary.json"))
+r = d["results"]["rolling"]
+steady = r["steady_state_increment"]
+travel = d["increments"][steady - 1]["load_factor"] * 150 if steady else float("nan")
+print(f"| {nx}x{nt} | {around} | {inc} | {d['model']['dofs']} | {travel:.1f} | {r['roll_force']:.0f} | "
+      f"{r['roll_torque'] / 1000:.1f} | {100 * r['forward_slip']:.2f} | {r['exit_thickness']:.3f} | "
+      f"{r['volume_change']:.1e} | {d['timing']['total_s']:.1f} |")
+PY
+  done
+}
+
+case $PART in
+  table13) table13 ;;
+  convergence) convergence ;;
+  *) echo "run_rolling_benchmarks: unknown part $PART (table13 or convergence)" >&2; exit 2 ;;
+esac
