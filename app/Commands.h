@@ -16,7 +16,9 @@ struct RunOptions {
   std::optional<std::string> preconditioner;  // none, lumped, dirichlet
   std::optional<std::string> projector;       // identity, preconditioner
   std::optional<double> cg_tolerance;
-  std::optional<std::string> update;  // always, selective[:TOL] (Newton)
+  std::optional<std::string> update;         // always, selective[:TOL] (Newton)
+  std::optional<std::string> petsc_method;   // bddc, fetidp
+  std::optional<std::string> petsc_options;  // passed through to PETSc
   bool quiet = false;
 };
 

@@ -21,6 +21,7 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 #include "solve/Blas.h"
+#include "solve/PetscStrategy.h"
 #include "solve/Stopwatch.h"
 #include "solve/UpdatePolicy.h"
 
@@ -88,6 +89,12 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
     }
     solver["update"] = *o.update;
   }
+  if (o.petsc_method) {
+    if (!is_one_of(*o.petsc_method, petsc_method_names()))
+      return "--petsc-method: must be " + one_of(petsc_method_names()) + ", got '" + *o.petsc_method + "'";
+    solver["petsc_method"] = *o.petsc_method;
+  }
+  if (o.petsc_options) solver["petsc_options"] = *o.petsc_options;
   if (o.partition) {
     const auto eq = o.partition->find('=');
     const std::string body = eq == std::string::npos ? "" : o.partition->substr(0, eq);
@@ -189,18 +196,31 @@ std::string rolling_line(const Model& model, const RollingResults& r) {
 
 int run_command(const RunOptions& o) {
   Stopwatch wall;
-  StderrProgress progress(o.quiet);
   Project project;
   Model model;
   try {
     project = load_project(o.project);
     if (auto err = apply_overrides(project, o); !err.empty()) return invalid(err);
+  } catch (const ProjectError& e) {
+    return invalid(e.what());
+  }
+  try {  // a strategy the options or this build cannot make (petsc without PETSc) is invalid input
+    make_solver(project.data.at("solver").at("mode").get<std::string>(), solver_options(project));
+  } catch (const std::invalid_argument& e) {
+    return invalid(e.what());
+  }
+  // solver `petsc` under mpirun: every rank builds the model and its own subdomain; rank 0 reports and writes
+  if (project.data.at("solver").at("mode").get<std::string>() == "petsc") start_processes();
+  const bool writer = process_rank() == 0;
+  StderrProgress progress(o.quiet || !writer);
+  try {
     progress.on_stage("build model");
     model = build_model(project);
   } catch (const ProjectError& e) {
     return invalid(e.what());
   }
-  for (const auto& w : model.warnings) std::fprintf(stderr, "rollsim: warning: %s\n", w.c_str());
+  if (writer)
+    for (const auto& w : model.warnings) std::fprintf(stderr, "rollsim: warning: %s\n", w.c_str());
   const SolverOptions options = solver_options(project);
   RunInfo info{project.name(),         project.data.at("solver").at("mode").get<std::string>(),
                options.cg_tolerance,   options.threads,
@@ -208,7 +228,7 @@ int run_command(const RunOptions& o) {
                options.projector,      blas_description()};
   const auto dir = output_dir(project, o);
   std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
+  if (writer) std::filesystem::create_directories(dir, ec);
   if (ec) return invalid("cannot create output directory " + dir.string() + ": " + ec.message());
   Results results;
   try {
@@ -216,6 +236,7 @@ int run_command(const RunOptions& o) {
   } catch (const AnalysisError& e) {
     results.status = {Status::error, Reason::none, e.what()};
   }
+  if (!writer) return exit_code(results.status.status);  // the other ranks of a petsc run: rank 0 writes
   progress.on_stage("write results");
   try {
     clear_run_outputs(dir);  // the folder holds this run only: no result.vtu of an earlier run beside a failure

@@ -5,6 +5,7 @@
 #include "Commands.h"
 #include "project/ProjectSchema.h"
 #include "solve/Blas.h"
+#include "solve/PetscStrategy.h"
 #include "solve/SolverStrategy.h"
 
 #ifndef ROLLSIM_HAVE_GUI
@@ -24,6 +25,9 @@ std::string solver_help() {
 
 int main(int argc, char** argv) {
   using namespace rollsim::app;
+  struct EndProcesses {  // PETSc and MPI end after the command, whichever return it took (solver `petsc`)
+    ~EndProcesses() { rollsim::finish_processes(); }
+  } end_processes;
   CLI::App cli{"rollsim: finite element simulation of flat hot rolling"};
   cli.require_subcommand(0, 1);
   bool version = false;
@@ -46,6 +50,12 @@ int main(int argc, char** argv) {
   cmd_run->add_option("--update", run.update,
                       "Newton update policy: always (every group refactored at every iteration) or selective[:TOL] "
                       "(a group whose residual is below TOL x the total keeps its factor; TOL 0.01 by default)");
+  cmd_run->add_option("--petsc-method", run.petsc_method,
+                      "petsc: " + rollsim::one_of(rollsim::petsc_method_names()) +
+                          " (PCBDDC in CG, or KSPFETIDP); run as mpirun -n P with one subdomain per rank");
+  cmd_run->add_option("--petsc-options", run.petsc_options,
+                      "petsc: options passed through to PETSc, e.g. \"-ksp_monitor -pc_bddc_use_faces\" (an option "
+                      "PETSc does not use is refused)");
   cmd_run->add_flag("--quiet", run.quiet, "no progress on stderr");
 
   std::string check_file;

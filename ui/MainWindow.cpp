@@ -11,6 +11,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSaveFile>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -59,7 +60,11 @@ MainWindow::MainWindow(QWidget* parent)
   run_panel_ = new RunPanel(doc_);
   auto* run_dock = new QDockWidget(tr("Solver and run"), this);
   run_dock->setObjectName(QStringLiteral("runDock"));
-  run_dock->setWidget(run_panel_);
+  auto* run_scroll = new QScrollArea;  // the solver's schema rows grow with the strategies; the window does not
+  run_scroll->setWidgetResizable(true);
+  run_scroll->setFrameShape(QFrame::NoFrame);
+  run_scroll->setWidget(run_panel_);
+  run_dock->setWidget(run_scroll);
   addDockWidget(Qt::RightDockWidgetArea, run_dock);
 
   partition_ = new PartitionEditor(doc_, this);

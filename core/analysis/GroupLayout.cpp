@@ -22,6 +22,20 @@ Group body_group(const Model& model, int b, const DofMap& dofs) {
   return g;
 }
 
+/// Each free dof's node coordinates and component (Group::geometry).
+DofGeometry dof_geometry(const Mesh& mesh, const DofMap& dofs) {
+  DofGeometry g;
+  g.x.resize(dofs.num_free(), mesh.dim);
+  g.component.resize(dofs.num_free());
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    for (int c = 0; c < mesh.dim; ++c)
+      if (const int e = dofs.equation(n, c); e >= 0) {
+        for (int k = 0; k < mesh.dim; ++k) g.x(e, k) = mesh.nodes[n][k];
+        g.component[e] = c;
+      }
+  return g;
+}
+
 /// Multiplicity scaling of the interface rows, in boolean_blocks' order (node, pair, free component).
 std::vector<double> row_scaling(const BodyDecomposition& dec, const DofMap& dofs) {
   std::vector<double> w;
@@ -95,6 +109,8 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
     sys_.groups.push_back(body_group(model, b, *dofs_.back()));
     assembler_.add(GroupSource{&body, dofs_.back().get(), external_nodal_load(model, b), b, {}});
   }
+  for (size_t g = static_cast<size_t>(bg.first); g < sys_.groups.size(); ++g)
+    sys_.groups[g].geometry = dof_geometry(assembler_.source(g).body->mesh, *assembler_.source(g).dofs);
   bodies_.push_back(std::move(bg));
 }
 

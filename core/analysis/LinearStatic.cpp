@@ -123,7 +123,7 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   Stopwatch t;
   GroupLayout layout(model, solver.uses_subdomains(), multiplier_choice(solver.options()));
   BlockSystem& sys = layout.system();
-  const std::vector<size_t> selected = AlwaysUpdate().select(sys, {});
+  const std::vector<size_t> selected = solver.local_groups(AlwaysUpdate().select(sys, {}));
   layout.assemble(selected, {}, 1.0);  // K_g and r_g at rest: the linear system
   mark_updated(sys, selected);         // factored on first use, then kept
   res.dofs = sys.num_dofs();

@@ -483,6 +483,8 @@ SolverOptions solver_options(const Project& project) {
   o.preconditioner = s.at("preconditioner").get<std::string>();
   o.multipliers = s.at("multipliers").get<std::string>();
   o.projector = s.at("projector").get<std::string>();
+  o.petsc_method = s.at("petsc_method").get<std::string>();
+  o.petsc_options = s.at("petsc_options").get<std::string>();
   return o;
 }
 

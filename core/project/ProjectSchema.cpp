@@ -351,9 +351,18 @@ const ObjectSchema& solver_schema() {
            "metric Q of the rigid-mode projector P = I − QG(GᵀQG)⁻¹Gᵀ of `feti` with a preconditioner: identity "
            "(Q = I, the paper's; always without a preconditioner) or preconditioner (Q = M⁻¹: 15–25 % fewer "
            "iterations, but M⁻¹G costs a preconditioner solve per floating neighbour's mode, once per factorization)"),
+       choice("petsc_method", petsc_method_names(), "bddc",
+              "method of `petsc`: bddc (PCBDDC preconditioning CG on the whole problem) or fetidp (KSPFETIDP: CG on "
+              "the FETI-DP multipliers, the inner BDDC's coarse space)"),
+       def(str("petsc_options",
+               "`petsc`: options passed through to PETSc (e.g. \"-ksp_monitor -pc_bddc_use_faces\"); an option PETSc "
+               "does not use is refused"),
+           ""),
        [] {
-         Field f =
-             def(positive("cg_tolerance", "-", "relative residual tolerance of the interface CG (mixed/feti)"), 1e-4);
+         Field f = def(
+             positive("cg_tolerance", "-",
+                      "relative residual tolerance of the interface CG (mixed/feti; petsc: its Krylov solver's rtol)"),
+             1e-4);
          f.max = 1.0;
          f.max_exclusive = true;
          return f;

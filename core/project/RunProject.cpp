@@ -36,6 +36,8 @@ Results run_linear(const Project& project, const Model& model, AnalysisObserver*
   const SolverOptions options = solver_options(project);
   set_library_threads(options.threads);
   const auto solver = make_solver(project.data.at("solver").at("mode").get<std::string>(), options);
+  if (std::string refusal = solver->contact_refusal(); !refusal.empty() && !model.contacts.empty())
+    throw AnalysisError(refusal);
   return run_linear_static(model, *solver, observer, load_increments(project), max_active_set_iterations(project));
 }
 
@@ -44,6 +46,7 @@ Results run_newton(const Project& project, const Model& model, AnalysisObserver*
   set_library_threads(options.threads);
   const json& s = project.data.at("solver");
   const auto solver = make_solver(s.at("mode").get<std::string>(), options);
+  if (std::string refusal = solver->newton_refusal(); !refusal.empty()) throw AnalysisError(refusal);
   const auto policy = make_update_policy(s.value("update", "always"));
   return run_newton_static(model, *solver, *policy, observer, newton_options(project));
 }

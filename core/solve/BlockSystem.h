@@ -12,6 +12,13 @@
 
 namespace rollsim {
 
+/// Where a group's free dofs sit: each one's node coordinates and component — for strategies that hand the groups
+/// to a library needing geometry (petsc: rigid-body near-null space, corner selection). Empty when not set.
+struct DofGeometry {
+  Eigen::MatrixXd x;          // free dofs × dim: the coordinates of each free dof's node
+  Eigen::VectorXi component;  // per free dof: 0, 1 or 2
+};
+
 struct Group {
   std::string name;
   int body = 0;
@@ -21,6 +28,7 @@ struct Group {
   long version = 0;   // bumped by mark_updated (solve/UpdatePolicy) when K is re-assembled: strategies refactor
                       // a group only then
   Eigen::MatrixXd R;  // basis of ker K_g (rigid modes left free by the supports); n × 0 when K_g is regular
+  DofGeometry geometry;
 };
 
 /// What a range of multipliers stands for: contact rows (C_j) or the glue of a body's subdomains (B_i).
@@ -43,8 +51,8 @@ struct BlockSystem {
 
   long num_dofs() const {
     long n = 0;
-    for (const Group& g : groups) n += g.K.rows();
-    return n;
+    for (const Group& g : groups) n += g.K.rows() > 0 ? g.K.rows() : g.C.cols();  // a group another process
+    return n;                                                                     // assembles: its C's columns
   }
   long num_multipliers() const { return d.size(); }
   /// The glue block (subdomain interfaces), or null when no body is torn.

@@ -3,6 +3,7 @@
 
 #include "solve/GlobalDirect.h"
 #include "solve/MixedStrategy.h"
+#include "solve/PetscStrategy.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {
@@ -23,6 +24,10 @@ const std::vector<StrategyInfo>& solver_registry() {
        "FETI: partitioned bodies torn into subdomains, each factored on its own, projected CG on the subdomain and "
        "contact multipliers with an optional lumped / Dirichlet preconditioner",
        [](const SolverOptions& o) { return std::make_unique<MixedStrategy>(o, true); }},
+      {"petsc",
+       "PETSc (optional build): the subdomains as an unassembled MATIS matrix, one per MPI rank (mpirun -n P), solved "
+       "by PCBDDC in CG or KSPFETIDP (--petsc-method); linear, contact-free projects",
+       [](const SolverOptions& o) { return make_petsc_strategy(o); }},
   };
   return registry;
 }
@@ -39,6 +44,11 @@ const std::vector<std::string>& multiplier_names() {
 
 const std::vector<std::string>& projector_names() {
   static const std::vector<std::string> names{"identity", "preconditioner"};
+  return names;
+}
+
+const std::vector<std::string>& petsc_method_names() {
+  static const std::vector<std::string> names{"bddc", "fetidp"};
   return names;
 }
 

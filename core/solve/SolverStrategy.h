@@ -20,6 +20,8 @@ struct SolverOptions {
   std::string multipliers = "nonredundant";  // subdomain glue: nonredundant, redundant (feti)
   std::string projector = "identity";        // metric Q of the rigid-mode projector with a preconditioner:
                                              // identity (Q = I, the paper's) or preconditioner (Q = M⁻¹)
+  std::string petsc_method = "bddc";         // petsc: bddc (PCBDDC in CG) or fetidp (KSPFETIDP)
+  std::string petsc_options;                 // petsc: options passed through to PETSc, e.g. "-ksp_monitor"
 };
 
 class SolverStrategy {
@@ -38,6 +40,14 @@ class SolverStrategy {
     static const SolverOptions defaults;
     return defaults;
   }
+  /// The groups among `groups` this process assembles (all of them; petsc: its MPI rank's subdomain only — the
+  /// other ranks build the others).
+  virtual std::vector<size_t> local_groups(std::vector<size_t> groups) const { return groups; }
+  /// Why the strategy cannot serve the Newton driver ("" when it can).
+  virtual std::string newton_refusal() const { return ""; }
+  /// Why the strategy cannot solve a model with contact pairs ("" when it can): asked before the first solve, since
+  /// a frictionless pair may start with no active row.
+  virtual std::string contact_refusal() const { return ""; }
 };
 
 struct StrategyInfo {
@@ -50,6 +60,7 @@ struct StrategyInfo {
 const std::vector<std::string>& preconditioner_names();  // none, lumped, dirichlet
 const std::vector<std::string>& multiplier_names();      // nonredundant, redundant
 const std::vector<std::string>& projector_names();       // identity (Q = I), preconditioner (Q = M⁻¹)
+const std::vector<std::string>& petsc_method_names();    // bddc, fetidp
 /// "a, b or c": for messages that list the valid words.
 std::string one_of(const std::vector<std::string>& words);
 

@@ -22,19 +22,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-pid_t spawn(const std::vector<std::string>& args, const std::string& out, const std::string& err) {
+pid_t spawn(const std::string& program, const std::vector<std::string>& args, const std::string& out,
+            const std::string& err) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<char*> argv{const_cast<char*>(ROLLSIM_BINARY)};
+  std::vector<char*> argv{const_cast<char*>(program.c_str())};
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, ROLLSIM_BINARY, &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) throw std::runtime_error(std::string("cannot spawn ") + ROLLSIM_BINARY);
+  if (rc != 0) throw std::runtime_error("cannot spawn " + program);
   return pid;
 }
 
@@ -85,11 +86,15 @@ std::vector<std::string> list_dir(const std::string& dir) {
 }
 
 RunResult run_rollsim(const std::vector<std::string>& args, int timeout_s) {
+  return run_program(ROLLSIM_BINARY, args, timeout_s);
+}
+
+RunResult run_program(const std::string& program, const std::vector<std::string>& args, int timeout_s) {
   const std::string dir = make_temp_dir("io");
   const std::string out = dir + "/stdout", err = dir + "/stderr";
   RunResult r;
   const auto start = Clock::now();
-  const int status = wait_with_timeout(spawn(args, out, err), timeout_s, r.timed_out);
+  const int status = wait_with_timeout(spawn(program, args, out, err), timeout_s, r.timed_out);
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!r.timed_out && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);

@@ -14,6 +14,9 @@ struct RunResult {
 /// Spawns ROLLSIM_BINARY with `args` (stdin: /dev/null), waits at most `timeout_s` seconds (then SIGKILL).
 RunResult run_rollsim(const std::vector<std::string>& args, int timeout_s = 60);
 
+/// The same for another program (an absolute path), e.g. mpirun starting rollsim on several ranks.
+RunResult run_program(const std::string& program, const std::vector<std::string>& args, int timeout_s = 60);
+
 /// A fresh empty directory under the system temp dir.
 std::string make_temp_dir(const std::string& tag);
 
