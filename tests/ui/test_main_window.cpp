@@ -179,10 +179,11 @@ class TestMainWindow : public QObject {
   }
 
   void rolling_pass_plots_force_torque_and_the_arc() {
-    // the window's default project, the paper's pass over its first 6 mm: the force/torque chart grows with every
-    // increment while it runs, and shows every increment and the arc once it ends
+    // the window's default project, the paper's pass, over its first 6 mm (the whole 120 mm takes 20 s): the
+    // force/torque chart grows with every increment while it runs, and shows every increment and the arc once it ends
     MainWindow w;
     w.new_project();
+    QVERIFY(w.document()->propose("/process/travel", 6.0).empty());
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     RollingPlot* rolling = w.plot()->rolling_plot();
