@@ -5,10 +5,13 @@
 #            (Mixed I), direct + selective and mixed + selective (Mixed II): Newton iterations, factorizations per
 #            body, in-process time (median of REPEAT runs), peak memory, and the time against direct with the same
 #            update policy (the same tangents, so the same Newton path) beside the paper's ratio to its direct.
+#   table15: the paper's Table XV — the same pass and meshes 48x8 … 72x12 with the selective update: direct, Mixed II
+#            and FETI with the slab torn into 2, 3, 4 subdomains along its length (DD-II; the roll one more group):
+#            factorizations per group, CG iterations, in-process time, and the roll force of each (the modes agree).
 #   convergence: the pass to steady state (150 mm) on three meshes refined together (slab 36x6, 54x9, 72x12; roll
 #            120, 180, 240 around; increments 1, 0.75, 0.5 mm), direct: steady force, torque, forward slip, exit
 #            thickness, volume change.
-# Usage: tests/bench/run_rolling_benchmarks.sh [table13|convergence] [--rollsim BIN] [--repeat N] [--travel MM]
+# Usage: tests/bench/run_rolling_benchmarks.sh [table13|table15|convergence] [--rollsim BIN] [--repeat N] [--travel MM]
 # This script builds nothing. Timing is not a test: it fails only if a run fails.
 set -euo pipefail
 
@@ -23,7 +26,7 @@ while (($#)); do
     --rollsim) ROLLSIM=$2; shift 2 ;;
     --repeat) REPEAT=$2; shift 2 ;;
     --travel) TRAVEL=$2; shift 2 ;;
-    -h|--help) sed -n 2,11p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
     *) echo "run_rolling_benchmarks: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -89,6 +92,48 @@ PY
   done
 }
 
+table15() {
+  echo "| slab mesh | variant | Newton iterations | factorizations per group | CG iterations | in-process s (median of $REPEAT) | vs direct + selective | roll force N/mm | paper: total vs direct |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+  for mesh in 48x8 60x10 72x12; do
+    nx=${mesh%x*} nt=${mesh#*x}
+    project "t15-$mesh" "$nx" "$nt" 120 1 "$TRAVEL"
+    for v in "direct -" "mixed -" "feti 2x1" "feti 3x1" "feti 4x1"; do
+      read -r mode part <<<"$v"
+      extra=()
+      [[ $part != - ]] && extra=(--partition "slab=$part")
+      for r in $(seq "$REPEAT"); do
+        "$ROLLSIM" run "$WORK/t15-$mesh.json" --quiet --out "$WORK/$mesh-$mode-$part-$r" --solver "$mode" \
+          --update selective "${extra[@]}" >/dev/null 2>&1 || true
+      done
+    done
+    python3 - "$WORK" "$mesh" "$REPEAT" "$ROOT/tests/bench/paper/t15_rolling2d_dd.csv" <<'PY'
+import csv, json, statistics, sys
+work, mesh, repeat, paper = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+rows = [r for r in csv.DictReader(l for l in open(paper) if not l.startswith("#"))
+        if r["slab_mesh"] == mesh and r["quantity"] == "total"]
+p = rows[0] if rows else None
+column = {"direct -": "direct", "mixed -": "mixed2", "feti 2x1": "dom2", "feti 3x1": "dom3", "feti 4x1": "dom4"}
+base = None
+for v, col in column.items():
+    mode, part = v.split()
+    runs = [f"{work}/{mesh}-{mode}-{part}-{r}" for r in range(1, repeat + 1)]
+    d = json.load(open(runs[0] + "/summary.json"))
+    name = "direct + selective" if mode == "direct" else "Mixed II" if mode == "mixed" else f"DD-II, slab {part}"
+    if d["status"] != "converged":
+        print(f"| {mesh} | {name} | {d['status']}: {d.get('message', '')[:80]} | | | | | | |")
+        continue
+    t = statistics.median(json.load(open(r + "/summary.json"))["timing"]["total_s"] for r in runs)
+    base = base or t
+    s = d["solver"]
+    fac = ", ".join(f"{g} {n}" for g, n in s["factorizations"].items())
+    ref = f"{float(p[col]) / float(p['direct']):.3f}" if p else "–"
+    print(f"| {mesh} | {name} | {s['newton_iterations']} | {fac} | {s['cg_iterations_total']} | {t:.2f} | "
+          f"{t / base:.3f} | {d['results']['rolling']['roll_force']:.6f} | {ref} |")
+PY
+  done
+}
+
 convergence() {
   echo "| slab mesh | roll around | increment mm | dofs | steady from mm | roll force N/mm | torque kN·m/m | forward slip % | exit thickness mm | volume change | run s |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
@@ -112,6 +157,7 @@ PY
 
 case $PART in
   table13) table13 ;;
+  table15) table15 ;;
   convergence) convergence ;;
-  *) echo "run_rolling_benchmarks: unknown part $PART (table13 or convergence)" >&2; exit 2 ;;
+  *) echo "run_rolling_benchmarks: unknown part $PART (table13, table15 or convergence)" >&2; exit 2 ;;
 esac
