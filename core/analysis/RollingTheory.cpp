@@ -22,6 +22,10 @@ RollingTheory rolling_theory(const RollingPass& pass) {
   t.sims_torque = k2 * R * R * (t.bite_angle / 2 - t.neutral_angle) * width;
   t.sims_forward_slip = hn / h1 - 1;
   t.friction_hill_force = k2 * t.contact_length * (1 + t.contact_length / (2 * (h0 + h1))) * width;
+  if (pass.width_axis >= 0) {
+    const double W = std::pow(10.0, -1.269 * (width / h0) * std::pow(h0 / (2 * R), 0.556));
+    t.wusatowski_spread = width * (std::pow(h0 / h1, W) - 1);
+  }
   if (pass.roll_E > 0)
     t.hitchcock_radius_ratio =
         1 + 16 * (1 - pass.roll_nu * pass.roll_nu) * (t.sims_force / width) / (M_PI * pass.roll_E * draft);

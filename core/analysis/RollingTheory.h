@@ -1,8 +1,9 @@
 #pragma once
 // The closed forms a rolling pass is checked against (docs/VALIDATION.md), computed from the pass's geometry and
 // the slab's flow stress: Sims (1954) for roll force, torque and forward slip with sticking friction, the friction-
-// hill estimate of a homogeneously compressed slab with sticking friction, and Hitchcock's flattened roll radius
-// (1935). Plane strain, whole slab thicknesses h0 → h1 (two rolls), per unit width; 3D: times the slab's width.
+// hill estimate of a homogeneously compressed slab with sticking friction, Hitchcock's flattened roll radius
+// (1935) and, in 3D, Wusatowski's spread (1955). Plane strain, whole slab thicknesses h0 → h1 (two rolls), per unit
+// width; 3D: times the slab's width.
 #include <string>
 
 #include "model/RollingPass.h"
@@ -18,6 +19,9 @@ struct RollingTheory {
   double sims_forward_slip = 0;       // h_n / h1 − 1, h_n = h1 + R φ_n² [-]
   double friction_hill_force = 0;     // 2k L (1 + L / (4 h̄)), h̄ = (h0 + h1) / 2 [force (per unit width in 2D)]
   double hitchcock_radius_ratio = 1;  // R′/R = 1 + 16 (1 − ν²) F_Sims / (π E Δh) (elastic roll; 1 for a rigid one)
+  // Wusatowski: b1 = b0 (h0/h1)^W, W = 10^(−1.269 (b0/h0) (h0/2R)^0.556), his factors for steel, speed, friction and
+  // roll material taken as 1; spread b1 − b0 [length] (3D; 0 in plane strain)
+  double wusatowski_spread = 0;
 };
 
 /// The closed forms of `pass` (its geometry, the slab's flow stress, the roll's elasticity).

@@ -73,7 +73,8 @@ json theory_section(const RollingPass& pass) {
           {"friction_hill_roll_force", t.friction_hill_force},
           {"bite_angle", t.bite_angle * 180 / M_PI},
           {"projected_contact_length", t.contact_length},
-          {"hitchcock_radius_ratio", t.hitchcock_radius_ratio}};
+          {"hitchcock_radius_ratio", t.hitchcock_radius_ratio},
+          {"wusatowski_spread", t.wusatowski_spread}};
 }
 
 // The pass's steady (or last) values, where it bit and settled, with units (the process works in mm and MPa).

@@ -41,4 +41,7 @@ TEST(RollingTheory, RigidRollDoesNotFlattenAndWidthScales3D) {
   wide.width_axis = 1, wide.width = 350;
   EXPECT_NEAR(rolling_theory(wide).sims_force, 350 * rolling_theory(paper_pass()).sims_force, 1e-6);
   EXPECT_NEAR(rolling_theory(wide).sims_forward_slip, rolling_theory(paper_pass()).sims_forward_slip, 1e-15);
+  // Wusatowski's spread of the paper's 350 mm wide slab: W = 0.0229, 1.14 mm (the issue: 0.5–1.1 mm with Sparling's)
+  EXPECT_NEAR(rolling_theory(wide).wusatowski_spread, 1.1366, 1e-3);
+  EXPECT_EQ(rolling_theory(paper_pass()).wusatowski_spread, 0.0);  // plane strain: no spread
 }
