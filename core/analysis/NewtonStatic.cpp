@@ -97,7 +97,7 @@ class NewtonRun {
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
   /// A rolling pass: the observer hears the last completed increment's roll force and torque.
-  void tell_rolling(const Results& so_far) const;
+  void tell_rolling(const IncrementResults& inc) const;
 
   const Model& model_;
   SolverStrategy& solver_;
@@ -165,11 +165,9 @@ void NewtonRun::add_friction(const std::vector<size_t>& which) {
   layout_.add_body_load(load, which);
 }
 
-void NewtonRun::tell_rolling(const Results& so_far) const {
-  const RollingResults m = measure_rolling(model_, so_far);
-  if (m.increments.empty()) return;
-  const RollingIncrement& last = m.increments.back();
-  obs_.on_rolling_increment(last.travel, last.roll_force, last.roll_torque);
+void NewtonRun::tell_rolling(const IncrementResults& inc) const {
+  const RollingIncrement r = roll_load(model_, inc);
+  obs_.on_rolling_increment(r.travel, r.roll_force, r.roll_torque);
 }
 
 std::vector<double> NewtonRun::group_residuals() const {
@@ -410,7 +408,7 @@ Results NewtonRun::run() {
     }
     res.increments.push_back(std::move(inc));
     obs_.on_increment_end(increment, increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9)));
-    if (model_.rolling && lf < 1.0) tell_rolling(res);
+    if (model_.rolling && lf < 1.0) tell_rolling(res.increments.back());
     obs_.on_progress(lf);
     if (attempt_no == 0) step = std::min(2 * step, nominal);  // grow back after a cut-back once a step converges
     attempt_no = 0;

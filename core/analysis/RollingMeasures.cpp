@@ -143,6 +143,17 @@ int steady_state_from(const std::vector<RollingIncrement>& h, double window) {
   return 0;
 }
 
+RollingIncrement roll_load(const Model& model, const IncrementResults& inc) {
+  const RollingPass& pass = *model.rolling;
+  const double symmetry = model.dim == 3 ? 2.0 : 1.0;  // 3D models half the width
+  RollingIncrement r;
+  r.travel = inc.load_factor * pass.travel;
+  hub_reaction(model, pass, inc.bodies[static_cast<size_t>(pass.roll)], r);
+  r.roll_force *= symmetry;
+  r.roll_torque *= symmetry;
+  return r;
+}
+
 RollingResults measure_rolling(const Model& model, const Results& results) {
   const RollingPass& pass = *model.rolling;
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
@@ -154,11 +165,7 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
   std::vector<std::pair<double, double>> fronts{{0.0, 0.0}};  // (travel, front advance) from the start
   for (const IncrementResults& inc : results.increments) {
     if (inc.bodies.size() != model.bodies.size()) continue;
-    RollingIncrement r;
-    r.travel = inc.load_factor * pass.travel;
-    hub_reaction(model, pass, inc.bodies[static_cast<size_t>(pass.roll)], r);
-    r.roll_force *= symmetry;
-    r.roll_torque *= symmetry;
+    RollingIncrement r = roll_load(model, inc);
     for (const ContactResult& c : inc.contacts) r.contact_length += symmetry * c.measure;
     exit_geometry(pass, slab, inc.bodies[static_cast<size_t>(pass.slab)], contact, r);
     const Eigen::VectorXd& u = inc.bodies[static_cast<size_t>(pass.slab)].displacement;

@@ -23,6 +23,9 @@ RollingIncrement window_mean(const std::vector<RollingIncrement>& history, doubl
 /// two windows).
 int steady_state_from(const std::vector<RollingIncrement>& history, double window);
 
+/// One increment's travel, roll force and torque (the rest of the measures need the history: measure_rolling).
+RollingIncrement roll_load(const Model& model, const IncrementResults& increment);
+
 /// The measures of `results` (its increments' fields) for the pass `model.rolling` (which must be set).
 RollingResults measure_rolling(const Model& model, const Results& results);
 

@@ -34,8 +34,7 @@ struct RollingResults {
   std::vector<ArcPoint> profile;   // contact along the arc at the last increment, by angle
   int bite_increment = 0;          // first increment whose travel drew the slab in (0: the roll did not bite)
   int steady_state_increment = 0;  // first increment from which force and torque stay settled (0: not reached)
-  RollingIncrement
-      steady;  // travel-weighted mean from the steady state on (from its last window; not reached: the last increment)
+  RollingIncrement steady;         // travel-weighted mean from the steady state on (not reached: the last increment)
 };
 
 }  // namespace rollsim

@@ -197,9 +197,8 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
   for (size_t r = 0; r < rows.size(); ++r) {
     const ConstraintRow& row = rows[r];
     if (model.contacts[row.pair].kind != ContactKind::Tied && row.comp < 0 &&
-        lambda[static_cast<Eigen::Index>(r)] > tensile && pairs[row.pair].contact_switches[row.point] < 2) {
+        lambda[static_cast<Eigen::Index>(r)] > tensile && pairs[row.pair].contact_switches[row.point] < 2)
       next[row.pair][row.point] = 0;
-    }
   }
   // entering: an inactive point whose gap after deformation is negative (beyond round-off); it sticks where it is
   for (size_t i = 0; i < pairs.size(); ++i) {
