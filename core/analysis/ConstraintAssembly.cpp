@@ -33,4 +33,23 @@ BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
   return out;
 }
 
+void add_coupling(const std::vector<ConstraintRow>& extra, const std::vector<std::unique_ptr<DofMap>>& dofs,
+                  BodyConstraints& c) {
+  c.coupling.clear();
+  std::vector<std::vector<Eigen::Triplet<double, int>>> t(dofs.size());
+  bool any = false;
+  for (size_t r = 0; r < c.kept.size(); ++r)
+    for (const ConstraintTerm& term : extra[static_cast<size_t>(c.kept[r])].terms) {
+      const int eq = dofs[term.body]->equation(term.node, term.comp);
+      if (eq < 0) continue;
+      t[term.body].emplace_back(static_cast<int>(r), eq, term.coef);
+      any = true;
+    }
+  if (!any) return;
+  for (size_t b = 0; b < dofs.size(); ++b) {
+    c.coupling.emplace_back(static_cast<long>(c.kept.size()), dofs[b]->num_free());
+    c.coupling.back().setFromTriplets(t[b].begin(), t[b].end());
+  }
+}
+
 }  // namespace rollsim

@@ -15,9 +15,18 @@ struct BodyConstraints {
   std::vector<SparseMatrix> C;  // per body: rows × its free dofs
   Eigen::VectorXd d;
   std::vector<int> kept;  // kept[r]: the input row of constraint r (rows on prescribed dofs only are dropped)
+  // per body, when set: what the multipliers add to the bodies' equations beyond Cᵀ (slipping Coulomb friction,
+  // contact/Friction slip_coupling), rows × free dofs; empty: nothing (a symmetric system)
+  std::vector<SparseMatrix> coupling;
 };
 
 BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
                                  const std::vector<std::unique_ptr<DofMap>>& dofs, double load_factor = 1.0);
+
+/// The terms of `extra` (one row per input row of `rows`, as slip_coupling gives them) on the bodies' free dofs, in
+/// the rows of `c` (its `kept` numbering), into c.coupling; terms on prescribed dofs drop (they load no free dof).
+/// c.coupling stays empty when no row has a term.
+void add_coupling(const std::vector<ConstraintRow>& extra, const std::vector<std::unique_ptr<DofMap>>& dofs,
+                  BodyConstraints& c);
 
 }  // namespace rollsim

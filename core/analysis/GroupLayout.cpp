@@ -80,7 +80,7 @@ GroupLayout::GroupLayout(const Model& model, bool split, Multipliers choice) {
       interface_C_[g] = bodies_[b].dec ? shift_rows(B, offset[b], interface_rows_)
                                        : SparseMatrix(static_cast<int>(interface_rows_), free_dofs(g));
     }
-  set_contact(BodyConstraints{std::vector<SparseMatrix>(), Eigen::VectorXd(), {}});
+  set_contact(BodyConstraints{});
 }
 
 void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers choice) {
@@ -143,6 +143,13 @@ void GroupLayout::set_contact(const BodyConstraints& contact) {
     else
       parts = {contact.C[b]};
     for (int i = 0; i < bg.count; ++i) sys_.groups[bg.first + i].C = stack(parts[i], interface_C_[bg.first + i]);
+    std::vector<SparseMatrix> eq;  // C + the coupling of slipping friction: the multipliers' block in the equations
+    if (!contact.coupling.empty()) {
+      const SparseMatrix Ce = contact.C[b] + contact.coupling[b];
+      eq = bg.dec ? split_constraint_columns(Ce, *bg.dec) : std::vector<SparseMatrix>{Ce};
+    }
+    for (int i = 0; i < bg.count; ++i)
+      sys_.groups[bg.first + i].C_eq = eq.empty() ? SparseMatrix() : stack(eq[i], interface_C_[bg.first + i]);
   }
   sys_.d = Eigen::VectorXd::Zero(mc + interface_rows_);
   sys_.d.head(mc) = contact.d;

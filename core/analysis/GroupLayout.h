@@ -34,7 +34,8 @@ class GroupLayout {
   /// Adds a load on the bodies' free dofs (one vector per body) to the residuals f_g of the listed groups (a dof
   /// shared by subdomains loads one of them, as a constraint term does).
   void add_body_load(const std::vector<Eigen::VectorXd>& load, const std::vector<size_t>& groups);
-  /// Puts the contact rows (blocks on the bodies' free dofs) in front of the interface rows.
+  /// Puts the contact rows (blocks on the bodies' free dofs) in front of the interface rows; with a coupling
+  /// (contact.coupling), the groups' C_eq as well.
   void set_contact(const BodyConstraints& contact);
   /// Free-dof vector of every body from the groups' solution (interface copies averaged).
   std::vector<Eigen::VectorXd> body_solution(const BlockSolution& sol) const;

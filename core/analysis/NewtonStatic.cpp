@@ -63,7 +63,9 @@ class NewtonRun {
     for (const ContactPair& p : model.contacts) {
       step_sliding_ = step_sliding_ || p.sliding == ContactPair::Sliding::Step;
       iteration_sliding_ = iteration_sliding_ || p.sliding == ContactPair::Sliding::Iteration;
+      couple_slip_ = couple_slip_ || p.kind == ContactKind::Coulomb;
     }
+    couple_slip_ = couple_slip_ && opt.consistent_friction && solver.solves_unsymmetric();
     save();
   }
 
@@ -77,7 +79,8 @@ class NewtonRun {
   /// Residuals (and trial states) of `which`, tangents of `tangent`; empty cause when no element inverted.
   std::string assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                        GroupAssembler::Factors at);
-  /// The slipping points' friction forces (μ × the normal force of the last solve) added to the residuals of `which`.
+  /// The slipping points' friction forces (μ × the normal force of the last solve) added to the residuals of `which`
+  /// (with couple_slip_: those whose force the system's C_eq holds are left to it).
   void add_friction(const std::vector<size_t>& which);
   /// ‖R_g‖ = ‖f_g − C_gᵀλ‖ per group (λ of the last solve when it belongs to the current rows, else 0).
   std::vector<double> group_residuals() const;
@@ -116,6 +119,7 @@ class NewtonRun {
   bool refresh_all_ = false;        // after a cut-back: every group gets a new tangent and factor (none is current)
   bool step_sliding_ = false;       // a pair is searched again where each step begins
   bool iteration_sliding_ = false;  // a pair is searched again at every iteration
+  bool couple_slip_ = false;        // slipping Coulomb friction in the system's matrix (C_eq), not lagged
   bool search_again_ = false;       // the step converged on projections that moved: search at the iterate
   std::vector<std::array<int, 3>> row_keys_;      // (pair, slave node, component) of the kept contact rows
   std::vector<Eigen::VectorXd> step_start_;       // every dof of every body where the current step began
@@ -134,6 +138,7 @@ void NewtonRun::set_constraints(double lf, bool step_begins) {
   if (iteration_sliding_) follow_contacts(model_, body_displacements(lf), pairs_, ContactPair::Sliding::Iteration);
   rows_ = contact_rows(model_, pairs_);
   contact_ = body_constraints(rows_, layout_.body_dofs(), lf);
+  if (couple_slip_) add_coupling(slip_coupling(model_, pairs_, rows_), layout_.body_dofs(), contact_);
   layout_.set_contact(contact_);
   BlockSystem& sys = layout_.system();
   for (size_t g = 0; g < sys.groups.size(); ++g) sys.d -= sys.groups[g].C * u_[g];  // C du = d − C u
@@ -159,7 +164,8 @@ std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vec
 }
 
 void NewtonRun::add_friction(const std::vector<size_t>& which) {
-  std::vector<Eigen::VectorXd> load = friction_loads(model_, pairs_);
+  std::vector<Eigen::VectorXd> load =
+      friction_loads(model_, pairs_, couple_slip_ ? FrictionLoads::Capped : FrictionLoads::All);
   if (load.empty()) return;
   for (size_t b = 0; b < load.size(); ++b) load[b] = layout_.body_dofs()[b]->restrict_to_free(load[b]);
   layout_.add_body_load(load, which);
@@ -173,7 +179,8 @@ void NewtonRun::tell_rolling(const IncrementResults& inc) const {
 std::vector<double> NewtonRun::group_residuals() const {
   const BlockSystem& sys = layout_.system();
   std::vector<double> r;
-  for (const Group& g : sys.groups) r.push_back(lambda_valid_ ? (g.f - g.C.transpose() * lambda_).norm() : g.f.norm());
+  for (const Group& g : sys.groups)
+    r.push_back(lambda_valid_ ? (g.f - g.equation_C().transpose() * lambda_).norm() : g.f.norm());
   return r;
 }
 
@@ -214,7 +221,8 @@ double norm(const std::vector<Eigen::VectorXd>& parts) {
 double NewtonRun::energy(const std::vector<Eigen::VectorXd>& du) const {
   const BlockSystem& sys = layout_.system();
   double s = 0;
-  for (size_t g = 0; g < du.size(); ++g) s += du[g].dot(sys.groups[g].f - sys.groups[g].C.transpose() * lambda_);
+  for (size_t g = 0; g < du.size(); ++g)
+    s += du[g].dot(sys.groups[g].f - sys.groups[g].equation_C().transpose() * lambda_);
   return s;
 }
 

@@ -25,6 +25,7 @@ struct NewtonOptions {
   double displacement_tolerance = 1e-2;  // and ‖du_k‖ ≤ this × ‖u − u_n‖ (the step's displacement)
   int max_cutbacks = 8;                  // failed attempts in the whole run before it is declared diverged
   bool line_search = true;               // one secant step along du when the residual's work along it did not halve
+  bool consistent_friction = true;       // slipping Coulomb friction solved with λ_n (C_eq) where the strategy can
 };
 
 /// Runs the Newton analysis; Results::status is converged, cancelled (between iterations: the last converged step

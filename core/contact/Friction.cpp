@@ -104,7 +104,33 @@ Eigen::Vector3d friction_direction(const PairState& s, size_t j) {
   return d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::Zero();
 }
 
-std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs) {
+bool slip_moves_with_normal(const ContactPair& p, const PairState& s, size_t j) {
+  if (p.kind != ContactKind::Coulomb || !s.active[j] || !s.slip[j]) return false;
+  if (p.shear_limit > 0 && p.friction * s.normal_force[j] > p.shear_limit * s.points[j].weight) return false;
+  return friction_direction(s, j).norm() > 0;
+}
+
+std::vector<ConstraintRow> slip_coupling(const Model& model, const std::vector<PairState>& pairs,
+                                         const std::vector<ConstraintRow>& rows) {
+  std::vector<ConstraintRow> out(rows.size());
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const ContactPair& p = model.contacts[rows[r].pair];
+    const PairState& s = pairs[rows[r].pair];
+    const auto j = static_cast<size_t>(rows[r].point);
+    if (rows[r].comp >= 0 || !slip_moves_with_normal(p, s, j)) continue;
+    const ContactPoint& c = s.points[j];
+    const Eigen::Vector3d d = p.friction * friction_direction(s, j);
+    for (int k = 0; k < model.dim; ++k) {
+      out[r].terms.push_back({p.slave_body, c.slave_node, k, d[k]});
+      for (size_t n = 0; n < c.master_nodes.size(); ++n)
+        out[r].terms.push_back({p.master_body, c.master_nodes[n], k, -c.N[n] * d[k]});
+    }
+  }
+  return out;
+}
+
+std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs,
+                                            FrictionLoads which) {
   bool any = false;
   for (const ContactPair& p : model.contacts) any = any || can_slip(p);
   if (!any) return {};
@@ -118,6 +144,7 @@ std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vecto
     const PairState& s = pairs[i];
     for (size_t j = 0; j < s.points.size(); ++j) {
       if (!s.active[j] || !s.slip[j]) continue;
+      if (which == FrictionLoads::Capped && slip_moves_with_normal(p, s, j)) continue;
       const ContactPoint& c = s.points[j];
       const Eigen::Vector3d F = slip_force(p, s.normal_force[j], c.weight) * friction_direction(s, j);
       for (int k = 0; k < dim; ++k) {

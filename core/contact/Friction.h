@@ -3,8 +3,9 @@
 // through tangential rows; after each solve, a point whose tangential force exceeds μ times its normal force slips
 // (its tangential rows go, and a friction force of exactly μ times the normal force of the last solve acts against
 // its relative motion, as a load on both bodies), and a slipping point whose motion turns along that force sticks
-// again. The bodies' stiffness blocks stay symmetric; the friction force lags one iteration behind the normal force,
-// and Newton's residual carries the difference until it converges.
+// again. The bodies' stiffness blocks stay symmetric. A strategy that solves unsymmetric systems gets the friction
+// force's dependence on the normal multiplier in the multipliers' columns (slip_coupling); for the others the
+// friction force lags one iteration behind the normal force, and Newton's residual carries the difference.
 #include <vector>
 
 #include "contact/ContactConstraints.h"
@@ -42,8 +43,25 @@ double slip_force(const ContactPair& p, double normal_force, double weight);
 /// tangent plane of its master facet (zero when it has none).
 Eigen::Vector3d friction_direction(const PairState& s, size_t j);
 
+/// Whether slipping point j of pair p carries μ × its normal force (Coulomb, under the shear cap, with a friction
+/// direction): its friction force then moves with its normal multiplier λ_n (−μ λ_n along the direction).
+bool slip_moves_with_normal(const ContactPair& p, const PairState& s, size_t j);
+
+/// Which slipping points friction_loads counts: all, or those whose friction force does not move with λ_n (the
+/// capped ones) — when the others are in the system's matrix through slip_coupling.
+enum class FrictionLoads { All, Capped };
+
 /// The friction forces of the slipping points, per body, every dof (node-major): μ N along the friction
-/// direction on the slave node, the opposite on the master nodes by their weights. Empty when no pair is Coulomb.
-std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs);
+/// direction on the slave node, the opposite on the master nodes by their weights. Empty when no pair can slip.
+std::vector<Eigen::VectorXd> friction_loads(const Model& model, const std::vector<PairState>& pairs,
+                                            FrictionLoads which = FrictionLoads::All);
+
+/// The consistent linearisation of slipping Coulomb friction: for each row of `rows`, the terms μ d (slave node) and
+/// −μ N_k d (master nodes) when it is the normal row of a point whose friction force moves with its multiplier
+/// (slip_moves_with_normal; d its friction direction), no terms otherwise. The row's multiplier then enters the
+/// equations through C + these terms (Group::C_eq): the friction force μ N = −μ λ_n is solved for with λ_n instead
+/// of lagging one iteration behind it, and Newton converges quadratically on a fixed stick/slip set.
+std::vector<ConstraintRow> slip_coupling(const Model& model, const std::vector<PairState>& pairs,
+                                         const std::vector<ConstraintRow>& rows);
 
 }  // namespace rollsim

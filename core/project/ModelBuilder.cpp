@@ -510,6 +510,7 @@ NewtonOptions newton_options(const Project& project) {
   o.tolerance = a->value("tolerance", o.tolerance);
   o.max_cutbacks = a->value("max_cutbacks", o.max_cutbacks);
   o.line_search = a->value("line_search", o.line_search);
+  o.consistent_friction = a->value("friction_tangent", std::string("consistent")) == "consistent";
   return o;
 }
 

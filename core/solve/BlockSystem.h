@@ -25,10 +25,17 @@ struct Group {
   SparseMatrix K;     // free-free stiffness, both triangles stored
   Eigen::VectorXd f;  // external load plus the load of prescribed dofs
   SparseMatrix C;     // multipliers × free dofs of this group (paper's C_j / B_i); 0 × n without constraints
+  // How the multipliers enter this group's equations, K_g u_g + C_eqᵀ λ = f_g, where that differs from C: a slipping
+  // Coulomb point's friction force μ λ_n moves with its normal multiplier (contact/Friction slip_coupling), which
+  // makes the system unsymmetric. Empty when it is C; only strategies that solve_unsymmetric() get one.
+  SparseMatrix C_eq;
   long version = 0;   // bumped by mark_updated (solve/UpdatePolicy) when K is re-assembled: strategies refactor
                       // a group only then
   Eigen::MatrixXd R;  // basis of ker K_g (rigid modes left free by the supports); n × 0 when K_g is regular
   DofGeometry geometry;
+
+  /// The multipliers' block in this group's equations: C_eq when set, else C.
+  const SparseMatrix& equation_C() const { return C_eq.rows() > 0 ? C_eq : C; }
 };
 
 /// What a range of multipliers stands for: contact rows (C_j) or the glue of a body's subdomains (B_i).

@@ -21,7 +21,7 @@ void add_block(Triplets& t, const SparseMatrix& A, long row0, long col0, bool tr
     }
 }
 
-/// Paper eq. (1): the groups' K on the diagonal, C and Cᵀ in the border, multipliers last.
+/// Paper eq. (1): the groups' K on the diagonal, C and Cᵀ (C_eqᵀ) in the border, multipliers last.
 SparseMatrix global_matrix(const BlockSystem& sys) {
   const long n = sys.num_dofs(), m = sys.num_multipliers();
   Triplets t;
@@ -30,7 +30,7 @@ SparseMatrix global_matrix(const BlockSystem& sys) {
     add_block(t, g.K, offset, offset, false);
     if (m > 0) {
       add_block(t, g.C, n, offset, false);
-      add_block(t, g.C, offset, n, true);
+      add_block(t, g.equation_C(), offset, n, true);  // C_eqᵀ: unsymmetric under slipping Coulomb friction
     }
     offset += g.K.rows();
   }
@@ -44,7 +44,7 @@ SparseMatrix global_matrix(const BlockSystem& sys) {
 void check_backward_error(const SparseMatrix& A, const Eigen::VectorXd& x, const Eigen::VectorXd& f) {
   if (!x.allFinite()) return;  // overflow: the caller's check of the results names the magnitudes
   double norm_A = 0;
-  for (int j = 0; j < A.outerSize(); ++j) {  // A is symmetric: the largest column sum is ‖A‖∞
+  for (int j = 0; j < A.outerSize(); ++j) {  // the largest column sum: ‖A‖∞ (‖A‖₁ when A is unsymmetric)
     double sum = 0;
     for (SparseMatrix::InnerIterator it(A, j); it; ++it) sum += std::abs(it.value());
     norm_A = std::max(norm_A, sum);
@@ -73,7 +73,9 @@ void GlobalDirect::add_times(const FactorStats& s) {
 bool GlobalDirect::factored(const BlockSystem& sys) const {
   if (!factor_ || factored_versions_.size() != sys.groups.size()) return false;
   for (size_t g = 0; g < sys.groups.size(); ++g)
-    if (factored_versions_[g] != sys.groups[g].version || !same_matrix(factored_C_[g], sys.groups[g].C)) return false;
+    if (factored_versions_[g] != sys.groups[g].version || !same_matrix(factored_C_[g], sys.groups[g].C) ||
+        !same_matrix(factored_C_eq_[g], sys.groups[g].C_eq))
+      return false;
   return true;
 }
 
@@ -88,10 +90,12 @@ void GlobalDirect::factorize(const BlockSystem& sys, const SparseMatrix& A, Anal
   }
   factored_versions_.clear();
   factored_C_.clear();
+  factored_C_eq_.clear();
   factor_->factorize(A);
   for (const Group& g : sys.groups) {
     factored_versions_.push_back(g.version);
     factored_C_.push_back(g.C);
+    factored_C_eq_.push_back(g.C_eq);
     ++stats_.factorizations[g.name];
     if (observer) observer->on_factorization(g.name);
   }

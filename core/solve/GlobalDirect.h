@@ -12,6 +12,8 @@ class GlobalDirect final : public SolverStrategy {
   explicit GlobalDirect(std::string factorization_kind);
   BlockSolution solve(const BlockSystem& system, AnalysisObserver* observer = nullptr) override;
   const SolveStats& stats() const override { return stats_; }
+  /// UMFPACK's LU factors the bordered matrix whatever its symmetry (skyline's LDLᵀ needs it symmetric).
+  bool solves_unsymmetric() const override { return kind_ == "cholmod"; }
 
  private:
   std::string kind_;
@@ -23,7 +25,7 @@ class GlobalDirect final : public SolverStrategy {
   /// (Re-)analyses when the pattern changed, factors A, records the versions and blocks it holds.
   void factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer);
   std::vector<long> factored_versions_;
-  std::vector<SparseMatrix> factored_C_;
+  std::vector<SparseMatrix> factored_C_, factored_C_eq_;
   SparsityPattern analyzed_;  // of the last analysis: a new pattern (not only a new size) needs a new one
   long trailing_ = 0;
   FactorStats earlier_;  // times of factors replaced by a new pattern (active-set changes)

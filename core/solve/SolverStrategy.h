@@ -43,6 +43,9 @@ class SolverStrategy {
   /// The groups among `groups` this process assembles (all of them; petsc: its MPI rank's subdomain only — the
   /// other ranks build the others).
   virtual std::vector<size_t> local_groups(std::vector<size_t> groups) const { return groups; }
+  /// True when it solves systems whose groups carry C_eq ≠ C (the unsymmetric coupling of slipping Coulomb friction);
+  /// the Newton driver lags the friction force one iteration behind the normal force for the others.
+  virtual bool solves_unsymmetric() const { return false; }
   /// Why the strategy cannot serve the Newton driver ("" when it can).
   virtual std::string newton_refusal() const { return ""; }
   /// Why the strategy cannot solve a model with contact pairs ("" when it can): asked before the first solve, since

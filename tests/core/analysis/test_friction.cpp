@@ -107,6 +107,24 @@ TEST_P(Friction, AShearLimitCapsTheFrictionStressAtItsValueTimesTheContactLength
 
 INSTANTIATE_TEST_SUITE_P(Modes, Friction, ::testing::Values("direct", "mixed"));
 
+TEST(FrictionTangent, TheConsistentTangentReachesTheSameSlidingForceInFewerIterations) {
+  // the sliding block under `direct`: with the friction force μ λ_n solved for with λ_n (an unsymmetric system) Newton
+  // converges quadratically once the stick/slip set holds; lagged one iteration behind λ_n it converges linearly
+  auto run = [](const std::string& tangent) {
+    json p = drag(1.0, "coulomb", "direct");
+    p["analysis"]["friction_tangent"] = tangent;
+    return run_json(p);
+  };
+  const Results consistent = run("consistent"), lagged = run("lagged");
+  ASSERT_TRUE(consistent.status.ok()) << consistent.status.message;
+  ASSERT_TRUE(lagged.status.ok()) << lagged.status.message;
+  const double n = consistent.contacts.at(0).normal_force;
+  EXPECT_NEAR(consistent.contacts.at(0).tangential_force, lagged.contacts.at(0).tangential_force, 1e-6 * n);
+  EXPECT_NEAR(n, lagged.contacts.at(0).normal_force, 1e-6 * n);
+  EXPECT_LT(consistent.newton.size() * 3, lagged.newton.size() * 2)
+      << consistent.newton.size() << " iterations against " << lagged.newton.size();
+}
+
 TEST(FrictionInput, BadFrictionIsRefusedWithItsPath) {
   struct Case {
     std::string what, path;
