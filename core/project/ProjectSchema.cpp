@@ -411,10 +411,12 @@ const ObjectSchema kAnalysis{
          50),
      def(count("max_iterations", "Newton: iterations of one step before it is cut back", 200), 25), newton_tolerance(),
      max_cutbacks(),
-     choice("friction_tangent", {"consistent", "lagged"}, "consistent",
-            "Newton with Coulomb friction: consistent — a slipping point's friction force μ λ_n is solved for with "
-            "its normal multiplier (an unsymmetric system: solver direct; mixed, feti and skyline lag it whatever "
-            "this says); lagged — it lags one iteration behind the normal force (a symmetric system)"),
+     choice(
+         "friction_tangent", {"consistent", "lagged"}, "consistent",
+         "Newton with Coulomb friction: consistent — a slipping point's friction force μ λ_n is solved for with "
+         "its normal multiplier (an unsymmetric system: UMFPACK under direct, projected GMRES on the interface under "
+         "mixed and feti; skyline lags it whatever this says); lagged — it lags one iteration behind the normal "
+         "force (a symmetric system)"),
      [] {
        Field f;
        f.name = "line_search";

@@ -4,6 +4,7 @@
 
 #include "solve/Blas.h"
 #include "solve/Parallel.h"
+#include "solve/ProjectedGMRES.h"
 #include "solve/SparseCompare.h"
 #include "solve/Stopwatch.h"
 
@@ -65,27 +66,38 @@ InterfaceProblem MixedStrategy::interface_problem(const BlockSystem& sys, const 
   const long m = sys.num_multipliers();
   p.b = -sys.d;
   p.e.resize(sys.num_rigid_modes());
-  // G = [C_g R_g], sparse: group g's modes touch only its own constraint rows
-  std::vector<Eigen::Triplet<double, int>> t;
+  // G = [C_g R_g], sparse: group g's modes touch only its own constraint rows; G̃ = [C_eq,g R_g] when a group's
+  // equations take C_eq (slipping Coulomb friction: an unsymmetric problem)
+  std::vector<Eigen::Triplet<double, int>> t, tt;
+  bool unsymmetric = false;
   int col = 0;
   for (size_t g = 0; g < sys.groups.size(); ++g) {
     const Group& grp = sys.groups[g];
     p.b += grp.C * Kf[g];  // paper eq. (2)/(8): b = Σ C_g K_g⁺ f_g − d
+    unsymmetric = unsymmetric || grp.C_eq.rows() > 0;
     if (grp.R.cols() == 0) continue;
-    const SparseMatrix CR = grp.C * SparseMatrix(grp.R.sparseView());
-    for (int j = 0; j < CR.outerSize(); ++j)
+    const SparseMatrix R = grp.R.sparseView();
+    const SparseMatrix CR = grp.C * R, CeqR = grp.equation_C() * R;
+    for (int j = 0; j < CR.outerSize(); ++j) {
       for (SparseMatrix::InnerIterator it(CR, j); it; ++it) t.emplace_back(it.row(), col + j, it.value());
+      for (SparseMatrix::InnerIterator it(CeqR, j); it; ++it) tt.emplace_back(it.row(), col + j, it.value());
+    }
     p.e.segment(col, grp.R.cols()) = grp.R.transpose() * grp.f;  // e = [R_gᵀ f_g]
     col += static_cast<int>(grp.R.cols());
   }
   p.Gs.resize(static_cast<int>(m), col);
   p.Gs.setFromTriplets(t.begin(), t.end());
-  p.F = [this, &sys](const Eigen::VectorXd& lambda) {
+  if (unsymmetric) {
+    p.Gt.resize(static_cast<int>(m), col);
+    p.Gt.setFromTriplets(tt.begin(), tt.end());
+  }
+  p.F = [this, &sys](const Eigen::VectorXd& lambda) {  // F λ = Σ C_g K_g⁺ C_eq,gᵀ λ
     return sum_over_groups(sys, [&](size_t g) -> Eigen::VectorXd {
       const Group& grp = sys.groups[g];
-      return groups_[g].apply(grp.C.transpose() * lambda);
+      return groups_[g].apply(grp.equation_C().transpose() * lambda);
     });
   };
+  p.unsymmetric = unsymmetric;
   return p;
 }
 
@@ -127,11 +139,11 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   std::vector<Eigen::VectorXd> Kf(sys.groups.size());
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) { Kf[g] = groups_[g].apply(sys.groups[g].f); });
   InterfaceProblem problem = interface_problem(sys, Kf);
-  if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols())
+  if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols() && !problem.unsymmetric)
     problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
   ProjectedCGOptions cg{options_.cg_tolerance, 10000, {}, solve};
   if (preconditioner_) cg.preconditioner = [&](const Eigen::VectorXd& w) { return preconditioner_->apply(sys, w); };
-  last_ = projected_cg(problem, cg, observer);
+  last_ = problem.unsymmetric ? projected_gmres(problem, cg, observer) : projected_cg(problem, cg, observer);
   stats_.cg_iterations += last_.iterations;
   stats_.cg_lambda_min = last_.lambda_min;
   stats_.cg_lambda_max = last_.lambda_max;
@@ -143,7 +155,7 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   out.u.resize(sys.groups.size());
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) {
     const Group& grp = sys.groups[g];
-    Eigen::VectorXd u = grp.C.nonZeros() ? groups_[g].apply(grp.f - grp.C.transpose() * out.lambda) : Kf[g];
+    Eigen::VectorXd u = grp.C.nonZeros() ? groups_[g].apply(grp.f - grp.equation_C().transpose() * out.lambda) : Kf[g];
     if (grp.R.cols()) u += grp.R * last_.alpha.segment(first_mode[g], grp.R.cols());  // paper eq. (5)
     out.u[g] = std::move(u);
   });

@@ -20,6 +20,8 @@ class MixedStrategy final : public SolverStrategy {
   const SolveStats& stats() const override { return stats_; }
   bool uses_subdomains() const override { return subdomains_; }
   const SolverOptions& options() const override { return options_; }
+  /// A group with C_eq (slipping Coulomb friction) makes the interface unsymmetric: projected GMRES solves it.
+  bool solves_unsymmetric() const override { return true; }
   /// λ is as accurate as the interface CG's relative tolerance
   double multiplier_tolerance() const override { return options_.cg_tolerance; }
   /// The last interface solve (residual history, constraint error), for tests and reports.

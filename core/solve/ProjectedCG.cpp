@@ -5,49 +5,11 @@
 #include <tuple>
 
 #include "solve/Factorization.h"
+#include "solve/Projector.h"
 
 namespace rollsim {
 
 namespace {
-/// The projectors P = I − QG(GᵀQG)⁻¹Gᵀ (search directions) and Pᵀ = I − G(GᵀQG)⁻¹(QG)ᵀ (residuals), with GᵀQG
-/// factored once; Q = I when no QG is given (then P = Pᵀ). G is sparse: a floating group's modes touch only its
-/// own constraint rows, so in FETI G has a few hundred nonzeros per column out of tens of thousands of rows (3D 40³
-/// in 5×5×5 subdomains: 60k multipliers × 750 modes, 360 MB dense); dense, the products with G and Gᵀ made the
-/// projection the most expensive part of every CG iteration and GᵀG a 30 GFlop product.
-class Projector {
- public:
-  Projector(const SparseMatrix& G, const SparseMatrix* QG) : G_(G), QG_(QG ? *QG : G) {
-    if (G.cols() == 0) return;
-    const Eigen::MatrixXd GtQG = Eigen::MatrixXd(SparseMatrix(G.transpose() * QG_));
-    qr_.compute(GtQG);
-    qr_.setThreshold(1e-10);
-    if (qr_.rank() < GtQG.cols())
-      throw SingularMatrix("GᵀQG is singular: the constraints do not hold every rigid mode", -1);
-  }
-  /// P y: a direction in ker Gᵀ
-  Eigen::VectorXd direction(const Eigen::VectorXd& y) const {
-    return G_.cols() == 0 ? y : Eigen::VectorXd(y - QG_ * coarse(G_.transpose() * y));
-  }
-  /// Pᵀ r: the residual seen from ker Gᵀ
-  Eigen::VectorXd residual(const Eigen::VectorXd& r) const {
-    return G_.cols() == 0 ? r : Eigen::VectorXd(r - G_ * coarse(QG_.transpose() * r));
-  }
-  /// λ0 = QG(GᵀQG)⁻¹e, which satisfies Gᵀλ0 = e
-  Eigen::VectorXd start(const Eigen::VectorXd& e, Eigen::Index rows) const {
-    return G_.cols() == 0 ? Eigen::VectorXd(Eigen::VectorXd::Zero(rows)) : Eigen::VectorXd(QG_ * coarse(e));
-  }
-  /// α = −(GᵀQG)⁻¹(QG)ᵀ r, so that r + Gα = b − Fλ + Gα is annihilated by (QG)ᵀ
-  Eigen::VectorXd amplitudes(const Eigen::VectorXd& r) const {
-    return G_.cols() == 0 ? Eigen::VectorXd() : Eigen::VectorXd(-coarse(QG_.transpose() * r));
-  }
-
- private:
-  Eigen::VectorXd coarse(const Eigen::VectorXd& v) const { return qr_.solve(v); }  // (GᵀQG)⁻¹ v
-  const SparseMatrix& G_;
-  const SparseMatrix& QG_;
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
-};
-
 /// Extreme eigenvalues of the Lanczos tridiagonal matrix that CG builds implicitly from its step lengths a_k and
 /// direction updates b_k (Saad, Iterative Methods, §6.7.3): T_kk = 1/a_k + b_k/a_{k−1}, T_k,k+1 = √b_{k+1}/a_k.
 std::pair<double, double> lanczos_extremes(const std::vector<double>& a, const std::vector<double>& b) {

@@ -26,6 +26,10 @@ struct InterfaceProblem {
   SparseMatrix Gs;    // … or the same as a sparse matrix (used when it has columns; FETI: G is very sparse)
   Eigen::VectorXd e;  // one entry per rigid mode
   const SparseMatrix* QG = nullptr;  // Q G for a weighted projector (same shape as G, kept by the caller); null: Q = I
+  // G̃ = [C_eq,g R_g] of an unsymmetric problem (F = Σ C_g K_g⁺ C_eq,gᵀ, the constraint G̃ᵀλ = e; projected_gmres):
+  // empty when it is G
+  SparseMatrix Gt;
+  bool unsymmetric = false;  // some group's equations take C_eq ≠ C: F is unsymmetric (projected_gmres, not CG)
 };
 
 struct ProjectedCGOptions {

@@ -11,7 +11,10 @@
 #   convergence: the pass to steady state (150 mm) on three meshes refined together (slab 36x6, 54x9, 72x12; roll
 #            120, 180, 240 around; increments 1, 0.75, 0.5 mm), direct: steady force, torque, forward slip, exit
 #            thickness, volume change.
-# Usage: tests/bench/run_rolling_benchmarks.sh [table13|table15|convergence] [--rollsim BIN] [--repeat N] [--travel MM]
+#   friction: the 36x6 pass to steady state (120 mm, 0.5 mm steps): sticking, Coulomb μ 0.4 / 0.3 (direct's
+#            consistent friction tangent; μ 0.3 also by mixed, lagged) / 0.25, and a rigid against an elastic roll
+#            (Hitchcock) with a mild hardening H = 100 MPa: steady means, Newton iterations and cut-backs.
+# Usage: tests/bench/run_rolling_benchmarks.sh [table13|table15|convergence|friction] [--rollsim BIN] [--repeat N] [--travel MM]
 # This script builds nothing. Timing is not a test: it fails only if a run fails.
 set -euo pipefail
 
@@ -26,7 +29,7 @@ while (($#)); do
     --rollsim) ROLLSIM=$2; shift 2 ;;
     --repeat) REPEAT=$2; shift 2 ;;
     --travel) TRAVEL=$2; shift 2 ;;
-    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,17p "$0"; exit 0 ;;
     *) echo "run_rolling_benchmarks: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -155,9 +158,57 @@ PY
   done
 }
 
+# variant NAME SOLVER KEY=VALUE... -> runs the 36x6 pass, 0.5 mm steps, 120 mm, with these process fields; one row
+variant() {
+  local name=$1 solver=$2
+  shift 2
+  python3 - "$ROOT/samples/rolling-2d-36x6.json" "$WORK/$name.json" "$@" <<'PY'
+import json, sys
+src, dst, *fields = sys.argv[1:]
+p = json.load(open(src))
+p["process"].update(travel=120.0, travel_increment=0.5)
+for f in fields:
+    k, v = f.split("=")
+    p["process"][k] = float(v) if v[0].isdigit() else v
+json.dump(p, open(dst, "w"))
+PY
+  "$ROLLSIM" run "$WORK/$name.json" --quiet --out "$WORK/$name" --solver "$solver" >/dev/null 2>&1 || true
+  python3 - "$WORK/$name" "$name" "$solver" <<'PY'
+import csv, json, sys
+out, name, solver = sys.argv[1:]
+try:
+    d = json.load(open(out + "/summary.json"))
+except OSError:
+    print(f"| {name} | {solver} | no summary.json: the run ended without writing one | | | | | | |")
+    sys.exit()
+rows = list(csv.DictReader(open(out + "/convergence.csv")))
+its, cut = len(rows), sum(1 for r in rows if r["iteration"] == "1" and r["attempt"] != "0")
+if d["status"] != "converged":
+    print(f"| {name} | {solver} | {d['status']}: {d.get('message', '')[:100]} | | | | | | |")
+    sys.exit()
+r = d["results"]["rolling"]
+travel = d["increments"][r["steady_state_increment"] - 1]["load_factor"] * 120
+print(f"| {name} | {solver} | {travel:.1f} | {r['roll_force']:.1f} | {r['roll_torque'] / 1000:.2f} | "
+      f"{100 * r['forward_slip']:.2f} | {r['exit_thickness']:.3f} | {r['contact_length']:.1f} | {its} ({cut}) |")
+PY
+}
+
+friction() {
+  echo "| pass | solver | steady from mm | roll force N/mm | torque kN·m/m | forward slip % | exit mm | contact length mm | Newton iterations (cut-backs) |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+  variant sticking direct
+  variant coulomb-0.4 direct friction=coulomb friction_coefficient=0.4
+  variant coulomb-0.3 direct friction=coulomb friction_coefficient=0.3
+  variant coulomb-0.3 mixed friction=coulomb friction_coefficient=0.3
+  variant coulomb-0.25 direct friction=coulomb friction_coefficient=0.25
+  variant rigid-H100 direct roll=rigid slab_hardening=100
+  variant elastic-H100 direct slab_hardening=100
+}
+
 case $PART in
   table13) table13 ;;
   table15) table15 ;;
   convergence) convergence ;;
-  *) echo "run_rolling_benchmarks: unknown part $PART (table13, table15 or convergence)" >&2; exit 2 ;;
+  friction) friction ;;
+  *) echo "run_rolling_benchmarks: unknown part $PART (table13, table15, convergence or friction)" >&2; exit 2 ;;
 esac

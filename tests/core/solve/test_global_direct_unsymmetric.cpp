@@ -40,7 +40,6 @@ Eigen::VectorXd dense_solve(const BlockSystem& sys) {
 TEST(GlobalDirectUnsymmetric, SolvesTheBorderedSystemWithCeqInTheEquations) {
   auto direct = make_solver("direct", {});
   ASSERT_TRUE(direct->solves_unsymmetric());
-  EXPECT_FALSE(make_solver("mixed", {})->solves_unsymmetric());
   EXPECT_FALSE(make_solver("skyline", {})->solves_unsymmetric());
   for (const Eigen::RowVector3d& ceq : {Eigen::RowVector3d(1, 0.3, -1), Eigen::RowVector3d(1, -0.3, -1)}) {
     const BlockSystem sys = system_with(ceq);  // the second: only C_eq changed — the factor must follow it

@@ -1,0 +1,99 @@
+#include "solve/ProjectedGMRES.h"
+
+#include <cmath>
+#include <vector>
+
+#include "solve/Projector.h"
+
+namespace rollsim {
+
+namespace {
+constexpr int kRestart = 200;
+
+/// One GMRES cycle's Hessenberg matrix, reduced to upper triangular by Givens rotations as it grows.
+struct Hessenberg {
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(kRestart + 1, kRestart);
+  Eigen::VectorXd g, c = Eigen::VectorXd::Zero(kRestart), s = Eigen::VectorXd::Zero(kRestart);
+
+  explicit Hessenberg(double beta) : g(Eigen::VectorXd::Zero(kRestart + 1)) { g[0] = beta; }
+  /// Rotates column j (entries 0..j+1, already filled) and returns the new residual estimate |g_{j+1}|.
+  double rotate(int j) {
+    for (int i = 0; i < j; ++i) {
+      const double a = H(i, j), b = H(i + 1, j);
+      H(i, j) = c[i] * a + s[i] * b;
+      H(i + 1, j) = -s[i] * a + c[i] * b;
+    }
+    const double r = std::hypot(H(j, j), H(j + 1, j));
+    c[j] = r > 0 ? H(j, j) / r : 1.0;
+    s[j] = r > 0 ? H(j + 1, j) / r : 0.0;
+    H(j, j) = r, H(j + 1, j) = 0;
+    g[j + 1] = -s[j] * g[j];
+    g[j] *= c[j];
+    return std::abs(g[j + 1]);
+  }
+  /// y of the least-squares problem over the first k columns.
+  Eigen::VectorXd solve(int k) const { return H.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k)); }
+};
+}  // namespace
+
+ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOptions& o, AnalysisObserver* observer) {
+  const SparseMatrix& G = p.Gs;
+  const SparseMatrix& Gt = p.Gt.cols() ? p.Gt : p.Gs;
+  const Projector P(Gt, &G);  // direction(y) = Π y = y − G(G̃ᵀG)⁻¹G̃ᵀ y; start(e) = G(G̃ᵀG)⁻¹e
+  ProjectedCGResult res;
+  res.lambda = P.start(p.e, p.b.size());
+  Eigen::VectorXd raw = p.b - p.F(res.lambda);
+  Eigen::VectorXd r = P.direction(raw);
+  const double r0 = r.norm();
+  const double floor = 1e-14 * std::max(raw.norm(), p.b.norm());
+  res.residuals.push_back(r0 > floor ? 1.0 : 0.0);
+  res.converged = r0 <= floor;
+  while (!res.converged && !res.breakdown && !res.cancelled && res.iterations < o.max_iterations) {
+    const double beta = r.norm();
+    Hessenberg h(beta);
+    std::vector<Eigen::VectorXd> V{r / beta}, Z;
+    int k = 0;
+    for (; k < kRestart && res.iterations < o.max_iterations; ++k) {
+      Z.push_back(o.preconditioner ? P.direction(o.preconditioner(V[k])) : V[k]);
+      Eigen::VectorXd w = P.direction(p.F(Z[k]));
+      for (int i = 0; i <= k; ++i) {
+        h.H(i, k) = w.dot(V[i]);
+        w -= h.H(i, k) * V[i];
+      }
+      h.H(k + 1, k) = w.norm();
+      const double next = h.H(k + 1, k);
+      const double rel = h.rotate(k) / r0;
+      ++res.iterations;
+      res.residuals.push_back(rel);
+      if (observer) observer->on_cg_iteration(o.solve, res.iterations, rel);
+      if (!std::isfinite(rel)) {
+        res.breakdown = true;
+        break;
+      }
+      if (rel <= o.tolerance || next <= 1e-14 * beta) {  // converged, or the Krylov space is exhausted
+        ++k;
+        break;
+      }
+      V.push_back(w / next);
+      if (observer && observer->cancel_requested()) {
+        res.cancelled = true;
+        ++k;
+        break;
+      }
+    }
+    if (res.breakdown) break;
+    const Eigen::VectorXd y = h.solve(k);
+    for (int i = 0; i < k; ++i) res.lambda += y[i] * Z[i];
+    raw = p.b - p.F(res.lambda);
+    r = P.direction(raw);
+    res.residuals.back() = r.norm() / r0;  // the true residual at the cycle's end
+    res.converged = res.residuals.back() <= o.tolerance;
+    if (!res.converged && r.norm() <= floor) res.round_off = true;
+    if (res.converged || res.round_off) res.cancelled = false;
+    if (res.round_off) break;
+  }
+  res.alpha = P.amplitudes_unsymmetric(raw);
+  return res;
+}
+
+}  // namespace rollsim
