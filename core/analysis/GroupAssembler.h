@@ -65,6 +65,8 @@ class GroupAssembler {
   /// The committed state of the `elements` elements of body `body`, gathered from its groups (element-major;
   /// empty for a material without state).
   std::vector<double> committed_state(int body, int elements) const;
+  /// Frees the kept assemblers (a linear analysis assembles once: their patterns would only add to its peak memory).
+  void release_assemblers() { assemblers_.clear(); }
   /// Tangent evaluations per group so far (assemble and assemble_newton with K).
   const std::vector<long>& tangent_evaluations() const { return evaluations_; }
 

@@ -47,7 +47,8 @@ void set_library_threads(int threads) {
 }  // namespace rollsim
 
 /// libgomp's entry to a `#pragma omp parallel` region, interposed (the executable's definition comes before
-/// libgomp's in the dynamic linker's search; CHOLMOD is the only library here that calls it). Once
+/// libgomp's in the dynamic linker's search). Of the libraries rollsim loads, CHOLMOD calls it, and SuperLU_dist,
+/// reachable only through PETSc, whose regions then run serially too: the same results, one core. Once
 /// set_openmp_threads has been called, a region runs as a direct call on the calling thread: outside a team,
 /// omp_get_num_threads() is 1 and omp_get_thread_num() 0, so CHOLMOD's `parallel for` loops (static schedules computed
 /// from those two) take their whole range. max-active-levels 0 alone gives the same result but still enters libgomp:

@@ -3,6 +3,7 @@
 # peak (rollsim_factor_bench: CHOLMOD's settings, Eigen, MUMPS), and `rollsim run` (direct, skyline) vs CalculiX.
 #
 # Usage: tests/bench/run_benchmarks.sh [ROLLSIM] [--repeat N] [--threads "1 2"] [--baseline ROLLSIM_BEFORE]
+#                                      [--samples "cantilever-2d-240x60 ..."]
 #   ROLLSIM  the rollsim binary (default build/app/rollsim); this script builds nothing. rollsim_factor_bench is
 #            taken from the same build tree (tests/bench/), its section skipped when it is not there.
 #   --baseline  an earlier rollsim binary: its `bench` and `direct` runs interleaved with ours, for before/after
@@ -27,6 +28,7 @@ while (($#)); do
     --repeat) REPEAT=$2; shift 2 ;;
     --threads) THREADS=$2; shift 2 ;;
     --baseline) BASELINE=$(realpath "$2"); shift 2 ;;
+    --samples) read -ra SAMPLES <<< "$2"; shift 2 ;;  # a subset, e.g. to try the script quickly
     -h|--help) sed -n 2,12p "$0"; exit 0 ;;
     *) ROLLSIM=$1; shift ;;
   esac
@@ -115,8 +117,8 @@ run_e2e() (
         --threads "$t" --quiet
     fi
     (cd "$dir/ccx" && measure "$dir/ccx.times" ccx -i model)
-    measure "$dir/startup.times" "$ROLLSIM" --version  # process start-up alone: exec, the libraries, exit
     cp "$WORK/stdout.txt" "$dir/ccx-$r.log"
+    measure "$dir/startup.times" "$ROLLSIM" --version  # process start-up alone: exec, the libraries, exit
   done
   log "end to end $s, $t thread(s) done"
 )
@@ -302,7 +304,7 @@ e2e_row() {
   target=$(target_of "$s")
   ratio=$(calc %.2f "$wc / $wd")
   met=$(awk -v r="$ratio" -v g="$target" 'BEGIN {print (r >= g) ? "met" : "missed"}')
-  range=$(paste "$d/direct.times" "$d/ccx.times" | awk '{print $4 / $1}' | sort -g |
+  range=$(paste "$d/direct.times" "$d/ccx.times" | awk '{print $6 / $1}' | sort -g |  # 5 columns each
     awk 'NR == 1 {lo = $1} {hi = $1} END {printf "%.1f–%.1f", lo, hi}')
   echo "$s $t $ratio $target $met $wd $wc ${range/–/ }" >> "$WORK/targets.txt"
   printf '| %s | %s | %.3f | %.3f | %.3f | **%.2f×** (%s) | %.2f× | %.2f× | %s× %s | %.0f / %.0f / %.0f |\n' "$s" "$t" \
