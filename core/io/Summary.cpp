@@ -6,7 +6,6 @@
 #include "analysis/Recovery.h"
 #include "analysis/RollingTheory.h"
 #include "io/OutputFields.h"
-#include "solve/DgemmPeak.h"
 
 namespace rollsim {
 
@@ -154,7 +153,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
       {"factor_nnz", st.factor.nnz_factor},
       {"factor_flops", st.factor.flops}};
   if (st.factor_flops_total > 0 && r.timing.factorize_s > 0) {  // how much of the machine the factorizations used
-    const double rate = gflops(st.factor_flops_total, r.timing.factorize_s);
+    const double rate = st.factor_flops_total / r.timing.factorize_s / 1e9;  // GFlop/s
     s["solver"]["factor_gflops"] = rate;
     if (run.dgemm_peak_gflops > 0) {
       s["solver"]["dgemm_peak_gflops"] = run.dgemm_peak_gflops;
