@@ -1,5 +1,6 @@
 // `rollsim bench`: per-stage times (pattern, values, analyze, factorize, solve) of `skyline` vs
-// CHOLMOD on the same assembled systems, medians of repeated runs, factor size and flops.
+// CHOLMOD on the same assembled systems, medians of repeated runs, factor size and flops, and the factorizations'
+// rate against the DGEMM peak measured in the same process (issue 14).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 #include "solve/Blas.h"
+#include "solve/DgemmPeak.h"
 #include "solve/Factorization.h"
 #include "solve/SkylineFactorization.h"
 #include "solve/Stopwatch.h"
@@ -92,27 +94,31 @@ std::string counted(const Row& r) {
   return buf;
 }
 
-void print_table(const std::vector<Row>& rows) {
-  std::printf("%-24s %-8s %6s %-8s %10s %10s %10s %8s %8s %8s %9s %8s %9s\n", "sample", "solver", "dofs", "ordering",
-              "nnz(L)", "flops", "counted", "pattern", "values", "analyze", "factorize", "solve", "max diff");
+void print_table(const std::vector<Row>& rows, double peak) {
+  std::printf("DGEMM peak: %.2f GFlop/s\n", peak);
+  std::printf("%-24s %-8s %6s %-11s %10s %10s %10s %8s %8s %8s %9s %8s %9s %7s %6s\n", "sample", "solver", "dofs",
+              "ordering", "nnz(L)", "flops", "counted", "pattern", "values", "analyze", "factorize", "solve",
+              "max diff", "GFlop/s", "%peak");
   for (const Row& r : rows) {
     char count[32] = "-";
     if (r.counted_flops >= 0) std::snprintf(count, sizeof count, "%.4g", r.counted_flops);
-    std::printf("%-24s %-8s %6ld %-8s %10.4g %10.4g %10s %8.4f %8.4f %8.4f %9.4f %8.4f %9.2e\n", r.sample.c_str(),
-                r.solver.c_str(), r.dofs, short_ordering(r).c_str(), r.nnz, r.flops, count, r.t.pattern, r.t.values,
-                r.t.analyze, r.t.factorize, r.t.solve, r.max_rel_diff);
+    const double rate = gflops(r.flops, r.t.factorize);
+    std::printf("%-24s %-8s %6ld %-11s %10.4g %10.4g %10s %8.4f %8.4f %8.4f %9.4f %8.4f %9.2e %7.2f %5.1f%%\n",
+                r.sample.c_str(), r.solver.c_str(), r.dofs, short_ordering(r).c_str(), r.nnz, r.flops, count,
+                r.t.pattern, r.t.values, r.t.analyze, r.t.factorize, r.t.solve, r.max_rel_diff, rate,
+                peak > 0 ? 100 * rate / peak : 0.0);
   }
 }
 
-bool write_csv(const std::string& file, const std::vector<Row>& rows) {
+bool write_csv(const std::string& file, const std::vector<Row>& rows, double peak) {
   std::ofstream csv(file);
   csv << "sample,solver,dofs,ordering,nnz_factor,flops,counted_flops,pattern_s,values_s,analyze_s,factorize_s,"
-         "solve_s,max_rel_diff\n";
+         "solve_s,max_rel_diff,factor_gflops,dgemm_peak_gflops\n";
   csv.precision(17);
   for (const Row& r : rows)
     csv << r.sample << "," << r.solver << "," << r.dofs << "," << short_ordering(r) << "," << r.nnz << "," << r.flops
         << "," << counted(r) << "," << r.t.pattern << "," << r.t.values << "," << r.t.analyze << "," << r.t.factorize
-        << "," << r.t.solve << "," << r.max_rel_diff << "\n";
+        << "," << r.t.solve << "," << r.max_rel_diff << "," << gflops(r.flops, r.t.factorize) << "," << peak << "\n";
   return static_cast<bool>(csv);
 }
 
@@ -137,6 +143,7 @@ bool consistent(const std::vector<Row>& rows) {
 
 int bench_command(const BenchOptions& o) {
   set_library_threads(o.threads);
+  const double peak = measure_dgemm_peak(o.threads, 0, 40, 0.5).gflops;  // before the samples: nothing to disturb
   std::vector<Row> rows;
   for (const auto& file : o.samples) {
     Model model;
@@ -153,8 +160,8 @@ int bench_command(const BenchOptions& o) {
     rows[rows.size() - 1].max_rel_diff = rows[rows.size() - 2].max_rel_diff = diff;
     std::fprintf(stderr, "rollsim: bench %s done\n", file.c_str());
   }
-  print_table(rows);
-  if (!o.csv.empty() && !write_csv(o.csv, rows)) {
+  print_table(rows, peak);
+  if (!o.csv.empty() && !write_csv(o.csv, rows, peak)) {
     std::fprintf(stderr, "rollsim: error: cannot write %s\n", o.csv.c_str());
     return 2;
   }

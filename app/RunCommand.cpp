@@ -21,6 +21,7 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 #include "solve/Blas.h"
+#include "solve/DgemmPeak.h"
 #include "solve/PetscStrategy.h"
 #include "solve/Stopwatch.h"
 #include "solve/UpdatePolicy.h"
@@ -237,6 +238,11 @@ int run_command(const RunOptions& o) {
     results.status = {Status::error, Reason::none, e.what()};
   }
   if (!writer) return exit_code(results.status.status);  // the other ranks of a petsc run: rank 0 writes
+  if (results.solver.factor_flops_total > 0) {           // the yardstick of factor_gflops, after the analysis: ~10 ms
+    const DgemmPeak peak = measure_dgemm_peak(options.threads);
+    info.dgemm_peak_gflops = peak.gflops;
+    info.peak_probe_s = peak.seconds;
+  }
   progress.on_stage("write results");
   try {
     clear_run_outputs(dir);  // the folder holds this run only: no result.vtu of an earlier run beside a failure

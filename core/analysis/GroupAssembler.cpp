@@ -27,7 +27,7 @@ void GroupAssembler::assemble(const std::vector<size_t>& groups, const std::vect
         src.dofs->expand(at_rest ? Eigen::VectorXd::Zero(src.dofs->num_free()) : u_free[g], load_factor);
     Group& group = sys.groups[g];
     Eigen::VectorXd f_int;
-    Assembler(*src.body, *src.dofs).assemble(u, group.K, f_int);
+    assembler(g).assemble(u, group.K, f_int);
     group.f = src.dofs->restrict_to_free(load_factor * src.nodal_load) - f_int;
     ++evaluations_[g];
   }
@@ -48,14 +48,20 @@ InvertedElement GroupAssembler::assemble_newton(const std::vector<size_t>& which
     }
     Group& group = sys.groups[g];
     Eigen::VectorXd f_int;
-    const int bad = Assembler(*src.body, *src.dofs)
-                        .assemble(u, with_tangent[g] ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
+    const int bad =
+        assembler(g).assemble(u, with_tangent[g] ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
     if (bad >= 0) return InvertedElement{static_cast<int>(g), bad};
     group.f = src.dofs->restrict_to_free(at.load * src.nodal_load) - f_int;
     if (with_tangent[g] && group.R.cols() && src.body->kinematics == Kinematics::Finite) follow_kernel(group, src, u);
     evaluations_[g] += with_tangent[g];
   }
   return {};
+}
+
+const Assembler& GroupAssembler::assembler(size_t g) const {
+  if (assemblers_.size() < sources_.size()) assemblers_.resize(sources_.size());
+  if (!assemblers_[g]) assemblers_[g] = std::make_unique<Assembler>(*sources_[g].body, *sources_[g].dofs);
+  return *assemblers_[g];
 }
 
 void GroupAssembler::follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u) {

@@ -3,6 +3,7 @@
 // residual r_g = f_ext − f_int(u_g) — the linear analysis asks once for every group at u = 0; a Newton iteration
 // asks for the groups its update policy selects (paper §1, selective update) at the current iterate.
 #include <Eigen/Dense>
+#include <memory>
 #include <vector>
 
 #include "fem/Assembler.h"
@@ -64,15 +65,21 @@ class GroupAssembler {
   /// The committed state of the `elements` elements of body `body`, gathered from its groups (element-major;
   /// empty for a material without state).
   std::vector<double> committed_state(int body, int elements) const;
+  /// Frees the kept assemblers (a linear analysis assembles once: their patterns would only add to its peak memory).
+  void release_assemblers() { assemblers_.clear(); }
   /// Tangent evaluations per group so far (assemble and assemble_newton with K).
   const std::vector<long>& tangent_evaluations() const { return evaluations_; }
 
  private:
   static void follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u);
+  /// Group g's Assembler (sparsity pattern and scatter map), built on first use and kept: a Newton iteration then
+  /// writes values only (the pattern was a third of an assembly of the 16³ cube, rebuilt at every iteration).
+  const Assembler& assembler(size_t g) const;
 
   std::vector<GroupSource> sources_;
   std::vector<IntegrationState> states_;
   mutable std::vector<long> evaluations_;
+  mutable std::vector<std::unique_ptr<Assembler>> assemblers_;  // per group, built by assembler(g)
 };
 
 /// Every group index of a system, ascending.

@@ -125,7 +125,8 @@ Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisOb
   BlockSystem& sys = layout.system();
   const std::vector<size_t> selected = solver.local_groups(AlwaysUpdate().select(sys, {}));
   layout.assemble(selected, {}, 1.0);  // K_g and r_g at rest: the linear system
-  mark_updated(sys, selected);         // factored on first use, then kept
+  layout.assembler().release_assemblers();
+  mark_updated(sys, selected);  // factored on first use, then kept
   res.dofs = sys.num_dofs();
   res.rigid_modes = sys.num_rigid_modes();
   res.subdomains = layout.subdomains();

@@ -152,6 +152,14 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
       {"ordering", st.factor.ordering},
       {"factor_nnz", st.factor.nnz_factor},
       {"factor_flops", st.factor.flops}};
+  if (st.factor_flops_total > 0 && r.timing.factorize_s > 0) {  // how much of the machine the factorizations used
+    const double rate = st.factor_flops_total / r.timing.factorize_s / 1e9;  // GFlop/s
+    s["solver"]["factor_gflops"] = rate;
+    if (run.dgemm_peak_gflops > 0) {
+      s["solver"]["dgemm_peak_gflops"] = run.dgemm_peak_gflops;
+      s["solver"]["factor_peak_fraction"] = rate / run.dgemm_peak_gflops;
+    }
+  }
   if (st.factor.min_pivot_ratio > 0) s["solver"]["min_pivot_ratio"] = st.factor.min_pivot_ratio;
   s["analysis"] = r.update_policy.empty() ? "linear" : "newton";
   if (!r.update_policy.empty()) {
@@ -166,6 +174,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   s["timing"] = {{"total_s", r.timing.total_s},     {"stiffness_s", r.timing.stiffness_s},
                  {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
                  {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};
+  if (run.peak_probe_s > 0) s["timing"]["peak_probe_s"] = run.peak_probe_s;
   s["increments"] = increments_section(r);
   if (!r.status.ok()) return s;
   s["results"] = results_section(model, r);

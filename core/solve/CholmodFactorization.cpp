@@ -3,8 +3,10 @@
 #include <cstdio>
 #include <mutex>
 #include <utility>
+#include <vector>
 
 #include "solve/CholmodView.h"
+#include "solve/NodeOrdering.h"
 #include "solve/Stopwatch.h"
 #include "solve/SupernodalSolve.h"
 
@@ -40,8 +42,22 @@ std::pair<double, int> smallest_pivot_ratio(const cholmod_factor& L, const Spars
 }
 }  // namespace
 
-CholmodFactorization::CholmodFactorization() {
+CholmodSettings CholmodSettings::cholmod_defaults() {
+  CholmodSettings s;
+  s.ordering = "automatic";
+  return s;
+}
+
+CholmodFactorization::CholmodFactorization(CholmodSettings settings) : settings_(std::move(settings)) {
   cholmod_start(&common_);
+  for (int i = 0; i < 3; ++i) {
+    common_.nrelax[i] = static_cast<size_t>(settings_.nrelax[i]);
+    common_.zrelax[i] = settings_.zrelax[i];
+  }
+  const std::string& o = settings_.ordering;
+  if (o != "automatic" && o != "auto" && o != "nodes" && o != "amd" && o != "metis" && o != "nesdis")
+    throw std::invalid_argument("unknown CHOLMOD ordering '" + o +
+                                "' (valid: auto, automatic, nodes, amd, metis, nesdis)");
   common_.supernodal = CHOLMOD_SUPERNODAL;
   common_.final_ll = 1;
   common_.print = 0;
@@ -59,11 +75,25 @@ void CholmodFactorization::analyze(const SparseMatrix& A) {
   cholmod_sparse s = cholmod_view(A);
   {
     const std::lock_guard<std::mutex> lock(analyze_mutex);
-    factor_ = cholmod_analyze(&s, &common_);
+    std::string o = settings_.ordering;
+    if (o == "auto") o = mean_node_degree(A) >= CholmodSettings::kNestedDissectionDegree ? "nodes" : "amd";
+    common_.nmethods = o == "automatic" ? 0 : 1;  // 0: CHOLMOD's own strategy (it sets its methods itself)
+    if (o != "automatic")
+      common_.method[0].ordering = o == "nodes"   ? CHOLMOD_GIVEN
+                                   : o == "amd"   ? CHOLMOD_AMD
+                                   : o == "metis" ? CHOLMOD_METIS
+                                                  : CHOLMOD_NESDIS;
+    if (o == "nodes") {
+      std::vector<int> perm = node_nested_dissection(A);
+      factor_ = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &common_);
+    } else {
+      factor_ = cholmod_analyze(&s, &common_);
+    }
   }
   if (!factor_) throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(common_.status) + ")");
   const int ord = common_.method[common_.selected].ordering;
-  stats_.ordering = ord == CHOLMOD_METIS     ? "METIS"
+  stats_.ordering = ord == CHOLMOD_GIVEN     ? "METIS-nodes"
+                    : ord == CHOLMOD_METIS   ? "METIS"
                     : ord == CHOLMOD_NESDIS  ? "NESDIS"
                     : ord == CHOLMOD_AMD     ? "AMD"
                     : ord == CHOLMOD_COLAMD  ? "COLAMD"

@@ -68,6 +68,7 @@ void GlobalDirect::add_times(const FactorStats& s) {
   earlier_.analyze_s += s.analyze_s;
   earlier_.factorize_s += s.factorize_s;
   earlier_.solve_s += s.solve_s;
+  earlier_flops_ += s.flops_total();
 }
 
 bool GlobalDirect::factored(const BlockSystem& sys) const {
@@ -126,6 +127,7 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver* obse
   stats_.analyze_s = earlier_.analyze_s + stats_.factor.analyze_s;
   stats_.factorize_s = earlier_.factorize_s + stats_.factor.factorize_s;
   stats_.solve_s = earlier_.solve_s + stats_.factor.solve_s;
+  stats_.factor_flops_total = earlier_flops_ + stats_.factor.flops_total();
   BlockSolution out;
   offset = 0;
   for (const Group& g : sys.groups) {

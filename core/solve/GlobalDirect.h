@@ -28,7 +28,8 @@ class GlobalDirect final : public SolverStrategy {
   std::vector<SparseMatrix> factored_C_, factored_C_eq_;
   SparsityPattern analyzed_;  // of the last analysis: a new pattern (not only a new size) needs a new one
   long trailing_ = 0;
-  FactorStats earlier_;  // times of factors replaced by a new pattern (active-set changes)
+  FactorStats earlier_;       // times of factors replaced by a new pattern (active-set changes)
+  double earlier_flops_ = 0;  // and their flops
   SolveStats stats_;
 };
 

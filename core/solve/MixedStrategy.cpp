@@ -54,10 +54,11 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
     ++stats_.factorizations[sys.groups[g].name];
     if (observer) observer->on_factorization(sys.groups[g].name);
   }
-  stats_.analyze_s = stats_.factorize_s = 0;
+  stats_.analyze_s = stats_.factorize_s = stats_.factor_flops_total = 0;
   for (const GroupSolver& gs : groups_) {
     stats_.analyze_s += gs.stats().analyze_s;
     stats_.factorize_s += gs.stats().factorize_s;
+    stats_.factor_flops_total += gs.stats().flops_total();
   }
 }
 

@@ -15,6 +15,8 @@ struct FactorStats {
   // smallest pivot of the last factorization relative to its column's diagonal, d_j / A_jj (positive definite
   // factorizations; 0: not measured): a lower bound of λ_min / λ_max, the reciprocal of the condition number
   double min_pivot_ratio = 0;
+  /// flops of every numeric factorization so far (one pattern: all cost `flops`)
+  double flops_total() const { return flops * static_cast<double>(factorizations); }
 };
 
 struct SolveStats {
@@ -23,6 +25,8 @@ struct SolveStats {
   int solves = 0;      // linear solves so far (the number the observer's calls carry)
   FactorStats factor;  // of the global factor (direct strategies)
   double analyze_s = 0, factorize_s = 0, solve_s = 0;
+  /// flops of all numeric factorizations (every pattern, every group): over factorize_s, the factorizations' rate
+  double factor_flops_total = 0;
   /// Extreme eigenvalues of the last interface solve's (preconditioned, projected) operator, estimated from its
   /// CG coefficients (mixed / feti; 0 when it took fewer than 2 iterations): λ_max / λ_min ≈ condition number.
   double cg_lambda_min = 0, cg_lambda_max = 0;

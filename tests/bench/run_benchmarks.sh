@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
-# Benchmarks of issue 3 -> docs/BENCHMARKS.md: `rollsim bench` stages, and `rollsim run` (direct, skyline) vs CalculiX.
+# Benchmarks of issues 3 and 14 -> docs/BENCHMARKS.md: `rollsim bench` stages, the factorizations against the DGEMM
+# peak (rollsim_factor_bench: CHOLMOD's settings, Eigen, MUMPS), and `rollsim run` (direct, skyline) vs CalculiX.
 #
-# Usage: tests/bench/run_benchmarks.sh [ROLLSIM] [--repeat N] [--threads "1 2"]
-#   ROLLSIM  the rollsim binary (default build/app/rollsim); this script builds nothing.
+# Usage: tests/bench/run_benchmarks.sh [ROLLSIM] [--repeat N] [--threads "1 2"] [--baseline ROLLSIM_BEFORE]
+#                                      [--samples "cantilever-2d-240x60 ..."]
+#   ROLLSIM  the rollsim binary (default build/app/rollsim); this script builds nothing. rollsim_factor_bench is
+#            taken from the same build tree (tests/bench/), its section skipped when it is not there.
+#   --baseline  an earlier rollsim binary: its `bench` and `direct` runs interleaved with ours, for before/after
+#            ratios measured in the same session.
 # Needs ccx (CalculiX), /usr/bin/time, python3 (standard library, to read summary.json), awk.
 # Timing is not a test: nothing here fails on a slow machine; it fails only if a run fails or the
 # skyline/CHOLMOD consistency checks of `rollsim bench` fail.
@@ -14,16 +19,22 @@ declare -A PAPER_DOFS=([cantilever-2d-120x120]=29039 [cantilever-2d-240x60]=2927
                        [cantilever-3d-16x16x16]=13855 [cantilever-3d-32x16x8]=14671)
 REPEAT=3
 THREADS="1 2"
+# rollsim_factor_bench's variants: the first is the reference of the max-diff column
+FACTOR_VARIANTS="cholmod;cholmod-defaults;cholmod:ordering=nodes;cholmod:ordering=amd;cholmod:nrelax=8/32/96;skyline;eigen-ldlt;mumps"
 ROLLSIM=""
+BASELINE=""
 while (($#)); do
   case $1 in
     --repeat) REPEAT=$2; shift 2 ;;
     --threads) THREADS=$2; shift 2 ;;
-    -h|--help) sed -n 2,8p "$0"; exit 0 ;;
+    --baseline) BASELINE=$(realpath "$2"); shift 2 ;;
+    --samples) read -ra SAMPLES <<< "$2"; shift 2 ;;  # a subset, e.g. to try the script quickly
+    -h|--help) sed -n 2,12p "$0"; exit 0 ;;
     *) ROLLSIM=$1; shift ;;
   esac
 done
 ROLLSIM=$(realpath "${ROLLSIM:-$ROOT/build/app/rollsim}")
+FACTOR_BENCH=$(dirname "$(dirname "$ROLLSIM")")/tests/bench/rollsim_factor_bench
 for tool in "$ROLLSIM" ccx /usr/bin/time python3; do
   command -v "$tool" > /dev/null || { echo "run_benchmarks: $tool not found" >&2; exit 2; }
 done
@@ -49,7 +60,8 @@ measure() {
     log "failed: $*"; cat "$WORK/stderr.txt" >&2; exit 1; }
   t1=$(date +%s%N)
   echo "$(calc %.4f "($t1 - $t0) / 1e9") $(awk -F': ' '/Maximum resident set size/ {rss = $2}
-    /User time|System time/ {cpu += $2} END {print rss, cpu}' "$tv")" >> "$log"
+    /User time|System time/ {cpu += $2} /System time/ {sys = $2} /Minor .*page faults/ {pf = $2}
+    END {print rss, cpu, sys, pf}' "$tv")" >> "$log"
 }
 col_median() { awk -v c="$2" '{print $c}' "$1" | median; }  # col_median FILE COLUMN
 col_max() { awk -v c="$2" '$c > m {m = $c} END {print m}' "$1"; }
@@ -66,6 +78,23 @@ stage_bench() {
   for s in "${SAMPLES[@]}"; do files+=("$ROOT/samples/$s.json"); done
   log "rollsim bench --repeat $REPEAT (1 thread)"
   "$ROLLSIM" bench --repeat "$REPEAT" --threads 1 --csv "$WORK/stages.csv" "${files[@]}" > "$WORK/bench.txt"
+  if [[ -n $BASELINE ]]; then
+    log "baseline: rollsim bench --repeat $REPEAT (1 thread)"
+    "$BASELINE" bench --repeat "$REPEAT" --threads 1 --csv "$WORK/stages-before.csv" "${files[@]}" > /dev/null
+    "$ROLLSIM" bench --repeat "$REPEAT" --threads 1 --csv "$WORK/stages-again.csv" "${files[@]}" > /dev/null
+  fi
+}
+
+# ---------------------------------------------------------------- 1b. factorizations against the DGEMM peak
+factor_bench() {
+  local files=() t
+  [[ -x $FACTOR_BENCH ]] || return 0
+  for s in "${SAMPLES[@]}"; do files+=("$ROOT/samples/$s.json"); done
+  for t in $THREADS; do
+    log "rollsim_factor_bench --threads $t"
+    OMP_NUM_THREADS=$t OPENBLAS_NUM_THREADS=$t "$FACTOR_BENCH" --repeat "$REPEAT" --threads "$t" \
+      --variants "$FACTOR_VARIANTS" "${files[@]}" > "$WORK/factor-t$t.md"
+  done
 }
 
 # ---------------------------------------------------------------- 2. end to end
@@ -83,19 +112,24 @@ run_e2e() (
         --threads "$t" --quiet
       cp "$dir/$mode/summary.json" "$dir/$mode-summary-$r.json"
     done
+    if [[ -n $BASELINE ]]; then
+      measure "$dir/before.times" "$BASELINE" run "$ROOT/samples/$s.json" --solver direct --out "$dir/before" \
+        --threads "$t" --quiet
+    fi
     (cd "$dir/ccx" && measure "$dir/ccx.times" ccx -i model)
     cp "$WORK/stdout.txt" "$dir/ccx-$r.log"
+    measure "$dir/startup.times" "$ROLLSIM" --version  # process start-up alone: exec, the libraries, exit
   done
   log "end to end $s, $t thread(s) done"
 )
 
 # ---------------------------------------------------------------- 3. the report
 comp_of() { [[ $1 == *-2d-* ]] && echo 1 || echo 2; }    # index of the y (2D) / z (3D) reaction in summary.json
-target_of() { [[ $1 == *-2d-* ]] && echo 5 || echo 2; }  # issue 3: 5x on the 2D squares, 2x on the 3D cubes
+target_of() { [[ $1 == *-2d-* ]] && echo 8 || echo 2; }  # issue 14: 8x on the 2D squares, 2x on the 3D cubes
 first_threads() { echo "$THREADS" | awk '{print $1}'; }
-csv_field() {  # csv_field SAMPLE SOLVER COLUMN, from the `rollsim bench` CSV
+csv_field() {  # csv_field SAMPLE SOLVER COLUMN [CSV], from the `rollsim bench` CSV
   awk -F, -v s="$1" -v k="$2" -v f="$3" 'NR == 1 {for (i = 1; i <= NF; i++) h[$i] = i; next}
-                                          $1 == s && $2 == k {print $h[f]}' "$WORK/stages.csv"
+                                          $1 == s && $2 == k {print $h[f]}' "${4:-$WORK/stages.csv}"
 }
 
 ccx_solver_sentence() {
@@ -132,17 +166,21 @@ EOF
 }
 
 factor_table() {
+  local peak
   cat << 'EOF'
 ## Stages in-process: skyline (the paper's ACTCOL baseline) vs direct (CHOLMOD), `rollsim bench`, 1 thread
 
 Same assembled K for both. nnz(L): skyline = stored profile incl. diagonal. flops: the factorization's
 prediction; for the skyline also counted in its loop (the two must be equal). max diff = max |u_sky − u_chol| /
-max |u_chol| (must be < 1e-10).
-
+max |u_chol| (must be < 1e-10). GFlop/s = flops / factorize seconds; % of peak: of the DGEMM rate that
+`rollsim bench` measures in the same process before the samples (best of 40 calls, n = 256):
 EOF
+  peak=$(csv_field "${SAMPLES[0]}" cholmod dgemm_peak_gflops)
+  printf '%.1f GFlop/s on 1 thread.\n\n' "$peak"
   echo "| sample | dofs (paper) | ordering skyline / CHOLMOD | nnz(L) skyline | nnz(L) CHOLMOD |" \
-       "flops skyline (counted = predicted) | flops CHOLMOD | flops skyline / CHOLMOD | max diff |"
-  echo "|---|---|---|---|---|---|---|---|---|"
+       "flops skyline (counted = predicted) | flops CHOLMOD | flops skyline / CHOLMOD | max diff |" \
+       "GFlop/s skyline / CHOLMOD | % of DGEMM peak skyline / CHOLMOD |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
   local s f1 f2 same
   for s in "${SAMPLES[@]}"; do
     f1=$(csv_field "$s" skyline flops)
@@ -152,7 +190,10 @@ EOF
       "${PAPER_DOFS[$s]}" "$(csv_field "$s" skyline ordering)" "$(csv_field "$s" cholmod ordering)" \
       "$(calc %.3g "$(csv_field "$s" skyline nnz_factor)")" "$(calc %.3g "$(csv_field "$s" cholmod nnz_factor)")" \
       "$(calc %.3g "$f1")" "$same" "$(calc %.3g "$f2")" "$(calc %.2f "$f1 / $f2")" \
-      "$(calc %.1e "$(csv_field "$s" skyline max_rel_diff)")"
+      "$(calc %.1e "$(csv_field "$s" skyline max_rel_diff)")" | sed 's/ |$//' | tr -d '\n'
+    printf ' | %.2f / %.2f | %.1f %% / %.1f %% |\n' "$(csv_field "$s" skyline factor_gflops)" \
+      "$(csv_field "$s" cholmod factor_gflops)" "$(calc %.4f "100 * $(csv_field "$s" skyline factor_gflops) / $peak")" \
+      "$(calc %.4f "100 * $(csv_field "$s" cholmod factor_gflops) / $peak")"
   done
   echo
 }
@@ -190,6 +231,70 @@ EOF
   stage_table "Solve" solve_s
 }
 
+factor_section() {
+  local t
+  [[ -f $WORK/factor-t$(first_threads).md ]] || return 0
+  cat << 'EOF'
+## Factorization: CHOLMOD's settings and the peers against the DGEMM peak (`rollsim_factor_bench`)
+
+The same assembled K (body 0 of each sample) factored by every variant in one process; medians of the repeats.
+`cholmod` is what `direct`, `mixed` and `feti` use: CHOLMOD's supernodal Cholesky, ordered by METIS nested
+dissection on the node graph (solve/NodeOrdering.h) where nodes have ≥ 12 neighbours (3D) and by AMD below (2D),
+CHOLMOD's amalgamation, CHOLMOD's OpenMP loops on the calling thread (solve/Blas.h). `cholmod-defaults` is CHOLMOD as rollsim called it before issue 14 (its own choice of AMD, or
+METIS on the dof graph when AMD fills too much; with this build's OpenMP teams off too — they are process-wide).
+`cholmod:…` changes one setting of `cholmod`. Peers: Eigen's SimplicialLDLT (AMD), MUMPS 5.5 (Debian's
+libmumps-dev, one MPI rank, METIS). flops: each solver's own count (MUMPS: RINFOG(3); Eigen: Σ c_j² over L's
+columns, CHOLMOD's convention), so GFlop/s compares machine use, factorize seconds compare the answer's cost.
+max diff: max |u − u_cholmod| / max |u_cholmod|.
+
+EOF
+  for t in $THREADS; do
+    printf '**%s thread(s)** — ' "$t"
+    cat "$WORK/factor-t$t.md"
+    echo
+  done
+}
+
+before_section() {
+  local s t d b a
+  [[ -n $BASELINE ]] || return 0
+  cat << 'EOF'
+## Before and after (this session): the `--baseline` binary against this one
+
+In-process stages (`rollsim bench`, 1 thread, CHOLMOD rows; the two binaries ran one after the other, ours twice
+around the baseline: the median of our two runs is compared), and whole `rollsim run --solver direct` processes
+(interleaved with the other programs of the end-to-end table: same medians).
+
+| sample | analyze before / after s | ratio | factorize before / after s | ratio | GFlop/s before / after |
+|---|---|---|---|---|---|
+EOF
+  for s in "${SAMPLES[@]}"; do
+    local fa fb aa ab
+    ab=$(csv_field "$s" cholmod analyze_s "$WORK/stages-before.csv")
+    aa=$(printf '%s\n%s\n' "$(csv_field "$s" cholmod analyze_s)" "$(csv_field "$s" cholmod analyze_s "$WORK/stages-again.csv")" | median)
+    fb=$(csv_field "$s" cholmod factorize_s "$WORK/stages-before.csv")
+    fa=$(printf '%s\n%s\n' "$(csv_field "$s" cholmod factorize_s)" "$(csv_field "$s" cholmod factorize_s "$WORK/stages-again.csv")" | median)
+    printf '| %s | %.4f / %.4f | **%.2f×** | %.4f / %.4f | **%.2f×** | %.2f / %.2f |\n' "$s" "$ab" "$aa" \
+      "$(calc %.4f "$ab / $aa")" "$fb" "$fa" "$(calc %.4f "$fb / $fa")" \
+      "$(calc %.4f "$(csv_field "$s" cholmod flops "$WORK/stages-before.csv") / $fb / 1e9")" \
+      "$(calc %.4f "$(csv_field "$s" cholmod flops) / $fa / 1e9")"
+  done
+  printf '\n| sample | threads | direct before s | direct after s | before / after | CPU s before / after | system s before / after | minor page faults before / after |\n'
+  printf '|---|---|---|---|---|---|---|---|\n'
+  for t in $THREADS; do
+    for s in "${SAMPLES[@]}"; do
+      d=$WORK/$s-t$t
+      b=$(col_median "$d/before.times" 1)
+      a=$(col_median "$d/direct.times" 1)
+      printf '| %s | %s | %.3f | %.3f | **%.2f×** | %.3f / %.3f | %.3f / %.3f | %.0f / %.0f |\n' "$s" "$t" "$b" "$a" \
+        "$(calc %.4f "$b / $a")" "$(col_median "$d/before.times" 3)" "$(col_median "$d/direct.times" 3)" \
+        "$(col_median "$d/before.times" 4)" "$(col_median "$d/direct.times" 4)" \
+        "$(col_median "$d/before.times" 5)" "$(col_median "$d/direct.times" 5)"
+    done
+  done
+  echo
+}
+
 # e2e_row SAMPLE THREADS: one row of the end-to-end table; records the ratio in targets.txt
 e2e_row() {
   local s=$1 t=$2 d=$WORK/$1-t$2 wd wk wc target ratio met range
@@ -199,7 +304,7 @@ e2e_row() {
   target=$(target_of "$s")
   ratio=$(calc %.2f "$wc / $wd")
   met=$(awk -v r="$ratio" -v g="$target" 'BEGIN {print (r >= g) ? "met" : "missed"}')
-  range=$(paste "$d/direct.times" "$d/ccx.times" | awk '{print $4 / $1}' | sort -g |
+  range=$(paste "$d/direct.times" "$d/ccx.times" | awk '{print $6 / $1}' | sort -g |  # 5 columns each
     awk 'NR == 1 {lo = $1} {hi = $1} END {printf "%.1f–%.1f", lo, hi}')
   echo "$s $t $ratio $target $met $wd $wc ${range/–/ }" >> "$WORK/targets.txt"
   printf '| %s | %s | %.3f | %.3f | %.3f | **%.2f×** (%s) | %.2f× | %.2f× | %s× %s | %.0f / %.0f / %.0f |\n' "$s" "$t" \
@@ -219,7 +324,7 @@ same supports), solves, writes the .dat (total reactions) and the .frd (U and S,
 The three programs run interleaved, each under `/usr/bin/time -v` (peak RSS); the wall time is taken around it
 with a nanosecond clock. In brackets: the range of CalculiX / direct over the interleaved run pairs (the noise of
 this shared machine). CPU time = user + system (medians), less sensitive than wall time to other jobs on the machine.
-Target of issue 3 (on wall time): CalculiX / direct ≥ 5 on the 2D squares, ≥ 2 on the 3D cubes.
+Target of issue 14 (on wall time): CalculiX / direct ≥ 8 on the 2D squares, ≥ 2 on the 3D cubes, at 1 and 2 threads.
 
 EOF
   echo "| sample | threads | direct s | skyline s | CalculiX s | CalculiX / direct | CalculiX / skyline |" \
@@ -274,7 +379,7 @@ timing_median() {
 
 # profile_row SAMPLE THREADS: one row of the profile table; records the largest part in profile.txt
 profile_row() {
-  local s=$1 t=$2 d=$WORK/$1-t$2 wall total st an fa so re rest proc big
+  local s=$1 t=$2 d=$WORK/$1-t$2 wall total st an fa so re rest proc big startup
   wall=$(col_median "$d/direct.times" 1)
   total=$(timing_median "$d" total_s)
   st=$(timing_median "$d" stiffness_s)
@@ -284,12 +389,21 @@ profile_row() {
   re=$(timing_median "$d" recovery_s)
   rest=$(calc %.4f "$total - $st - $an - $fa - $so - $re")
   proc=$(calc %.4f "$wall - $total")
+  startup=$(col_median "$d/startup.times" 1)
   big=$(printf '%s process\n%s stiffness\n%s analyze\n%s factorize\n%s solve\n%s recovery\n%s rest\n' "$proc" "$st" \
     "$an" "$fa" "$so" "$re" "$rest" | sort -g | tail -1 |
     awk -v w="$wall" '{printf "%s %.3f s (%.0f %%)", $2, $1, 100 * $1 / w}')
   echo "$s $t $big" >> "$WORK/profile.txt"
-  printf '| %s | %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %s |\n' "$s" "$t" "$wall" "$proc" "$st" \
-    "$an" "$fa" "$so" "$re" "$rest" "$big"
+  printf '| %s | %s | %.3f | %.3f (%.3f) | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %.3f / %.3f | %.1f (%.0f %%) |\n' \
+    "$s" "$t" "$wall" "$proc" "$startup" "$st" "$an" "$fa" "$so" "$re" "$rest" "$big" "$(col_median "$d/direct.times" 3)" \
+    "$(col_median "$d/direct.times" 4)" "$(timing_median_solver "$d" factor_gflops)" \
+    "$(calc %.4f "100 * $(timing_median_solver "$d" factor_peak_fraction)")"
+}
+
+# timing_median_solver DIR FIELD: median over the repeats of summary.json solver.FIELD of the direct runs
+timing_median_solver() {
+  local r
+  for ((r = 1; r <= REPEAT; r++)); do json "$1/direct-summary-$r.json" "d['solver'].get('$2', 0)"; done | median
 }
 
 profile_section() {
@@ -297,11 +411,15 @@ profile_section() {
   cat << 'EOF'
 ## Where rollsim direct spends its time (medians of summary.json `timing`, seconds)
 
-process = wall time outside main() (exec, loading CHOLMOD/OpenBLAS/VTK, exit); rest = inside main() but outside the
-analysis stages (read and validate the project, build the mesh, write summary.json and result.vtu).
+process = wall time outside main() (exec, loading CHOLMOD/OpenBLAS/VTK, exit), in brackets the wall time of
+`rollsim --version` (start-up and exit alone, run interleaved with the others); rest = inside main() but outside the
+analysis stages (read and validate the project, build the mesh, the DGEMM probe of `factor_gflops`, write
+summary.json and result.vtu). CPU / system: the process's user + system and system CPU seconds (`time -v`).
+factor GFlop/s: summary.json `solver.factor_gflops`, and its `factor_peak_fraction` of the DGEMM peak that `run`
+measures after the analysis (`timing.peak_probe_s`, ~10 ms).
 
-| sample | threads | wall | process | stiffness | analyze | factorize | solve | recovery | rest | largest part |
-|---|---|---|---|---|---|---|---|---|---|---|
+| sample | threads | wall | process | stiffness | analyze | factorize | solve | recovery | rest | largest part | CPU / system s | factor GFlop/s (% of peak) |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|
 EOF
   for t in $THREADS; do
     for s in "${SAMPLES[@]}"; do profile_row "$s" "$t"; done
@@ -330,13 +448,26 @@ verdict_line() {
   echo "${line%;}."
 }
 
+# threads_line: issue 14's "2 threads never slower than 1", direct, per sample (medians of the wall times)
+threads_line() {
+  local s one two line=""
+  [[ $THREADS == "1 2" ]] || return 0
+  for s in "${SAMPLES[@]}"; do
+    one=$(col_median "$WORK/$s-t1/direct.times" 1)
+    two=$(col_median "$WORK/$s-t2/direct.times" 1)
+    line+=" $s $(awk -v a="$one" -v b="$two" 'BEGIN {printf "%s (%.3f s on 1, %.3f s on 2)", (b <= a) ? "met" : "missed", a, b}');"
+  done
+  echo "- direct on 2 threads never slower than on 1:${line%;}."
+}
+
 verdict_section() {
   local s equal parts
-  printf '## Targets of issue 3: met or missed\n\n'
+  printf '## Targets of issue 14 (end to end): met or missed\n\n'
   printf 'From the medians above; "borderline" where the per-run range straddles the target, i.e. another session on\n'
   printf 'this shared machine may well give the other verdict.\n\n'
   : > "$WORK/missed.txt"
   for s in "${SAMPLES[@]}"; do verdict_line "$s"; done
+  threads_line
   equal=$(grep -c 'all 7' "$WORK/BENCHMARKS.md" || true)
   echo "- Reactions equal to CalculiX's printed digits: $equal of ${#SAMPLES[@]} samples agree in all 7 (table above)."
   parts=$(sort -u "$WORK/missed.txt" | paste -sd, - | sed 's/,/, /g')
@@ -349,12 +480,15 @@ verdict_section() {
 
 # ---------------------------------------------------------------- main
 stage_bench
+factor_bench
 for t in $THREADS; do
   for s in "${SAMPLES[@]}"; do run_e2e "$s" "$t"; done
 done
 {
   machine_section
   stage_section
+  factor_section
+  before_section
   e2e_section
   reaction_section
   profile_section

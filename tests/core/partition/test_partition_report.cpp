@@ -211,7 +211,7 @@ TEST(PartitionReport, EstimateIsWithinAFactorOfCholmodsOwnOrdering) {
     const Body& body = m.bodies[0];
     const DofMap dofs(body, 0, m.displacements);
     const FactorEstimate ours = estimate_factor(body.mesh, dofs);
-    CholmodFactorization cholmod;
+    CholmodFactorization cholmod(CholmodSettings::cholmod_defaults());
     cholmod.analyze(stiffness(body, dofs));
     const FactorStats& theirs = cholmod.stats();
     const double r_nnz = ours.nnz / theirs.nnz_factor, r_fl = ours.flops / theirs.flops;
