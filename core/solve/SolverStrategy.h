@@ -43,8 +43,6 @@ class SolverStrategy {
   /// The groups among `groups` this process assembles (all of them; petsc: its MPI rank's subdomain only — the
   /// other ranks build the others).
   virtual std::vector<size_t> local_groups(std::vector<size_t> groups) const { return groups; }
-  /// Why the strategy cannot serve the Newton driver ("" when it can).
-  virtual std::string newton_refusal() const { return ""; }
   /// Why the strategy cannot solve a model with contact pairs ("" when it can): asked before the first solve, since
   /// a frictionless pair may start with no active row.
   virtual std::string contact_refusal() const { return ""; }
