@@ -435,10 +435,15 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   stats_.cg_iterations += its;
   stats_.solve_s += t.seconds();
   if (observer) observer->on_solve_end(stats_.solves, static_cast<int>(its));
-  if (reason < 0)
+  if (reason < 0) {
+    const bool indefinite = reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_INDEFINITE_MAT;
     sol.status = {Status::not_converged, reason == KSP_DIVERGED_ITS ? Reason::iteration_limit : Reason::breakdown,
                   "petsc (" + options_.petsc_method + "): the Krylov solve stopped after " + std::to_string(its) +
-                      " iterations: " + KSPConvergedReasons[reason]};
+                      " iterations: " + KSPConvergedReasons[reason] +
+                      (indefinite ? " (CG needs a positive definite matrix: the stiffness or tangent is not — plastic "
+                                    "flow without hardening, or a part that lost its stiffness)"
+                                  : "")};
+  }
   return sol;
 }
 

@@ -151,7 +151,8 @@ TEST(PetscRun, NewtonPlasticCantileverAgreesWithDirectOnOneTwoAndFourRanks) {
       EXPECT_NEAR(got["increments"][i]["newton_iterations"].get<int>(),
                   want["increments"][i]["newton_iterations"].get<int>(), 1)
           << ranks << " ranks, increment " << i + 1;
-    EXPECT_GT(got["solver"]["cg_iterations_total"].get<long>(), 0) << ranks << " ranks";
+    if (ranks > 1)  // one subdomain: BDDC's exact interior solve answers before the first iteration
+      EXPECT_GT(got["solver"]["cg_iterations_total"].get<long>(), 0) << ranks << " ranks";
     EXPECT_LT(relative_difference(u, displacements(out + "/result.vtu")), 1e-7) << ranks << " ranks";
     EXPECT_LT(relative_difference(reactions(want), reactions(got)), 1e-6) << ranks << " ranks";
     EXPECT_NEAR(got["results"]["max_plastic_strain"]["beam"].get<double>(),
@@ -168,7 +169,7 @@ TEST(PetscRun, NewtonBeyondTheLimitLoadEndsDivergedOnEveryRank) {
   const std::string file = plastic_cantilever(dir, [](json& j) {
     j["materials"][0]["hardening_modulus"] = 0.0;
     j["boundary_conditions"][1] = {{"type", "pressure"}, {"body", "beam"}, {"surface", "xmax"}, {"value", 2000.0}};
-    j["analysis"]["max_cutbacks"] = 2;
+    j["analysis"]["max_cutbacks"] = 1;
   });
   const auto r = mpirun(4, {"run", file, "--solver", "petsc", "--partition", "2x2", "--out", dir + "/out"});
   EXPECT_FALSE(r.timed_out);
@@ -177,7 +178,8 @@ TEST(PetscRun, NewtonBeyondTheLimitLoadEndsDivergedOnEveryRank) {
   EXPECT_EQ(s["status"], "diverged");
   const std::string message = s["message"].get<std::string>();
   EXPECT_NE(message.find("increment "), std::string::npos) << message;
-  EXPECT_NE(message.find("2 cut-backs"), std::string::npos) << message;
+  EXPECT_NE(message.find("1 cut-backs"), std::string::npos) << message;
+  EXPECT_NE(message.find("positive definite"), std::string::npos) << message;
   EXPECT_EQ(message.find("nan"), std::string::npos) << message;
 }
 
