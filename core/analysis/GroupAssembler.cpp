@@ -38,6 +38,7 @@ InvertedElement GroupAssembler::assemble_newton(const std::vector<size_t>& which
                                                 BlockSystem& sys) {
   std::vector<char> with_tangent(sources_.size(), 0);
   for (size_t g : tangent) with_tangent[g] = 1;
+  auto assembled_here = [&](size_t g) { return with_tangent[g] && (local_.empty() || local_[g]); };
   for (size_t g : which) {
     const GroupSource& src = sources_[g];
     const Eigen::VectorXd u = src.dofs->expand(u_free[g], at.prescribed);
@@ -49,7 +50,7 @@ InvertedElement GroupAssembler::assemble_newton(const std::vector<size_t>& which
     Group& group = sys.groups[g];
     Eigen::VectorXd f_int;
     const int bad =
-        assembler(g).assemble(u, with_tangent[g] ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
+        assembler(g).assemble(u, assembled_here(g) ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
     if (bad >= 0) return InvertedElement{static_cast<int>(g), bad};
     group.f = src.dofs->restrict_to_free(at.load * src.nodal_load) - f_int;
     if (with_tangent[g] && group.R.cols() && src.body->kinematics == Kinematics::Finite) follow_kernel(group, src, u);
@@ -62,6 +63,11 @@ const Assembler& GroupAssembler::assembler(size_t g) const {
   if (assemblers_.size() < sources_.size()) assemblers_.resize(sources_.size());
   if (!assemblers_[g]) assemblers_[g] = std::make_unique<Assembler>(*sources_[g].body, *sources_[g].dofs);
   return *assemblers_[g];
+}
+
+void GroupAssembler::set_local(const std::vector<size_t>& groups) {
+  local_.assign(sources_.size(), 0);
+  for (size_t g : groups) local_.at(g) = 1;
 }
 
 void GroupAssembler::follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u) {

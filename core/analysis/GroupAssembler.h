@@ -55,6 +55,11 @@ class GroupAssembler {
   };
   InvertedElement assemble_newton(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                                   const std::vector<Eigen::VectorXd>& u_free, Factors at, BlockSystem& sys);
+  /// The groups whose tangents this process assembles (default: all). Under `petsc` every MPI rank runs the Newton
+  /// driver with every group's residual and state (so every rank takes the same decisions and rank 0 can write every
+  /// body's fields) but assembles the tangent of its own subdomain only (SolverStrategy::local_groups): the others'
+  /// K_g stay as they were, unused there. tangent_evaluations() still counts a tangent asked for on any rank.
+  void set_local(const std::vector<size_t>& groups);
   /// True when group g's tangent does not depend on its displacement (a material without state, small strain):
   /// assembled once, it never needs re-assembly.
   bool constant_tangent(size_t g) const {
@@ -78,6 +83,7 @@ class GroupAssembler {
 
   std::vector<GroupSource> sources_;
   std::vector<IntegrationState> states_;
+  std::vector<char> local_;  // per group: its tangent is assembled here (empty: every group's)
   mutable std::vector<long> evaluations_;
   mutable std::vector<std::unique_ptr<Assembler>> assemblers_;  // per group, built by assembler(g)
 };

@@ -22,8 +22,8 @@ Group body_group(const Model& model, int b, const DofMap& dofs) {
   return g;
 }
 
-/// Each free dof's node coordinates and component (Group::geometry).
-DofGeometry dof_geometry(const Mesh& mesh, const DofMap& dofs) {
+/// Each free dof's node coordinates and component, and the rigid modes there in `frame` (Group::geometry).
+DofGeometry dof_geometry(const Mesh& mesh, const DofMap& dofs, const ModeFrame& frame) {
   DofGeometry g;
   g.x.resize(dofs.num_free(), mesh.dim);
   g.component.resize(dofs.num_free());
@@ -33,6 +33,7 @@ DofGeometry dof_geometry(const Mesh& mesh, const DofMap& dofs) {
         for (int k = 0; k < mesh.dim; ++k) g.x(e, k) = mesh.nodes[n][k];
         g.component[e] = c;
       }
+  g.modes = rigid_mode_rows(g.x, g.component, frame);
   return g;
 }
 
@@ -109,8 +110,9 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
     sys_.groups.push_back(body_group(model, b, *dofs_.back()));
     assembler_.add(GroupSource{&body, dofs_.back().get(), external_nodal_load(model, b), b, {}});
   }
+  const ModeFrame frame = mode_frame(body.mesh);  // the whole body's: its subdomains' modes agree where they meet
   for (size_t g = static_cast<size_t>(bg.first); g < sys_.groups.size(); ++g)
-    sys_.groups[g].geometry = dof_geometry(assembler_.source(g).body->mesh, *assembler_.source(g).dofs);
+    sys_.groups[g].geometry = dof_geometry(assembler_.source(g).body->mesh, *assembler_.source(g).dofs, frame);
   bodies_.push_back(std::move(bg));
 }
 

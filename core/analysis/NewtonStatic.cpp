@@ -55,6 +55,8 @@ class NewtonRun {
         opt_(opt),
         layout_(model, solver.uses_subdomains(), multiplier_choice(solver.options())) {
     for (const Group& g : layout_.system().groups) u_.push_back(Eigen::VectorXd::Zero(g.R.rows()));
+    // petsc: every rank runs this driver alike, assembling the tangent of its own subdomain only
+    layout_.assembler().set_local(solver.local_groups(all_groups(layout_.system())));
     try {
       pairs_ = search_contacts(model);
     } catch (const std::runtime_error& e) {

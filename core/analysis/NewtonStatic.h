@@ -7,6 +7,9 @@
 // converge (iteration limit, a residual that grows or is not finite, an inverted element, a failed linear solve) is
 // cut back and retried from the last converged state; when the cut-backs run out the run ends `diverged`, naming
 // the increment and the cause. Integration-point states are committed only when a step converges.
+// Under `petsc` (mpirun -n P) every rank runs this driver alike — every group's residual, state and convergence test,
+// redundantly, so that every rank takes the same decisions and rank 0 holds every body's fields — but assembles the
+// tangent of its own subdomain only (SolverStrategy::local_groups); the linear solve is PETSc's, distributed.
 #include <string>
 
 #include "analysis/AnalysisError.h"

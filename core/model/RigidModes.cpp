@@ -7,35 +7,61 @@
 
 namespace rollsim {
 
-Eigen::MatrixXd rigid_modes(const Mesh& m, const Eigen::VectorXd* u) {
-  const int d = m.dim, nmodes = d == 2 ? 3 : 6;
+namespace {
+/// Every node's position X (+ u), as 3-vectors.
+std::vector<Eigen::Vector3d> positions(const Mesh& m, const Eigen::VectorXd* u) {
   std::vector<Eigen::Vector3d> at(m.nodes.size());
   for (size_t n = 0; n < at.size(); ++n) {
     at[n] = Eigen::Vector3d(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]);
     if (u)
-      for (int k = 0; k < d; ++k) at[n][k] += (*u)[static_cast<Eigen::Index>(n) * d + k];
+      for (int k = 0; k < m.dim; ++k) at[n][k] += (*u)[static_cast<Eigen::Index>(n) * m.dim + k];
   }
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& x : at) c += x;
-  c /= std::max(1, m.num_nodes());
-  double size = 0;
-  for (const Eigen::Vector3d& x : at) size = std::max(size, (x - c).norm());
-  if (size == 0) size = 1;
-  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m.num_nodes()) * d, nmodes);
-  for (int n = 0; n < m.num_nodes(); ++n) {
-    const Eigen::Vector3d x = (at[static_cast<size_t>(n)] - c) / size;
-    for (int k = 0; k < d; ++k) R(n * d + k, k) = 1.0;
+  return at;
+}
+
+ModeFrame frame_of(const std::vector<Eigen::Vector3d>& at) {
+  ModeFrame f;
+  for (const Eigen::Vector3d& x : at) f.center += x;
+  f.center /= std::max<double>(1.0, static_cast<double>(at.size()));
+  f.size = 0;
+  for (const Eigen::Vector3d& x : at) f.size = std::max(f.size, (x - f.center).norm());
+  if (f.size == 0) f.size = 1;
+  return f;
+}
+}  // namespace
+
+ModeFrame mode_frame(const Mesh& mesh) { return frame_of(positions(mesh, nullptr)); }
+
+Eigen::MatrixXd rigid_mode_rows(const Eigen::MatrixXd& x, const Eigen::VectorXi& component, const ModeFrame& frame) {
+  const Eigen::Index d = x.cols(), nmodes = d == 2 ? 3 : 6;
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(x.rows(), nmodes);
+  for (Eigen::Index i = 0; i < x.rows(); ++i) {
+    Eigen::Vector3d p = -frame.center;
+    for (Eigen::Index k = 0; k < d; ++k) p[k] += x(i, k);
+    p /= frame.size;
+    const int c = component[i];
+    R(i, c) = 1.0;
     if (d == 2) {
-      R(n * 2, 2) = -x.y();
-      R(n * 2 + 1, 2) = x.x();
+      R(i, 2) = c == 0 ? -p.y() : p.x();
       continue;
     }
-    for (int axis = 0; axis < 3; ++axis) {  // u = e_axis x x
-      const Eigen::Vector3d w = Eigen::Vector3d::Unit(axis).cross(x);
-      for (int k = 0; k < 3; ++k) R(n * 3 + k, 3 + axis) = w[k];
-    }
+    for (int axis = 0; axis < 3; ++axis) R(i, 3 + axis) = Eigen::Vector3d::Unit(axis).cross(p)[c];  // u = e_axis × x
   }
   return R;
+}
+
+Eigen::MatrixXd rigid_modes(const Mesh& m, const Eigen::VectorXd* u) {
+  const std::vector<Eigen::Vector3d> at = positions(m, u);
+  const int d = m.dim;
+  Eigen::MatrixXd x(static_cast<Eigen::Index>(at.size()) * d, d);
+  Eigen::VectorXi component(x.rows());
+  for (size_t n = 0; n < at.size(); ++n)
+    for (int c = 0; c < d; ++c) {
+      const Eigen::Index i = static_cast<Eigen::Index>(n) * d + c;
+      x.row(i) = at[n].head(d).transpose();
+      component[i] = c;
+    }
+  return rigid_mode_rows(x, component, frame_of(at));
 }
 
 namespace {

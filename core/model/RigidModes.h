@@ -14,6 +14,18 @@ namespace rollsim {
 /// dof, node-major): the modes of the displaced configuration X + u (a finite-strain body's tangent kernel).
 Eigen::MatrixXd rigid_modes(const Mesh& mesh, const Eigen::VectorXd* u = nullptr);
 
+/// Where rigid_modes turns its rotations and how it scales them: a mesh's centroid and its largest distance from it.
+struct ModeFrame {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double size = 1;
+};
+ModeFrame mode_frame(const Mesh& mesh);
+
+/// The rows of rigid_modes' columns at single dofs: row i for component `component[i]` of a node at `x.row(i)`
+/// (dofs × dim), rotations about `frame.center` scaled by 1 / `frame.size` — for a subset of a body's dofs in the
+/// body's own frame (a subdomain's free dofs, whose rows then agree with its neighbours' on shared dofs).
+Eigen::MatrixXd rigid_mode_rows(const Eigen::MatrixXd& x, const Eigen::VectorXi& component, const ModeFrame& frame);
+
 class DofMap;
 
 /// Orthonormal basis of ker K restricted to the free dofs of `dofs` (rows = equation numbers): the rigid

@@ -32,12 +32,22 @@ std::string non_finite_results(const Model& model, const Results& r) {
   return "";
 }
 
+/// The strategy's refusal of contact pairs, naming the model's first pair and its kind, when it has any.
+void refuse_contact(const SolverStrategy& solver, const Model& model) {
+  std::string refusal = solver.contact_refusal();
+  if (refusal.empty() || model.contacts.empty()) return;
+  const ContactPair& p = model.contacts[0];
+  const char* kinds[] = {"tied", "frictionless", "sticking", "coulomb"};
+  throw AnalysisError(refusal + " (contacts[0] '" + p.name + "' is " + kinds[static_cast<int>(p.kind)] +
+                      (model.contacts.size() > 1 ? ", of " + std::to_string(model.contacts.size()) + " pairs" : "") +
+                      ")");
+}
+
 Results run_linear(const Project& project, const Model& model, AnalysisObserver* observer) {
   const SolverOptions options = solver_options(project);
   set_library_threads(options.threads);
   const auto solver = make_solver(project.data.at("solver").at("mode").get<std::string>(), options);
-  if (std::string refusal = solver->contact_refusal(); !refusal.empty() && !model.contacts.empty())
-    throw AnalysisError(refusal);
+  refuse_contact(*solver, model);
   return run_linear_static(model, *solver, observer, load_increments(project), max_active_set_iterations(project));
 }
 
@@ -46,7 +56,7 @@ Results run_newton(const Project& project, const Model& model, AnalysisObserver*
   set_library_threads(options.threads);
   const json& s = project.data.at("solver");
   const auto solver = make_solver(s.at("mode").get<std::string>(), options);
-  if (std::string refusal = solver->newton_refusal(); !refusal.empty()) throw AnalysisError(refusal);
+  refuse_contact(*solver, model);
   const auto policy = make_update_policy(s.value("update", "always"));
   return run_newton_static(model, *solver, *policy, observer, newton_options(project));
 }

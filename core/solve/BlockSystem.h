@@ -12,11 +12,14 @@
 
 namespace rollsim {
 
-/// Where a group's free dofs sit: each one's node coordinates and component — for strategies that hand the groups
-/// to a library needing geometry (petsc: rigid-body near-null space, corner selection). Empty when not set.
+/// Where a group's free dofs sit: each one's node coordinates and component, and the rigid-body modes there — for
+/// strategies that hand the groups to a library needing geometry (petsc: rigid-body near-null space, corner
+/// selection). Empty when not set.
 struct DofGeometry {
   Eigen::MatrixXd x;          // free dofs × dim: the coordinates of each free dof's node
   Eigen::VectorXi component;  // per free dof: 0, 1 or 2
+  Eigen::MatrixXd modes;      // free dofs × (3 | 6): the body's rigid modes (model/RigidModes, in the body's frame,
+                              // supports ignored), so that subdomains sharing a dof have the same row for it
 };
 
 struct Group {

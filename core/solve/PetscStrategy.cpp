@@ -7,6 +7,7 @@
 // lowest group that has it — which is the rank that owns it, so each rank's owned dofs are one contiguous range.
 #include <petscksp.h>
 
+#include <Eigen/IterativeLinearSolvers>
 #include <numeric>
 #include <stdexcept>
 
@@ -98,26 +99,6 @@ Numbering number_dofs(const BlockSystem& sys, int dim) {
   return num;
 }
 
-/// Rigid-body modes (paper eq. (5)'s R before the supports) on dofs at `x` with `component`, about `center`.
-Eigen::MatrixXd rigid_modes(const DofGeometry& geo, const Eigen::RowVectorXd& center) {
-  const long n = geo.x.rows(), dim = geo.x.cols();
-  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(n, dim == 2 ? 3 : 6);
-  for (long i = 0; i < n; ++i) {
-    const int c = geo.component[i];
-    const Eigen::RowVectorXd p = geo.x.row(i) - center;
-    R(i, c) = 1.0;
-    if (dim == 2) {
-      R(i, 2) = c == 0 ? -p[1] : p[0];
-    } else {
-      const double rz[3] = {-p[1], p[0], 0}, rx[3] = {0, -p[2], p[1]}, ry[3] = {p[2], 0, -p[0]};
-      R(i, 3) = rz[c];
-      R(i, 4) = rx[c];
-      R(i, 5) = ry[c];
-    }
-  }
-  return R;
-}
-
 /// An orthonormal near-null space from the columns of `modes` (rows: the Vec's local entries).
 MatNullSpace null_space(MPI_Comm comm, const Eigen::MatrixXd& modes, PetscInt global_size) {
   std::vector<Vec> v(static_cast<size_t>(modes.cols()));
@@ -166,6 +147,44 @@ Mat local_matrix(const SparseMatrix& K, int block) {
   return A;
 }
 
+/// Every group's vector on every rank, from each rank's own group's `mine` (an MPI_Allgatherv; group g on rank g).
+std::vector<Eigen::VectorXd> gather_groups(const BlockSystem& sys, const Eigen::VectorXd& mine) {
+  std::vector<int> counts, displs;
+  int total = 0;
+  for (const Group& g : sys.groups) {
+    displs.push_back(total);
+    counts.push_back(static_cast<int>(g.C.cols()));
+    total += counts.back();
+  }
+  std::vector<double> all(static_cast<size_t>(total));
+  MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, PETSC_COMM_WORLD);
+  std::vector<Eigen::VectorXd> out;
+  for (size_t g = 0; g < counts.size(); ++g)
+    out.push_back(Eigen::Map<const Eigen::VectorXd>(all.data() + displs[g], counts[g]));
+  return out;
+}
+
+/// The glue forces λ that balance the subdomains' interface forces, C_gᵀλ = s_g = f_g − K_g u_g for every g (paper
+/// eq. (1)'s first row), in the least-squares sense: C Cᵀ λ = Σ_g C_g s_g by CG — C Cᵀ is well conditioned for the
+/// Boolean glue, and for redundant glue (singular) CG from zero gives the minimum-norm λ. The Newton driver needs
+/// them: its residual of a group is f_g − C_gᵀλ, whose interface part only λ cancels.
+Eigen::VectorXd glue_forces(const BlockSystem& sys, const std::vector<Eigen::VectorXd>& s) {
+  const long m = sys.num_multipliers();
+  if (m == 0) return Eigen::VectorXd(0);
+  SparseMatrix CCt(static_cast<int>(m), static_cast<int>(m));
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
+  for (size_t g = 0; g < sys.groups.size(); ++g) {
+    const SparseMatrix& C = sys.groups[g].C;
+    CCt += SparseMatrix(C * SparseMatrix(C.transpose()));
+    rhs += C * s[g];
+  }
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
+  cg.setTolerance(1e-14);
+  cg.compute(CCt);
+  return cg.solve(rhs);
+}
+
 /// The options nobody asked PETSc for (misspelt, or meant for the other method): what --petsc-options must not hold.
 std::string unused_options() {
   PetscInt n = 0;
@@ -205,12 +224,8 @@ class PetscStrategy final : public SolverStrategy {
     return mine;
   }
   std::string contact_refusal() const override {
-    return "solver 'petsc' does not yet support contact (tied or unilateral pairs): it solves linear, contact-free "
-           "projects — use feti, mixed or direct for this one";
-  }
-  std::string newton_refusal() const override {
-    return "solver 'petsc' does not yet support nonlinear (Newton) analyses: it solves linear, contact-free "
-           "projects — use feti or direct for this one";
+    return "solver 'petsc' does not yet support contact pairs (tied, frictionless or frictional): it solves "
+           "contact-free projects, linear or nonlinear (Newton) — use feti, mixed or direct for this one";
   }
 
  private:
@@ -223,7 +238,7 @@ class PetscStrategy final : public SolverStrategy {
   Numbering num_;
   Mat A_ = nullptr;
   KSP ksp_ = nullptr, inner_ = nullptr;  // inner_: FETI-DP's CG on the multipliers (bddc: ksp_ itself)
-  long version_ = -1;                    // the own group's K that A_ holds
+  std::vector<long> versions_;           // every group's K version at the last set-up: the same on every rank
   bool options_checked_ = false;
 };
 
@@ -231,7 +246,13 @@ void PetscStrategy::release() {
   if (ksp_) KSPDestroy(&ksp_);
   if (A_) MatDestroy(&A_);
   inner_ = nullptr;
-  version_ = -1;
+  versions_.clear();
+}
+
+std::vector<long> versions(const BlockSystem& sys) {
+  std::vector<long> v;
+  for (const Group& g : sys.groups) v.push_back(g.version);
+  return v;
 }
 
 std::string PetscStrategy::check_system(const BlockSystem& sys) const {
@@ -251,8 +272,8 @@ std::string PetscStrategy::check_system(const BlockSystem& sys) const {
            " rollsim run … --solver petsc` or give a --partition of " + std::to_string(ranks) + " subdomain" +
            (ranks == 1 ? "" : "s");
   for (const Group& g : sys.groups)
-    if (g.geometry.x.rows() != g.C.cols())
-      return "petsc: group '" + g.name + "' has no dof geometry (coordinates) to hand to PETSc";
+    if (g.geometry.x.rows() != g.C.cols() || g.geometry.modes.rows() != g.C.cols())
+      return "petsc: group '" + g.name + "' has no dof geometry (coordinates, rigid modes) to hand to PETSc";
   const Group& own = sys.groups[static_cast<size_t>(process_rank())];
   if (own.K.rows() != own.C.cols()) return "petsc: the stiffness of group '" + own.name + "' was not assembled";
   return "";
@@ -278,15 +299,8 @@ void PetscStrategy::set_up(const BlockSystem& sys) {
                                              PETSC_COPY_VALUES, &l2g));
   ROLLSIM_PETSC(MatCreateIS(comm, bs, m, m, M, M, l2g, l2g, &A_));
   ROLLSIM_PETSC(ISLocalToGlobalMappingDestroy(&l2g));
-  Eigen::RowVectorXd center = Eigen::RowVectorXd::Zero(dim);
-  long count = 0;
-  for (const Group& g : sys.groups) {
-    if (g.geometry.x.rows()) center += g.geometry.x.colwise().sum();
-    count += g.geometry.x.rows();
-  }
-  center /= static_cast<double>(std::max(count, 1L));
   Mat local = local_matrix(own.K, bs);
-  MatNullSpace local_nsp = null_space(PETSC_COMM_SELF, rigid_modes(own.geometry, center), n);
+  MatNullSpace local_nsp = null_space(PETSC_COMM_SELF, own.geometry.modes, n);
   ROLLSIM_PETSC(MatSetNearNullSpace(local, local_nsp));
   ROLLSIM_PETSC(MatNullSpaceDestroy(&local_nsp));
   ROLLSIM_PETSC(MatISSetLocalMat(A_, local));
@@ -295,21 +309,20 @@ void PetscStrategy::set_up(const BlockSystem& sys) {
   ROLLSIM_PETSC(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
   ROLLSIM_PETSC(MatSetOption(A_, MAT_SPD, PETSC_TRUE));
 
-  // the owned dofs' geometry: near-null space of the global matrix, coordinates for BDDC's corner selection
-  DofGeometry owned;
-  owned.x.resize(m, dim);
-  owned.component.resize(m);
+  // the owned dofs' geometry: near-null space of the global matrix (the rows of the body's rigid modes, the same in
+  // every subdomain holding the dof), coordinates for BDDC's corner selection
+  Eigen::MatrixXd owned_x(m, dim), owned_modes(m, own.geometry.modes.cols());
   for (size_t l = 0; l < global.size(); ++l)
     if (const PetscInt i = global[l] - num_.begin[rank]; i >= 0 && i < m) {
-      owned.x.row(i) = own.geometry.x.row(static_cast<long>(l));
-      owned.component[i] = own.geometry.component[static_cast<long>(l)];
+      owned_x.row(i) = own.geometry.x.row(static_cast<long>(l));
+      owned_modes.row(i) = own.geometry.modes.row(static_cast<long>(l));
     }
-  MatNullSpace nsp = null_space(comm, rigid_modes(owned, center), M);
+  MatNullSpace nsp = null_space(comm, owned_modes, M);
   ROLLSIM_PETSC(MatSetNearNullSpace(A_, nsp));
   ROLLSIM_PETSC(MatNullSpaceDestroy(&nsp));
   std::vector<PetscReal> coords(static_cast<size_t>(m) * static_cast<size_t>(dim));
   for (PetscInt i = 0; i < m; ++i)
-    for (int c = 0; c < dim; ++c) coords[static_cast<size_t>(i * dim + c)] = owned.x(i, c);
+    for (int c = 0; c < dim; ++c) coords[static_cast<size_t>(i * dim + c)] = owned_x(i, c);
 
   ROLLSIM_PETSC(KSPCreate(comm, &ksp_));
   PC bddc = nullptr;
@@ -317,6 +330,10 @@ void PetscStrategy::set_up(const BlockSystem& sys) {
     ROLLSIM_PETSC(KSPSetType(ksp_, KSPCG));
     ROLLSIM_PETSC(KSPGetPC(ksp_, &bddc));
     ROLLSIM_PETSC(PCSetType(bddc, PCBDDC));
+    // BDDC's pre-solve starts CG from a nonzero guess (its interior solution); measured against ‖B b‖ the tolerance
+    // then went wrong inside Newton — a second set-up stopped at iteration 0 with DIVERGED_DTOL, or with a tolerance
+    // too small to reach. Relative to the initial residual (of that guess) every solve converges as in the first.
+    ROLLSIM_PETSC(KSPConvergedDefaultSetUIRNorm(ksp_));
     inner_ = ksp_;
   } else {
     ROLLSIM_PETSC(KSPSetType(ksp_, KSPFETIDP));
@@ -354,7 +371,7 @@ void PetscStrategy::set_up(const BlockSystem& sys) {
   ROLLSIM_PETSC(KSPSetTolerances(inner_, options_.cg_tolerance, 1e-300, PETSC_DEFAULT, 10000));
   ROLLSIM_PETSC(KSPSetFromOptions(ksp_));
   ROLLSIM_PETSC(KSPSetUp(ksp_));
-  version_ = own.version;
+  versions_ = versions(sys);
 }
 
 BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
@@ -365,7 +382,9 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   const Group& own = sys.groups[rank];
   if (!options_checked_ && !options_.petsc_options.empty())
     ROLLSIM_PETSC(PetscOptionsInsertString(nullptr, options_.petsc_options.c_str()));
-  if (version_ != own.version || !ksp_) {  // every rank refactors together: the versions move in step
+  // set-up is collective: every rank sets up again when any group's K changed (a Newton iteration of the selective
+  // update may re-assemble one subdomain only) — the driver runs on every rank alike, so the versions are the same
+  if (versions_ != versions(sys) || !ksp_) {
     Stopwatch t;
     set_up(sys);
     stats_.factorize_s += t.seconds();
@@ -412,14 +431,19 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   VecDestroy(&xall);
   VecDestroy(&x);
   VecDestroy(&b);
-  sol.lambda = Eigen::VectorXd::Zero(sys.num_multipliers());  // the glue's forces are not asked back from PETSc
+  sol.lambda = glue_forces(sys, gather_groups(sys, own.f - own.K * sol.u[rank]));
   stats_.cg_iterations += its;
   stats_.solve_s += t.seconds();
   if (observer) observer->on_solve_end(stats_.solves, static_cast<int>(its));
-  if (reason < 0)
+  if (reason < 0) {
+    const bool indefinite = reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_INDEFINITE_MAT;
     sol.status = {Status::not_converged, reason == KSP_DIVERGED_ITS ? Reason::iteration_limit : Reason::breakdown,
                   "petsc (" + options_.petsc_method + "): the Krylov solve stopped after " + std::to_string(its) +
-                      " iterations: " + KSPConvergedReasons[reason]};
+                      " iterations: " + KSPConvergedReasons[reason] +
+                      (indefinite ? " (CG needs a positive definite matrix: the stiffness or tangent is not — plastic "
+                                    "flow without hardening, or a part that lost its stiffness)"
+                                  : "")};
+  }
   return sol;
 }
 

@@ -26,7 +26,7 @@ const std::vector<StrategyInfo>& solver_registry() {
        [](const SolverOptions& o) { return std::make_unique<MixedStrategy>(o, true); }},
       {"petsc",
        "PETSc (optional build): the subdomains as an unassembled MATIS matrix, one per MPI rank (mpirun -n P), solved "
-       "by PCBDDC in CG or KSPFETIDP (--petsc-method); linear, contact-free projects",
+       "by PCBDDC in CG or KSPFETIDP (--petsc-method); contact-free projects, linear or Newton",
        [](const SolverOptions& o) { return make_petsc_strategy(o); }},
   };
   return registry;

@@ -46,8 +46,6 @@ class SolverStrategy {
   /// True when it solves systems whose groups carry C_eq ≠ C (the unsymmetric coupling of slipping Coulomb friction);
   /// the Newton driver lags the friction force one iteration behind the normal force for the others.
   virtual bool solves_unsymmetric() const { return false; }
-  /// Why the strategy cannot serve the Newton driver ("" when it can).
-  virtual std::string newton_refusal() const { return ""; }
   /// Why the strategy cannot solve a model with contact pairs ("" when it can): asked before the first solve, since
   /// a frictionless pair may start with no active row.
   virtual std::string contact_refusal() const { return ""; }

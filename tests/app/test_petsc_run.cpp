@@ -1,6 +1,8 @@
 // Solver `petsc` through the real binary: under `mpirun -n 4` (one subdomain per rank) PCBDDC and KSPFETIDP give
-// the displacements of `direct` on a 2D and a 3D cantilever; bad input — an option PETSc does not use, a rank
-// count that is not the partition's, no mpirun, contact, a Newton project, an unknown method — exits 2 on every rank
+// the displacements of `direct` on a 2D and a 3D cantilever; inside the Newton driver, a J2-plastic cantilever on 1,
+// 2 and 4 ranks takes `direct`'s Newton iterations per increment (±1) to its displacements and reactions, and a load
+// beyond the limit ends `diverged` on every rank; bad input — an option PETSc does not use, a rank count that is not
+// the partition's, no mpirun (linear and Newton projects alike), contact, an unknown method — exits 2 on every rank
 // with a message. Without PETSc in the build, `--solver petsc` exits 2 saying how to build it.
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -12,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "RunBinary.h"
@@ -20,15 +23,22 @@ using json = nlohmann::json;
 
 namespace {
 
-/// A sample with its block mesh made smaller (the test's time), written into `dir`.
-std::string small_sample(const std::string& dir, const std::string& sample, const std::vector<int>& n) {
+/// A sample with its block mesh made smaller (the test's time), written into `dir`; `edit` changes it further.
+std::string small_sample(const std::string& dir, const std::string& sample, const std::vector<int>& n,
+                         const std::function<void(json&)>& edit = {}) {
   json j = json::parse(read_text(ROLLSIM_SOURCE_DIR "/samples/" + sample));
+  if (edit) edit(j);
   const char* keys[] = {"nx", "ny", "nz"};
   for (size_t i = 0; i < n.size(); ++i) j["bodies"][0]["mesh"][keys[i]] = n[i];
   j.erase("probes");  // probe points of the full-size mesh may fall between the nodes of the small one
   const std::string file = dir + "/" + sample;
   write_text(file, j.dump(2));
   return file;
+}
+
+[[maybe_unused]] json summary(const std::string& dir) {
+  const std::string text = read_text(dir + "/summary.json");
+  return text.empty() ? json() : json::parse(text);
 }
 
 [[maybe_unused]] std::vector<double> displacements(const std::string& vtu) {
@@ -54,6 +64,17 @@ RunResult mpirun(int ranks, const std::vector<std::string>& args, int timeout_s 
   return run_program(ROLLSIM_MPIEXEC, all, timeout_s);
 }
 
+/// max |a − b| / max |a| over every entry (1 when the sizes differ or a is empty).
+double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.empty() || a.size() != b.size()) return 1.0;
+  double diff = 0, scale = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    diff = std::max(diff, std::abs(a[i] - b[i]));
+    scale = std::max(scale, std::abs(a[i]));
+  }
+  return diff / scale;
+}
+
 /// max |u_petsc − u_direct| / max |u_direct| over every node's displacement.
 double relative_difference(const std::string& file, const std::string& dir, const std::string& partition,
                            const std::string& method) {
@@ -62,15 +83,25 @@ double relative_difference(const std::string& file, const std::string& dir, cons
   const auto petsc = mpirun(4, {"run", file, "--solver", "petsc", "--petsc-method", method, "--partition", partition,
                                 "--cg-tolerance", "1e-10", "--out", dir + "/" + method, "--quiet"});
   EXPECT_EQ(petsc.exit_code, 0) << petsc.err << petsc.out;
-  const std::vector<double> a = displacements(dir + "/direct/result.vtu"),
-                            b = displacements(dir + "/" + method + "/result.vtu");
-  if (a.empty() || a.size() != b.size()) return 1.0;
-  double diff = 0, scale = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    diff = std::max(diff, std::abs(a[i] - b[i]));
-    scale = std::max(scale, std::abs(a[i]));
-  }
-  return diff / scale;
+  return relative_difference(displacements(dir + "/direct/result.vtu"),
+                             displacements(dir + "/" + method + "/result.vtu"));
+}
+
+/// Every reaction component of a summary (results.reactions: body → set → vector), in order.
+std::vector<double> reactions(const json& s) {
+  std::vector<double> r;
+  for (const auto& body : s["results"]["reactions"])
+    for (const auto& set : body)
+      for (const auto& v : set) r.push_back(v.get<double>());
+  return r;
+}
+
+/// The small J2-plastic cantilever (16 × 4 elements, 5 increments of the tip's push) written into `dir`.
+std::string plastic_cantilever(const std::string& dir, const std::function<void(json&)>& edit = {}) {
+  return small_sample(dir, "cantilever-plastic-2d.json", {16, 4}, [&](json& j) {
+    j["analysis"]["increments"] = 5;
+    if (edit) edit(j);
+  });
 }
 
 TEST(PetscRun, Bddc2DCantileverAgreesWithDirect) {
@@ -97,14 +128,71 @@ TEST(PetscRun, FetiDp3DCantileverAgreesWithDirect) {
   EXPECT_LT(relative_difference(file, dir, "2x2x1", "fetidp"), 1e-7);
 }
 
-/// `mpirun -n ranks rollsim run` (a small 2D cantilever in 2×2) with `extra` arguments exits 2 on every rank (no
-/// rank left hanging) with `message`.
-void expect_refused_by_every_rank(int ranks, const std::vector<std::string>& extra, const std::string& message) {
+// Newton: every rank runs the driver, each assembles its own subdomain's tangent, PETSc solves. The iterations of
+// every increment (±1) and the answers are direct's; the plastic strain shows the test is past the elastic range.
+TEST(PetscRun, NewtonPlasticCantileverAgreesWithDirectOnOneTwoAndFourRanks) {
+  const std::string dir = make_temp_dir("petsc-newton");
+  const std::string file = plastic_cantilever(dir);
+  const auto direct = run_rollsim({"run", file, "--solver", "direct", "--out", dir + "/direct", "--quiet"});
+  ASSERT_EQ(direct.exit_code, 0) << direct.err;
+  const json want = summary(dir + "/direct");
+  ASSERT_EQ(want["increments"].size(), 5u);
+  EXPECT_GT(want["results"]["max_plastic_strain"]["beam"].get<double>(), 1e-3);
+  const std::vector<double> u = displacements(dir + "/direct/result.vtu");
+  for (const auto& [ranks, partition] : std::vector<std::pair<int, std::string>>{{1, "1x1"}, {2, "2x1"}, {4, "2x2"}}) {
+    const std::string out = dir + "/petsc" + std::to_string(ranks);
+    const auto r = mpirun(ranks, {"run", file, "--solver", "petsc", "--partition", partition, "--cg-tolerance", "1e-10",
+                                  "--out", out, "--quiet"});
+    ASSERT_EQ(r.exit_code, 0) << ranks << " ranks\n" << r.err << r.out;
+    const json got = summary(out);
+    EXPECT_EQ(got["solver"]["mode"], "petsc");
+    ASSERT_EQ(got["increments"].size(), want["increments"].size()) << ranks << " ranks";
+    for (size_t i = 0; i < want["increments"].size(); ++i)
+      EXPECT_NEAR(got["increments"][i]["newton_iterations"].get<int>(),
+                  want["increments"][i]["newton_iterations"].get<int>(), 1)
+          << ranks << " ranks, increment " << i + 1;
+    if (ranks > 1)  // one subdomain: BDDC's exact interior solve answers before the first iteration
+      EXPECT_GT(got["solver"]["cg_iterations_total"].get<long>(), 0) << ranks << " ranks";
+    EXPECT_LT(relative_difference(u, displacements(out + "/result.vtu")), 1e-7) << ranks << " ranks";
+    EXPECT_LT(relative_difference(reactions(want), reactions(got)), 1e-6) << ranks << " ranks";
+    EXPECT_NEAR(got["results"]["max_plastic_strain"]["beam"].get<double>(),
+                want["results"]["max_plastic_strain"]["beam"].get<double>(),
+                1e-6 * want["results"]["max_plastic_strain"]["beam"].get<double>())
+        << ranks << " ranks";
+  }
+}
+
+// A load beyond the limit of a perfectly plastic body: the tangent loses its stiffness, PETSc's CG fails, the steps
+// are cut back until none is left — `diverged` naming the increment, on every rank (none left hanging), exit 4.
+TEST(PetscRun, NewtonBeyondTheLimitLoadEndsDivergedOnEveryRank) {
+  const std::string dir = make_temp_dir("petsc-newton-diverged");
+  const std::string file = plastic_cantilever(dir, [](json& j) {
+    j["materials"][0]["hardening_modulus"] = 0.0;
+    j["boundary_conditions"][1] = {{"type", "pressure"}, {"body", "beam"}, {"surface", "xmax"}, {"value", 2000.0}};
+    j["analysis"]["max_cutbacks"] = 1;
+  });
+  const auto r = mpirun(4, {"run", file, "--solver", "petsc", "--partition", "2x2", "--out", dir + "/out"});
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  const json s = summary(dir + "/out");
+  EXPECT_EQ(s["status"], "diverged");
+  const std::string message = s["message"].get<std::string>();
+  EXPECT_NE(message.find("increment "), std::string::npos) << message;
+  EXPECT_NE(message.find("1 cut-backs"), std::string::npos) << message;
+  EXPECT_NE(message.find("positive definite"), std::string::npos) << message;
+  EXPECT_EQ(message.find("nan"), std::string::npos) << message;
+}
+
+/// `mpirun -n ranks rollsim run` (a small 2D cantilever in 2×2; `newton`: the small plastic one) with `extra`
+/// arguments exits 2 on every rank (no rank left hanging) with `message`.
+void expect_refused_by_every_rank(int ranks, const std::vector<std::string>& extra, const std::string& message,
+                                  bool newton = false) {
   const std::string dir = make_temp_dir("petsc-refused");
-  std::vector<std::string> args{"run",         small_sample(dir, "cantilever-2d-120x120.json", {8, 8}),
-                                "--solver",    "petsc",
-                                "--partition", "2x2",
-                                "--out",       dir + "/out"};
+  std::vector<std::string> args{
+      "run",         newton ? plastic_cantilever(dir) : small_sample(dir, "cantilever-2d-120x120.json", {8, 8}),
+      "--solver",    "petsc",
+      "--partition", "2x2",
+      "--out",       dir + "/out"};
   args.insert(args.end(), extra.begin(), extra.end());
   const auto r = mpirun(ranks, args);
   EXPECT_FALSE(r.timed_out);
@@ -114,26 +202,38 @@ void expect_refused_by_every_rank(int ranks, const std::vector<std::string>& ext
 
 TEST(PetscRun, RefusesAnOptionPetscDoesNotUseOnEveryRank) {
   expect_refused_by_every_rank(4, {"--petsc-options", "-no_such_option 3"}, "no_such_option");
+  expect_refused_by_every_rank(4, {"--petsc-options", "-no_such_option 3"}, "no_such_option", true);
 }
 
 TEST(PetscRun, RefusesARankCountThatIsNotThePartitions) {
   expect_refused_by_every_rank(2, {}, "one MPI rank per subdomain");
+  expect_refused_by_every_rank(2, {}, "one MPI rank per subdomain", true);
 }
 
 TEST(PetscRun, WithoutMpirunAPartitionOfFourIsRefused) {
   const std::string dir = make_temp_dir("petsc-nompirun");
-  const std::string file = small_sample(dir, "cantilever-2d-120x120.json", {8, 8});
-  const auto r = run_rollsim({"run", file, "--solver", "petsc", "--partition", "2x2", "--out", dir + "/out"});
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("mpirun -n 4"), std::string::npos) << r.err;
+  for (const std::string& file : {small_sample(dir, "cantilever-2d-120x120.json", {8, 8}), plastic_cantilever(dir)}) {
+    const auto r = run_rollsim({"run", file, "--solver", "petsc", "--partition", "2x2", "--out", dir + "/out"});
+    EXPECT_EQ(r.exit_code, 2) << file << "\n" << r.err;
+    EXPECT_NE(r.err.find("mpirun -n 4"), std::string::npos) << file << "\n" << r.err;
+  }
 }
 
-TEST(PetscRun, ContactAndNewtonAreNotYetSupported) {
+// Contact pairs of every kind are refused before anything is solved, in the linear and the Newton analysis alike,
+// naming the pair and its kind.
+TEST(PetscRun, ContactIsNotYetSupported) {
   const std::string dir = make_temp_dir("petsc-unsupported");
-  for (const std::string sample : {"block-indent-2d-50x30.json", "rolling-2d-36x6.json"}) {  // tied contact; Newton
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"block-indent-2d-50x30.json", "is tied"},           // linear
+      {"cylinder-plastic-2d.json", "is frictionless"},     // Newton
+      {"rolling-2d-36x6.json", "contacts[0] 'roll-slab'"}  // Newton, a rolling pass
+  };
+  for (const auto& [sample, kind] : cases) {
     const auto r = run_rollsim({"run", ROLLSIM_SOURCE_DIR "/samples/" + sample, "--solver", "petsc", "--out", dir});
     EXPECT_EQ(r.exit_code, 2) << sample << "\n" << r.err;
-    EXPECT_NE(r.err.find("not yet support"), std::string::npos) << sample << "\n" << r.err;
+    EXPECT_NE(r.err.find("solver 'petsc' does not yet support contact pairs"), std::string::npos) << sample << "\n"
+                                                                                                  << r.err;
+    EXPECT_NE(r.err.find(kind), std::string::npos) << sample << "\n" << r.err;
   }
 }
 

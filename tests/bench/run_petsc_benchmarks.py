@@ -4,7 +4,8 @@
 Usage: tests/bench/run_petsc_benchmarks.py [--build DIR] [--out FILE] [--sections LIST] [--memory-cube N]
   --build        build directory holding app/rollsim built with -DROLLSIM_WITH_PETSC=ON (default: build)
   --out          the tables (default docs/petsc-bench-output.md; docs/BENCHMARKS-PETSC.md discusses them)
-  --sections     agreement,iterations,weak,memory (default: all four)
+  --sections     agreement,iterations,weak,memory,newton (default: all five)
+  --repeats      runs of each newton case whose median wall time is quoted (default 3)
   --memory-cube  elements per side of the 3D cube of the peak-memory runs (default 32)
 
 Every number is measured by running `rollsim run` (under `mpirun -n P --oversubscribe` for `petsc`) and reading its
@@ -243,11 +244,60 @@ def memory(r, work, cube, lines):
     lines.append("")
 
 
+def reactions(summary):
+    return [v for body in summary["results"]["reactions"].values() for vec in body.values() for v in vec]
+
+
+def newton(r, work, repeats, lines):
+    lines += ["## 5. Inside the Newton driver (a J2-plastic cantilever, no contact)", "",
+              "`samples/cantilever-plastic-2d.json` (plane strain, B-bar, E 200000, σ_y 250, H 2000, the free end "
+              "pushed down 0.5 = 6× the first-yield deflection in 10 increments) and the same beam with twice the "
+              "elements each way. `direct` (CHOLMOD) on one process against `--solver petsc` (BDDC, "
+              "`--cg-tolerance 1e-10`) on P = 1, 2, 4 ranks, one subdomain each, update policy `always`. Every "
+              "rank runs the Newton driver; each assembles its own subdomain's tangent; PETSc solves. "
+              "*Newton its*: the iterations of each increment (summary.json); *Krylov its*: PETSc's CG iterations "
+              "over the run and per linear solve; *max diff*: max |u − u_direct| / max |u_direct| over every node, "
+              "and the same for every reaction component. *time / direct*: median wall time of %d runs of the "
+              "whole `rollsim run` (mpirun start-up included) over direct's median. **P = 4 runs 4 processes on "
+              "2 cores (oversubscribed)**, P = 2 shares them with the machine's other jobs." % repeats, "",
+              "| mesh | P | partition | Newton its per increment | same as direct | Krylov its (per solve) | "
+              "max diff u | max diff reactions | time / direct |",
+              "|---|---|---|---|---|---|---|---|---|"]
+
+    def median_run(path, solver, ranks, extra):
+        runs = [r.run(path, solver, ranks, extra) for _ in range(repeats)]
+        walls = sorted(x[2] for x in runs)
+        return runs[0][0], runs[0][1], walls[len(walls) // 2]
+
+    for label, mesh in [("80×16", {}), ("160×32", {"nx": 160, "ny": 32})]:
+        path = os.path.join(ROOT, "samples/cantilever-plastic-2d.json")
+        if mesh:
+            path = write_project(work, "samples/cantilever-plastic-2d.json", "plastic-" + label, mesh)
+        d, dout, dwall = median_run(path, "direct", 1, [])
+        dits = [inc["newton_iterations"] for inc in d["increments"]]
+        u0 = vtu_displacement(os.path.join(dout, "result.vtu"))
+        lines.append("| %s | direct | – | %s | – | – | – | – | 1 (%.2f s) |" % (label, " ".join(map(str, dits)), dwall))
+        for P, part in [(1, "1x1"), (2, "2x1"), (4, "2x2")]:
+            s, out, wall = median_run(path, "petsc", P, ["--partition", part, "--cg-tolerance", "1e-10"])
+            sits = [inc["newton_iterations"] for inc in s["increments"]]
+            same = len(sits) == len(dits) and all(abs(a - b) <= 1 for a, b in zip(sits, dits))
+            solves = s["solver"]["newton_iterations"]
+            du = max_rel_diff(u0, vtu_displacement(os.path.join(out, "result.vtu")))
+            dr = max_rel_diff(reactions(d), reactions(s))
+            row = [label, str(P), part, " ".join(map(str, sits)),
+                   ("yes" if sits == dits else "±1") if same else "**no**",
+                   "%d (%.1f)" % (its(s), its(s) / max(solves, 1)), "%.1e" % du, "%.1e" % dr, "%.2f" % (wall / dwall)]
+            lines.append("| " + " | ".join(row) + " |")
+            log("newton", row)
+    lines.append("")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "petsc-bench-output.md"))
-    ap.add_argument("--sections", default="agreement,iterations,weak,memory")
+    ap.add_argument("--sections", default="agreement,iterations,weak,memory,newton")
+    ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--memory-cube", type=int, default=32)
     a = ap.parse_args()
     rollsim = os.path.join(os.path.abspath(a.build), "app", "rollsim")
@@ -269,6 +319,8 @@ def main():
         weak(r, work, body)
     if "memory" in sections:
         memory(r, work, a.memory_cube, body)
+    if "newton" in sections:
+        newton(r, work, a.repeats, body)
     load1 = open("/proc/loadavg").read().split()[:3]
     version = subprocess.run([rollsim, "--version"], capture_output=True, text=True).stdout.strip().splitlines()
     petsc = subprocess.run(["pkg-config", "--modversion", "PETSc"], capture_output=True, text=True).stdout.strip()

@@ -1,5 +1,7 @@
 // The group assembler: r_g = f_ext − f_int(u_g) is the linear system's right-hand side at rest and vanishes at its
-// solution, the subdomains' residuals add up to the body's, and only the listed groups are touched.
+// solution, the subdomains' residuals add up to the body's, and only the listed groups are touched; with local groups
+// set (petsc) a Newton assembly gives every group its residual and only the local ones their tangent. The layout's
+// dof geometry gives a subdomain's dofs the body's rigid-mode rows (the same on both sides of the interface).
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
@@ -71,4 +73,35 @@ TEST(GroupAssembler, TouchesOnlyTheListedGroups) {
   EXPECT_GT(sys.groups[1].K.nonZeros(), 0);
   EXPECT_EQ(sys.groups[2].f.size(), 0);
   EXPECT_EQ(sys.groups[1].f.size(), sys.groups[1].K.rows());
+}
+
+TEST(GroupAssembler, NewtonTangentsOnlyOfTheLocalGroups) {
+  const Model m = loaded_block(2);
+  GroupLayout torn(m, true, Multipliers::NonRedundant);
+  BlockSystem& sys = torn.system();
+  torn.assembler().set_local({1});
+  std::vector<Eigen::VectorXd> u;
+  for (const Group& g : sys.groups) u.push_back(Eigen::VectorXd::Zero(g.C.cols()));
+  const std::vector<size_t> all = all_groups(sys);
+  EXPECT_FALSE(torn.assembler().assemble_newton(all, all, u, {1.0, 1.0, 0.0}, sys));
+  for (size_t g = 0; g < sys.groups.size(); ++g) {
+    EXPECT_EQ(sys.groups[g].f.size(), sys.groups[g].C.cols()) << "every group's residual, group " << g;
+    EXPECT_EQ(sys.groups[g].K.nonZeros() > 0, g == 1) << "the tangent of the local group only, group " << g;
+    EXPECT_EQ(torn.assembler().tangent_evaluations()[g], 1) << "counted for the run, group " << g;
+  }
+}
+
+TEST(GroupAssembler, SubdomainGeometryHasTheBodysRigidModeRows) {
+  const Model m = loaded_block(3);
+  GroupLayout whole(m, false, Multipliers::NonRedundant), torn(m, true, Multipliers::NonRedundant);
+  const Eigen::MatrixXd& body = whole.system().groups[0].geometry.modes;
+  ASSERT_EQ(body.cols(), 6);
+  const BodyDecomposition dec = decompose_body(m, 0, m.bodies[0].partition);
+  for (size_t s = 0; s < dec.subdomains.size(); ++s) {
+    const Eigen::MatrixXd& modes = torn.system().groups[s].geometry.modes;
+    ASSERT_EQ(modes.rows(), static_cast<long>(dec.subdomains[s].free_dofs.size()));
+    for (size_t l = 0; l < dec.subdomains[s].free_dofs.size(); ++l)
+      EXPECT_LT((modes.row(static_cast<long>(l)) - body.row(dec.subdomains[s].free_dofs[l])).norm(), 1e-14)
+          << "subdomain " << s << ", local dof " << l;
+  }
 }

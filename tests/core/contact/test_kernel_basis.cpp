@@ -54,3 +54,27 @@ TEST(KernelBasis, ThreeDimensionalModesZeroToSix) {
   EXPECT_EQ(free_modes(3, {{{0, 1, 2, 3}, {kFree, kFree, kFix}}}), 3);                  // an edge line held in z
   EXPECT_EQ(free_modes(3, {{{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, {kFix, kFix, kFix}}}), 0);  // a face clamped
 }
+
+// rigid_mode_rows at any list of dofs in a mesh's frame gives rigid_modes' rows there (the one formula), and K of an
+// unsupported body annihilates them.
+TEST(KernelBasis, ModeRowsAtChosenDofsAreTheBodysModes) {
+  for (int dim : {2, 3}) {
+    SCOPED_TRACE(dim);
+    BlockSpec spec;
+    spec.dim = dim;
+    spec.n = {3, 2, 2};
+    const Mesh mesh = make_block(spec);
+    const Eigen::MatrixXd R = rigid_modes(mesh);
+    const std::vector<int> dofs = {1, 4, 7, dim * mesh.num_nodes() - 1};  // a few, in any component
+    Eigen::MatrixXd x(static_cast<long>(dofs.size()), dim);
+    Eigen::VectorXi component(static_cast<long>(dofs.size()));
+    for (size_t i = 0; i < dofs.size(); ++i) {
+      for (int k = 0; k < dim; ++k) x(static_cast<long>(i), k) = mesh.nodes[dofs[i] / dim][k];
+      component[static_cast<long>(i)] = dofs[i] % dim;
+    }
+    const Eigen::MatrixXd rows = rigid_mode_rows(x, component, mode_frame(mesh));
+    ASSERT_EQ(rows.cols(), R.cols());
+    for (size_t i = 0; i < dofs.size(); ++i)
+      EXPECT_LT((rows.row(static_cast<long>(i)) - R.row(dofs[i])).norm(), 1e-15) << "dof " << dofs[i];
+  }
+}
