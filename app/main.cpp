@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "BenchSuiteCommand.h"
 #include "Commands.h"
 #include "project/ProjectSchema.h"
 #include "solve/Blas.h"
@@ -72,10 +73,11 @@ int main(int argc, char** argv) {
 
   BenchOptions bench;
   auto* cmd_bench = cli.add_subcommand("bench", "time assembly, ordering, factorization and solve: skyline vs CHOLMOD");
-  cmd_bench->add_option("samples", bench.samples, "project files")->required();
+  cmd_bench->add_option("samples", bench.samples, "project files");
   cmd_bench->add_option("--repeat", bench.repeat, "repetitions (the median is reported)")->check(CLI::Range(1, 100));
   cmd_bench->add_option("--threads", bench.threads, "BLAS threads")->check(CLI::Range(1, 256));
   cmd_bench->add_option("--csv", bench.csv, "also write the table as CSV");
+  auto bench_suite = add_bench_suites(*cmd_bench);  // `rollsim bench accuracy | stability` (BenchSuiteCommand.cpp)
 
   std::string export_project, export_out;
   auto* cmd_export = cli.add_subcommand("export-ccx", "write the model as CalculiX input (.inp)");
@@ -111,7 +113,14 @@ int main(int argc, char** argv) {
     if (*cmd_check) return check_command(check_file);
     if (*cmd_mesh) return mesh_command(mesh);
     if (*cmd_schema) return schema_command();
-    if (*cmd_bench) return bench_command(bench);
+    if (*cmd_bench) {
+      if (auto code = bench_suite()) return *code;
+      if (bench.samples.empty()) {
+        std::cerr << "rollsim: error: bench: give project files, or a suite: accuracy, stability\n";
+        return 2;
+      }
+      return bench_command(bench);
+    }
     if (*cmd_export) return export_ccx_command(export_project, export_out);
     if (*cmd_gui) return gui_command(gui);
   } catch (const std::exception& e) {
