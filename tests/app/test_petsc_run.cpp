@@ -151,8 +151,9 @@ TEST(PetscRun, NewtonPlasticCantileverAgreesWithDirectOnOneTwoAndFourRanks) {
       EXPECT_NEAR(got["increments"][i]["newton_iterations"].get<int>(),
                   want["increments"][i]["newton_iterations"].get<int>(), 1)
           << ranks << " ranks, increment " << i + 1;
-    if (ranks > 1)  // one subdomain: BDDC's exact interior solve answers before the first iteration
+    if (ranks > 1) {  // one subdomain: BDDC's exact interior solve answers before the first iteration
       EXPECT_GT(got["solver"]["cg_iterations_total"].get<long>(), 0) << ranks << " ranks";
+    }
     EXPECT_LT(relative_difference(u, displacements(out + "/result.vtu")), 1e-7) << ranks << " ranks";
     EXPECT_LT(relative_difference(reactions(want), reactions(got)), 1e-6) << ranks << " ranks";
     EXPECT_NEAR(got["results"]["max_plastic_strain"]["beam"].get<double>(),
