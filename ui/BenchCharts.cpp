@@ -1,6 +1,5 @@
 #include "BenchCharts.h"
 
-#include <QApplication>
 #include <QChart>
 #include <QLegend>
 #include <QLegendMarker>
@@ -10,9 +9,8 @@
 #include <QScatterSeries>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <memory>
 
+#include "OffscreenQt.h"
 #include "RollingCharts.h"
 #include "io/AtomicFile.h"
 
@@ -111,21 +109,9 @@ QChart* make_chart(const std::string& title, const std::vector<TimeErrorSeries>&
 
 void write_time_error_png(const std::filesystem::path& file, const std::string& title,
                           const std::vector<TimeErrorSeries>& series, std::vector<TimeErrorPoint> front) {
-  std::unique_ptr<QApplication> own;
-  QtMessageHandler previous = nullptr;
-  if (!QApplication::instance()) {  // the batch command: no display is needed nor used
-    qputenv("QT_QPA_PLATFORM", "offscreen");
-    previous = qInstallMessageHandler([](QtMsgType type, const QMessageLogContext&, const QString& msg) {
-      if (type == QtCriticalMsg || type == QtFatalMsg) std::fprintf(stderr, "rollsim: Qt: %s\n", qPrintable(msg));
-    });
-    static int argc = 1;
-    static char name[] = "rollsim";
-    static char* argv[] = {name, nullptr};
-    own = std::make_unique<QApplication>(argc, argv);
-  }
+  const OffscreenQt qt;
   const QByteArray png = render_png(make_chart(title, series, std::move(front)), QSize(1000, 650));
   write_file_atomically(file, std::string(png.constData(), static_cast<size_t>(png.size())));
-  if (own) qInstallMessageHandler(previous);
 }
 
 }  // namespace rollsim::ui

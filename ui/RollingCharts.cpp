@@ -1,6 +1,5 @@
 #include "RollingCharts.h"
 
-#include <QApplication>
 #include <QBuffer>
 #include <QChart>
 #include <QGraphicsScene>
@@ -13,9 +12,8 @@
 #include <QScatterSeries>
 #include <QValueAxis>
 #include <algorithm>
-#include <cstdio>
-#include <memory>
 
+#include "OffscreenQt.h"
 #include "io/AtomicFile.h"
 
 namespace rollsim::ui {
@@ -155,19 +153,7 @@ QByteArray render_png(QChart* chart, QSize size) {
 
 void write_rolling_plots(const std::filesystem::path& dir, const RollingResults& r, int dim,
                          const RollingTheory& sims) {
-  std::unique_ptr<QApplication> own;
-  QtMessageHandler previous = nullptr;
-  if (!QApplication::instance()) {  // the batch command: no display is needed nor used
-    qputenv("QT_QPA_PLATFORM", "offscreen");
-    // Qt's notes on its own set-up (no XDG_RUNTIME_DIR, fonts) are not the user's business in a batch run
-    previous = qInstallMessageHandler([](QtMsgType type, const QMessageLogContext&, const QString& msg) {
-      if (type == QtCriticalMsg || type == QtFatalMsg) std::fprintf(stderr, "rollsim: Qt: %s\n", qPrintable(msg));
-    });
-    static int argc = 1;
-    static char name[] = "rollsim";
-    static char* argv[] = {name, nullptr};
-    own = std::make_unique<QApplication>(argc, argv);
-  }
+  const OffscreenQt qt;
   const QSize size(1000, 600);
   auto write = [&](const char* file, QChart* chart) {
     const QByteArray png = render_png(chart, size);
@@ -175,7 +161,6 @@ void write_rolling_plots(const std::filesystem::path& dir, const RollingResults&
   };
   write("rolling.png", make_history_chart(r, dim, &sims));
   write("contact_profile.png", make_arc_chart(r.profile));
-  if (own) qInstallMessageHandler(previous);
 }
 
 }  // namespace rollsim::ui
