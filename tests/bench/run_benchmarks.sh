@@ -88,7 +88,7 @@ stage_bench() {
 # ---------------------------------------------------------------- 1b. factorizations against the DGEMM peak
 factor_bench() {
   local files=() t
-  [[ -x $FACTOR_BENCH ]] || return 0
+  [[ -x $FACTOR_BENCH ]] || { log "$FACTOR_BENCH is not built (-DROLLSIM_BUILD_BENCH=ON): factorization table skipped"; return 0; }
   for s in "${SAMPLES[@]}"; do files+=("$ROOT/samples/$s.json"); done
   for t in $THREADS; do
     log "rollsim_factor_bench --threads $t"

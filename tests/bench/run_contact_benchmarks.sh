@@ -27,6 +27,7 @@ while (($#)); do
   esac
 done
 ROLLSIM=$(realpath "$ROLLSIM")
+[[ -x $BENCH ]] || { echo "run_contact_benchmarks: $BENCH is not built (cmake -DROLLSIM_BUILD_TESTS=ON -DROLLSIM_BUILD_BENCH=ON build && cmake --build build)" >&2; exit 2; }
 BENCH=$(realpath "$BENCH")
 for tool in "$ROLLSIM" "$BENCH" /usr/bin/time awk; do
   command -v "$tool" > /dev/null || { echo "run_contact_benchmarks: $tool not found" >&2; exit 2; }

@@ -39,6 +39,7 @@ while (($#)); do
 done
 ROLLSIM=$BUILD/app/rollsim
 BENCH=$BUILD/tests/bench/rollsim_feti_bench
+[[ -x $BENCH ]] || { echo "run_feti_benchmarks: $BENCH is not built (cmake -DROLLSIM_BUILD_TESTS=ON -DROLLSIM_BUILD_BENCH=ON build && cmake --build build)" >&2; exit 2; }
 for tool in "$ROLLSIM" "$BENCH" /usr/bin/time python3 awk; do
   command -v "$tool" > /dev/null || { echo "run_feti_benchmarks: $tool not found" >&2; exit 2; }
 done
