@@ -12,11 +12,14 @@
 #include "io/AtomicFile.h"
 #include "io/ConvergenceCsv.h"
 #include "io/OutputFolder.h"
+#include "io/PartitionReportJson.h"
 #include "io/RollingCsv.h"
 #ifdef ROLLSIM_HAVE_GUI
 #include "RollingCharts.h"
 #endif
 #include "io/Summary.h"
+#include "model/DofMap.h"
+#include "partition/PartitionReport.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 #include "project/RunProject.h"
@@ -143,6 +146,28 @@ int check_command(const std::string& file) {
   }
 }
 
+namespace {
+/// partition.json beside mesh.vtu when a body is partitioned: the window's partition table (counts and predicted
+/// cost against one domain) for batch users. An error message, or empty.
+std::string write_partition_report(const std::filesystem::path& file, const Model& model) {
+  std::vector<BodyPartitionReport> reports;
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const Body& b = model.bodies[i];
+    if (b.partition.num_subdomains <= 1) continue;
+    const DofMap dofs(b, static_cast<int>(i), model.displacements);
+    PartitionReporter reporter(b, dofs);
+    reports.push_back({b.name, reporter.update(b.partition)});
+  }
+  if (reports.empty()) return {};
+  try {
+    write_file_atomically(file, partition_report_json(reports));
+  } catch (const std::exception& e) {
+    return "cannot write " + file.string() + ": " + e.what();
+  }
+  return {};
+}
+}  // namespace
+
 int mesh_command(const RunOptions& o) {
   Model model;
   Project project;
@@ -161,6 +186,8 @@ int mesh_command(const RunOptions& o) {
   } catch (const std::exception& e) {
     return invalid("cannot write " + file.string() + ": " + e.what());
   }
+  if (const auto err = write_partition_report(file.parent_path() / "partition.json", model); !err.empty())
+    return invalid(err);
   if (!o.quiet)
     std::fprintf(stderr, "rollsim: %s: %zu bodies, %ld nodes, %ld elements\n", project.name().c_str(),
                  model.bodies.size(), model.total_nodes(), model.total_elements());

@@ -1,5 +1,6 @@
 // `rollsim mesh`: the model's meshes as mesh.vtu without solving — counts in the VTU header equal the model's,
-// the body and subdomain arrays are there, and bad input exits 2 writing nothing.
+// the body and subdomain arrays are there, partition.json holds the partition table, and bad input exits 2 writing
+// nothing.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -36,6 +37,19 @@ TEST(MeshCommand, WritesTheGeneratedRollingMeshesWithoutSolving) {
   EXPECT_NE(vtu.find("Name=\"subdomain_id\""), std::string::npos);
   EXPECT_EQ(vtu.find("Name=\"displacement\""), std::string::npos);  // nothing was solved
   EXPECT_FALSE(fs::exists(dir + "/summary.json"));
+  // the window's partition table, for batch users: 8 subdomains of the slab and their predicted cost
+  const std::string table = read_text(dir + "/partition.json");
+  EXPECT_NE(table.find("\"body\": \"slab\""), std::string::npos) << table;
+  EXPECT_NE(table.find("\"subdomain_count\": 8"), std::string::npos) << table;
+  EXPECT_NE(table.find("\"predicted_ratio\""), std::string::npos) << table;
+}
+
+TEST(MeshCommand, NoPartitionTableWithoutAPartition) {
+  const std::string dir = make_temp_dir("mesh-whole");
+  const auto r = run_rollsim({"mesh", ROLLSIM_SOURCE_DIR "/samples/plate-hole-2d.json", "--out", dir});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/mesh.vtu"));
+  EXPECT_FALSE(fs::exists(dir + "/partition.json"));
 }
 
 TEST(MeshCommand, BadInputExitsTwoWritingNothing) {

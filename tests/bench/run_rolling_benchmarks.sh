@@ -14,7 +14,13 @@
 #   friction: the 36x6 pass to steady state (120 mm, 0.5 mm steps): sticking, Coulomb μ 0.4 / 0.3 (direct's
 #            consistent friction tangent; μ 0.3 also by mixed, lagged) / 0.25, and a rigid against an elastic roll
 #            (Hitchcock) with a mild hardening H = 100 MPa: steady means, Newton iterations and cut-backs.
-# Usage: tests/bench/run_rolling_benchmarks.sh [table13|table15|convergence|friction] [--rollsim BIN] [--repeat N] [--travel MM]
+#   table14, table16, table17: the paper's 3D tables over TRAVEL mm in 1 mm steps (cg_tolerance 1e-10, roll 100 x 3 x 6):
+#            XIV direct, Mixed I and Mixed II on slabs 16x8x4 … 18x10x6 (--meshes to choose); XVI the slab 18x10x6 by
+#            direct, mixed and FETI in 2x1x1, 1x2x1, 2x2x1, 3x2x1 (length x width x thickness), DD-I and DD-II; XVII
+#            the slab 24x12x8, DD-II, every partition of the paper. CPU seconds (user + system, one thread, as the
+#            paper's), the window's partition-table prediction beside the FETI rows, and the roll force of each.
+# Usage: tests/bench/run_rolling_benchmarks.sh [table13|table14|table15|table16|table17|convergence|friction] [--rollsim BIN]
+#        [--repeat N] [--travel MM] [--meshes "16x8x4 18x10x6"]
 # This script builds nothing. Timing is not a test: it fails only if a run fails.
 set -euo pipefail
 
@@ -22,6 +28,7 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 ROLLSIM=$ROOT/build/app/rollsim
 REPEAT=3
 TRAVEL=20
+MESHES="16x8x4 16x8x5 16x10x5 18x10x6"
 PART=${1:-table13}
 (($#)) && shift
 while (($#)); do
@@ -29,7 +36,8 @@ while (($#)); do
     --rollsim) ROLLSIM=$2; shift 2 ;;
     --repeat) REPEAT=$2; shift 2 ;;
     --travel) TRAVEL=$2; shift 2 ;;
-    -h|--help) sed -n 2,17p "$0"; exit 0 ;;
+    --meshes) MESHES=$2; shift 2 ;;
+    -h|--help) sed -n 2,23p "$0"; exit 0 ;;
     *) echo "run_rolling_benchmarks: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -205,10 +213,117 @@ friction() {
   variant elastic-H100 direct slab_hardening=100
 }
 
+# project3d NAME NXxNWxNT -> $WORK/NAME.json: the 3D sample's pass with this slab, TRAVEL mm in 1 mm steps
+project3d() {
+  python3 - "$ROOT/samples/rolling-3d-16x8x4.json" "$WORK/$1.json" "$2" "$TRAVEL" <<'PY'
+import json, sys
+src, dst, mesh, travel = sys.argv[1:]
+nx, nw, nt = map(int, mesh.split("x"))
+p = json.load(open(src))
+p["process"].update(slab_nx=nx, slab_nw=nw, slab_nt=nt, travel=float(travel), travel_increment=1.0)
+p["solver"].update(cg_tolerance=1e-10)
+json.dump(p, open(dst, "w"))
+PY
+}
+
+# run3d NAME MODE PART UPDATE: REPEAT runs of $WORK/NAME.json on one thread, CPU time and peak memory beside each
+run3d() {
+  local extra=()
+  [[ $3 != - ]] && extra=(--partition "slab=$3")
+  for r in $(seq "$REPEAT"); do
+    OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 /usr/bin/time -f "%U %S %M" -o "$WORK/$1-$2-$3-$4-$r.time" \
+      "$ROLLSIM" run "$WORK/$1.json" --quiet --threads 1 --out "$WORK/$1-$2-$3-$4-$r" --solver "$2" --update "$4" \
+      "${extra[@]}" >/dev/null 2>&1 || true
+  done
+  # the window's partition table for the same map (partition.json): its predicted cost against one domain
+  [[ $3 == - ]] || "$ROLLSIM" mesh "$WORK/$1.json" --quiet --partition "slab=$3" --out "$WORK/$1-$3-mesh" >/dev/null
+}
+
+# report3d NAME PAPER_CSV "MODE PART UPDATE"...: one row per variant against the first (direct), beside the paper's
+report3d() {
+  python3 - "$WORK" "$REPEAT" "$@" <<'PY'
+import csv, glob, json, statistics, sys
+work, repeat, name, paper, *variants = sys.argv[1:]
+repeat = int(repeat)
+ref = {}
+for r in csv.DictReader(l for l in open(paper) if not l.startswith("#")):
+    ref[(r.get("partition") or r.get("slab_mesh_XxYxZ"), r.get("variant") or "")] = r
+base = None
+for v in variants:
+    mode, part, update = v.split()
+    runs = [f"{work}/{name}-{mode}-{part}-{update}-{r}" for r in range(1, repeat + 1)]
+    d = json.load(open(runs[0] + "/summary.json"))
+    variant = {"always": "I", "selective": "II"}[update]
+    label = part if mode == "feti" else mode
+    domains = {"direct": 1, "mixed": 2}.get(mode) or eval(part.replace("x", "*")) + 1
+    if d["status"] != "converged":
+        print(f"| {domains} | {label} | {variant} | {d['status']}: {d.get('message', '')[:100]} | | | | | | | | |")
+        continue
+    cpu = statistics.median(sum(map(float, open(r + ".time").read().split()[:2])) for r in runs)
+    wall = statistics.median(json.load(open(r + "/summary.json"))["timing"]["total_s"] for r in runs)
+    peak = max(int(open(r + ".time").read().split()[2]) for r in runs) / 1024
+    base = base or cpu
+    s = d["solver"]
+    fac = ", ".join(f"{g} {n}" for g, n in s["factorizations"].items())
+    if name.startswith("t14"):
+        row = ref.get((name.split("-")[1], ""))
+        col = {"direct always": "direct", "mixed always": "mixed1", "mixed selective": "mixed2"}.get(f"{mode} {update}")
+        paper_ratio = f"{float(row[col]) / float(row['direct']):.3f}" if row and col else "–"
+    else:
+        key = ("direct", "") if mode == "direct" else (label, variant if "dd1" in paper else "")
+        direct = ref.get(("direct", ""))
+        paper_ratio = f"{float(ref[key]['cpu_s']) / float(direct['cpu_s']):.3f}" if key in ref and direct else "–"
+    predicted = "–"
+    table = glob.glob(f"{work}/{name}-{part}-mesh/partition.json")
+    if table:
+        predicted = f"{json.load(open(table[0]))['bodies'][0]['predicted_ratio']:.3f}"
+    print(f"| {domains} | {label} | {variant} | {s['newton_iterations']} | {fac} | {s.get('cg_iterations_total', 0)} | "
+          f"{cpu:.1f} | {wall:.1f} | {peak:.0f} | {cpu / base:.3f} | {paper_ratio} | {predicted} | "
+          f"{d['results']['rolling']['roll_force']:.1f} |")
+PY
+}
+
+table3d_header() {
+  echo "| domains | partition | variant | Newton iterations | factorizations per group | CG iterations | CPU s (median of $REPEAT) | in-process s | peak MiB | CPU vs direct | paper vs direct | predicted (partition table) | roll force N |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+}
+
+table14() {
+  for mesh in $MESHES; do
+    echo "slab $mesh:"
+    table3d_header
+    project3d "t14-$mesh" "$mesh"
+    local variants=("direct - always" "direct - selective" "mixed - always" "mixed - selective")
+    for v in "${variants[@]}"; do run3d "t14-$mesh" $v; done
+    report3d "t14-$mesh" "$ROOT/tests/bench/paper/t14_rolling3d_mixed.csv" "${variants[@]}"
+  done
+}
+
+table16() {
+  table3d_header
+  project3d t16 18x10x6
+  local variants=("direct - always" "direct - selective" "mixed - always" "mixed - selective")
+  for part in 2x1x1 1x2x1 2x2x1 3x2x1; do variants+=("feti $part always" "feti $part selective"); done
+  for v in "${variants[@]}"; do run3d t16 $v; done
+  report3d t16 "$ROOT/tests/bench/paper/t16_rolling3d_dd1.csv" "${variants[@]}"
+}
+
+table17() {
+  table3d_header
+  project3d t17 24x12x8
+  local variants=("direct - selective" "mixed - selective")
+  for part in 2x1x1 1x2x1 3x1x1 1x3x1 2x2x1 1x4x1 3x2x1 2x3x1 2x4x1 3x3x1 3x4x1; do variants+=("feti $part selective"); done
+  for v in "${variants[@]}"; do run3d t17 $v; done
+  report3d t17 "$ROOT/tests/bench/paper/t17_rolling3d_dd2.csv" "${variants[@]}"
+}
+
 case $PART in
   table13) table13 ;;
+  table14) table14 ;;
   table15) table15 ;;
+  table16) table16 ;;
+  table17) table17 ;;
   convergence) convergence ;;
   friction) friction ;;
-  *) echo "run_rolling_benchmarks: unknown part $PART (table13, table15, convergence or friction)" >&2; exit 2 ;;
+  *) echo "run_rolling_benchmarks: unknown part $PART (table13, table14, table15, table16, table17, convergence or friction)" >&2; exit 2 ;;
 esac
