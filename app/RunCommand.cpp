@@ -3,8 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "Commands.h"
+#include "Interrupt.h"
 #include "PvdWriter.h"
 #include "VtuWriter.h"
 #include "analysis/LinearStatic.h"
@@ -33,7 +35,7 @@ namespace rollsim::app {
 
 namespace {
 
-/// Progress on stderr: stage names with the elapsed time.
+/// Progress on stderr: stage names with the elapsed time; Ctrl-C cancels (InterruptScope).
 class StderrProgress final : public AnalysisObserver {
  public:
   explicit StderrProgress(bool quiet) : quiet_(quiet) {}
@@ -44,6 +46,7 @@ class StderrProgress final : public AnalysisObserver {
     if (!quiet_ && count > 1)
       std::fprintf(stderr, "rollsim: [%7.3f s] increment %d of %d\n", clock_.seconds(), increment, count);
   }
+  bool cancel_requested() const override { return InterruptScope::requested(); }
 
  private:
   bool quiet_;
@@ -260,6 +263,9 @@ int run_command(const RunOptions& o) {
   if (ec) return invalid("cannot create output directory " + dir.string() + ": " + ec.message());
   Results results;
   try {
+    // petsc: the ranks would stop at different iterations and wait for each other in PETSc: no cancel there
+    std::optional<InterruptScope> interrupt;
+    if (info.mode != "petsc") interrupt.emplace();
     results = run_project(project, model, &progress);
   } catch (const AnalysisError& e) {
     results.status = {Status::error, Reason::none, e.what()};

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -39,11 +40,13 @@ pid_t spawn(const std::string& program, const std::vector<std::string>& args, co
   return pid;
 }
 
-/// Waits for `pid`, polling; kills it at the deadline. Returns the wait status.
-int wait_with_timeout(pid_t pid, int timeout_s, bool& timed_out) {
+/// Waits for `pid`, polling (calling `on_poll`, if given, at each poll); kills it at the deadline. Returns the wait
+/// status.
+int wait_with_timeout(pid_t pid, int timeout_s, bool& timed_out, const std::function<void()>& on_poll = {}) {
   const auto deadline = Clock::now() + std::chrono::seconds(timeout_s);
   int status = 0;
   while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (on_poll) on_poll();
     if (Clock::now() > deadline) {
       kill(pid, SIGKILL);
       waitpid(pid, &status, 0);
@@ -90,11 +93,21 @@ RunResult run_rollsim(const std::vector<std::string>& args, int timeout_s) {
 }
 
 RunResult run_program(const std::string& program, const std::vector<std::string>& args, int timeout_s) {
+  return run_program_interrupted(program, args, "", timeout_s);
+}
+
+RunResult run_program_interrupted(const std::string& program, const std::vector<std::string>& args,
+                                  const std::string& marker, int timeout_s) {
   const std::string dir = make_temp_dir("io");
   const std::string out = dir + "/stdout", err = dir + "/stderr";
   RunResult r;
   const auto start = Clock::now();
-  const int status = wait_with_timeout(spawn(program, args, out, err), timeout_s, r.timed_out);
+  const pid_t pid = spawn(program, args, out, err);
+  bool sent = marker.empty();
+  const auto interrupt_on_marker = [&] {
+    if (!sent && read_text(err).find(marker) != std::string::npos) sent = kill(pid, SIGINT) == 0;
+  };
+  const int status = wait_with_timeout(pid, timeout_s, r.timed_out, interrupt_on_marker);
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!r.timed_out && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);

@@ -17,6 +17,10 @@ RunResult run_rollsim(const std::vector<std::string>& args, int timeout_s = 60);
 /// The same for another program (an absolute path), e.g. mpirun starting rollsim on several ranks.
 RunResult run_program(const std::string& program, const std::vector<std::string>& args, int timeout_s = 60);
 
+/// The same, sending SIGINT (Ctrl-C) once `marker` appears in the program's stderr (never if empty).
+RunResult run_program_interrupted(const std::string& program, const std::vector<std::string>& args,
+                                  const std::string& marker, int timeout_s = 60);
+
 /// A fresh empty directory under the system temp dir.
 std::string make_temp_dir(const std::string& tag);
 

@@ -134,3 +134,19 @@ TEST(RunStatuses, OutputFolderHoldsOneRunOnly) {
   EXPECT_EQ(failed.summary.value("status", ""), "not_converged");
   for (const ProjectRun* r : {&first, &second, &failed}) fs::remove_all(r->dir);
 }
+
+TEST(Statuses, CtrlCCancelsAndWritesWhatTheRunCompleted) {
+  const std::string dir = make_temp_dir("interrupt"), out = dir + "/out";
+  const RunResult r = run_program_interrupted(ROLLSIM_BINARY, {"run", kSamples + "rolling-2d-36x6.json", "--out", out},
+                                              "increment 3 of", 120);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.exit_code, 5) << r.err;  // cancelled
+  EXPECT_TRUE(contains(r.err, "interrupted")) << r.err;
+  const json summary = json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(summary.at("status"), "cancelled");
+  // the increments that converged before the signal are kept, and the pass's measures up to there
+  EXPECT_GE(summary.at("increments").size(), 2u);
+  EXPECT_LT(summary.at("increments").size(), 120u);
+  EXPECT_FALSE(read_text(out + "/rolling.csv").empty());
+  EXPECT_FALSE(read_text(out + "/convergence.csv").empty());
+}
