@@ -19,8 +19,17 @@ extern "C" void on_interrupt(int sig) {
 }
 }  // namespace
 
-InterruptScope::InterruptScope()
-    : previous_int_(std::signal(SIGINT, on_interrupt)), previous_term_(std::signal(SIGTERM, on_interrupt)) {}
+namespace {
+/// The handler, unless the signal was ignored when rollsim started (a background job of a script: Ctrl-C there is
+/// meant for the foreground only, as with every well-behaved program). Returns the previous disposition.
+void (*catch_signal(int sig))(int) {
+  void (*previous)(int) = std::signal(sig, SIG_IGN);
+  if (previous != SIG_IGN) std::signal(sig, on_interrupt);
+  return previous;
+}
+}  // namespace
+
+InterruptScope::InterruptScope() : previous_int_(catch_signal(SIGINT)), previous_term_(catch_signal(SIGTERM)) {}
 
 InterruptScope::~InterruptScope() {
   std::signal(SIGINT, previous_int_);
