@@ -271,6 +271,7 @@ for v in variants:
         paper_ratio = f"{float(row[col]) / float(row['direct']):.3f}" if row and col else "–"
     else:
         key = ("direct", "") if mode == "direct" else (label, variant if "dd1" in paper else "")
+        key = None if mode == "direct" and update == "selective" else key  # the paper refactored its direct always
         direct = ref.get(("direct", ""))
         paper_ratio = f"{float(ref[key]['cpu_s']) / float(direct['cpu_s']):.3f}" if key in ref and direct else "–"
     predicted = "–"
