@@ -417,6 +417,17 @@ const ObjectSchema kAnalysis{
          "its normal multiplier (an unsymmetric system: UMFPACK under direct, projected GMRES on the interface under "
          "mixed and feti; skyline lags it whatever this says); lagged — it lags one iteration behind the normal "
          "force (a symmetric system)"),
+     choice("first_tangent", {"converged", "fresh"}, "converged",
+            "Newton: the tangent a step's first iteration factors — converged: the one assembled at the step "
+            "before's converged iterate, with its plastic flow; fresh: assembled again at the converged state, where "
+            "a zero strain increment returns elastically, so a flowing body starts each step with its elastic "
+            "stiffness (docs/BENCHMARKS-ROLLING.md: what made `--update always` fail on the rolling pass)"),
+     choice("contact_tangent", {"none", "groups", "full"}, "groups",
+            "Newton with contact pairs that slide `large_every_iteration`: the contact's geometric stiffness (how the "
+            "rows' normal and projection turn with the displacement, node-to-segment in 2D; 3D: none). groups — the "
+            "terms within one group (the master's own part; the slave–slave part is zero) into its stiffness block, "
+            "every solver; full — also the terms joining slave and master, direct and skyline only; none — the "
+            "rows' change is not linearised (docs/BENCHMARKS-NONLINEAR.md)"),
      [] {
        Field f;
        f.name = "line_search";
