@@ -90,6 +90,8 @@ class NewtonRun {
   /// The slipping points' friction forces (μ × the normal force of the last solve) added to the residuals of `which`
   /// (with couple_slip_: those whose force the system's C_eq holds are left to it).
   void add_friction(const std::vector<size_t>& which);
+  /// True when the prescribed dofs of group g's body move over the step `at` predicts.
+  bool prescribed_moves(size_t g, GroupAssembler::Factors at) const;
   /// The contact's geometric stiffness with the last solve's λ, at the current rows, into the tangents of `tangent`
   /// (and, for `full`, the system's coupling); nothing while λ does not belong to the rows.
   void add_contact_stiffness(double lf, const std::vector<size_t>& tangent);
@@ -182,6 +184,15 @@ void NewtonRun::add_friction(const std::vector<size_t>& which) {
   if (load.empty()) return;
   for (size_t b = 0; b < load.size(); ++b) load[b] = layout_.body_dofs()[b]->restrict_to_free(load[b]);
   layout_.add_body_load(load, which);
+}
+
+bool NewtonRun::prescribed_moves(size_t g, GroupAssembler::Factors at) const {
+  if (at.prescribed_step == 0.0) return false;
+  const DofMap& dofs = *layout_.body_dofs()[layout_.system().groups[g].body];  // the body's: its subdomains alike
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dofs.num_free());
+  return (dofs.expand(zero, at.prescribed + at.prescribed_step) - dofs.expand(zero, at.prescribed))
+             .cwiseAbs()
+             .maxCoeff() > 0;
 }
 
 void NewtonRun::add_contact_stiffness(double lf, const std::vector<size_t>& tangent) {
@@ -317,16 +328,17 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     }
     // a step's first iteration factors the tangents assembled at the converged iterate of the step before (with its
     // plastic flow) where they are not factored yet: assembled again at the converged state they would be elastic,
-    // since a zero strain increment returns elastically
-    const bool converged_tangent = opt_.first_tangent_converged && k == 1 && assembled_once_ && !refresh_all_;
-    if (converged_tangent) std::erase_if(tangent, [&](size_t g) { return !unfactored_[g]; });
-    const std::vector<TangentChoice> choices = tangent_choices(tangent, share, all_why);
-    if (converged_tangent && !residuals_first) {
-      if (auto cause = assemble(all, {}, at); !cause.empty()) return {{}, cause, k - 1};
-    } else if (!converged_tangent) {
-      if (auto cause = assemble(residuals_first ? tangent : all, tangent, at); !cause.empty())
-        return {{}, cause, k - 1};
+    // since a zero strain increment returns elastically. A group whose prescribed dofs move in the step is assembled
+    // afresh (every group of its body, so that subdomains do as their body does): its predictor (the prescribed
+    // increment times the tangent) and its matrix must be the same tangent.
+    std::vector<size_t> fresh = tangent;
+    if (opt_.first_tangent_converged && k == 1 && assembled_once_ && !refresh_all_) {
+      std::erase_if(tangent, [&](size_t g) { return !unfactored_[g] && !prescribed_moves(g, at); });
+      fresh = tangent;
+      std::erase_if(fresh, [&](size_t g) { return !prescribed_moves(g, at); });
     }
+    const std::vector<TangentChoice> choices = tangent_choices(tangent, share, all_why);
+    if (auto cause = assemble(residuals_first ? fresh : all, fresh, at); !cause.empty()) return {{}, cause, k - 1};
     assembled_once_ = true;
     refresh_all_ = false;
     double eta = 1.0;

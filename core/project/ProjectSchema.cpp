@@ -321,8 +321,9 @@ const ObjectSchema kContact{
             "unilateral pairs: small sliding (the projection of the undeformed configuration), or large (Newton "
             "analysis) — searched again where each step begins, its Newton iterations keeping that projection "
             "(quadratic convergence), and again wherever the step converged while the projections moved by more "
-            "than 1e-8 of the search distance; or at every Newton iteration. The contact's geometric stiffness is "
-            "not linearised: where little slides, small sliding converges fastest (docs/BENCHMARKS-NONLINEAR.md). "
+            "than 1e-8 of the search distance; or at every Newton iteration, the rows' change with the displacement "
+            "then linearised in 2D (analysis.contact_tangent: the contact's geometric stiffness). Where little "
+            "slides, small sliding converges fastest (docs/BENCHMARKS-NONLINEAR.md). "
             "The linear analysis always slides small"),
      positive("search_distance", "length",
               "slave nodes farther from the master surface are ignored (default: 1e-6 of the model size for tied, "
