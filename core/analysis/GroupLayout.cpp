@@ -1,5 +1,8 @@
 #include "analysis/GroupLayout.h"
 
+#include <algorithm>
+#include <tuple>
+
 #include "fem/Loads.h"
 #include "model/RigidModes.h"
 
@@ -131,6 +134,57 @@ void GroupLayout::add_body_load(const std::vector<Eigen::VectorXd>& load, const 
     for (int i = 0; i < bg.count; ++i)
       if (listed[bg.first + i]) sys_.groups[bg.first + i].f += Eigen::VectorXd(parts[i].transpose());
   }
+}
+
+std::pair<int, int> GroupLayout::group_equation(int body, int node, int comp, int within) const {
+  const BodyGroups& bg = bodies_[body];
+  if (bg.count == 0) return {-1, -1};
+  if (!bg.dec) return {bg.first, dofs_[body]->equation(node, comp)};
+  for (int i = within < 0 ? 0 : within; i < (within < 0 ? bg.count : within + 1); ++i)
+    if (const int e = bg.dec->subdomains[i].local_equation(node, comp); e >= 0) return {bg.first + i, e};
+  return {-1, -1};
+}
+
+long GroupLayout::add_body_stiffness(const std::vector<StiffnessEntry>& entries, const std::vector<size_t>& groups,
+                                     SparseMatrix* cross) {
+  std::vector<char> listed(sys_.groups.size(), 0);
+  for (size_t g : groups) listed[g] = 1;
+  std::vector<long> offset(sys_.groups.size() + 1, 0);
+  for (size_t g = 0; g < sys_.groups.size(); ++g) offset[g + 1] = offset[g] + free_dofs(g);
+  std::vector<Eigen::Triplet<double, int>> between;
+  long dropped = 0;
+  for (const StiffnessEntry& e : entries) {
+    auto [gi, ei] = group_equation(e.body_i, e.node_i, e.comp_i);
+    auto [gj, ej] = group_equation(e.body_j, e.node_j, e.comp_j);
+    if (gi < 0 || ei < 0 || gj < 0 || ej < 0) continue;  // a prescribed dof: its increment is known
+    if (e.body_i == e.body_j && bodies_[e.body_i].dec)   // a torn body: a subdomain holding both dofs
+      for (int s = 0; s < bodies_[e.body_i].count && gi != gj; ++s) {
+        const auto a = group_equation(e.body_i, e.node_i, e.comp_i, s),
+                   b = group_equation(e.body_j, e.node_j, e.comp_j, s);
+        if (a.second >= 0 && b.second >= 0) std::tie(gi, ei, gj, ej) = std::tie(a.first, a.second, b.first, b.second);
+      }
+    if (gi != gj) {
+      if (cross)
+        between.emplace_back(static_cast<int>(offset[gi] + ei), static_cast<int>(offset[gj] + ej), e.value);
+      else
+        ++dropped;
+      continue;
+    }
+    if (!listed[gi]) continue;
+    SparseMatrix& K = sys_.groups[gi].K;
+    const auto begin = K.innerIndexPtr() + K.outerIndexPtr()[ej], end = K.innerIndexPtr() + K.outerIndexPtr()[ej + 1];
+    const auto at = std::lower_bound(begin, end, ei);
+    if (at == end || *at != ei) {
+      ++dropped;
+      continue;
+    }
+    K.valuePtr()[at - K.innerIndexPtr()] += e.value;
+  }
+  if (cross) {
+    *cross = SparseMatrix(static_cast<int>(offset.back()), static_cast<int>(offset.back()));
+    cross->setFromTriplets(between.begin(), between.end());
+  }
+  return dropped;
 }
 
 void GroupLayout::set_contact(const BodyConstraints& contact) {

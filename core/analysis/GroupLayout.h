@@ -11,6 +11,7 @@
 #include "analysis/Decomposition.h"
 #include "analysis/GroupAssembler.h"
 #include "analysis/Results.h"
+#include "contact/ContactStiffness.h"
 #include "solve/BlockSystem.h"
 
 namespace rollsim {
@@ -34,6 +35,12 @@ class GroupLayout {
   /// Adds a load on the bodies' free dofs (one vector per body) to the residuals f_g of the listed groups (a dof
   /// shared by subdomains loads one of them, as a constraint term does).
   void add_body_load(const std::vector<Eigen::VectorXd>& load, const std::vector<size_t>& groups);
+  /// Adds stiffness entries on the bodies' dofs (the contact's geometric stiffness) to the tangents K_g of the listed
+  /// groups: an entry whose two dofs lie in one group (for a torn body: one subdomain holding both) goes into that
+  /// group's K where K's pattern has it; an entry joining two groups goes into `cross` (every group's free dofs one
+  /// after the other, BlockSystem::coupling) when given. Returns how many nonzero entries dropped.
+  long add_body_stiffness(const std::vector<StiffnessEntry>& entries, const std::vector<size_t>& groups,
+                          SparseMatrix* cross);
   /// Puts the contact rows (blocks on the bodies' free dofs) in front of the interface rows; with a coupling
   /// (contact.coupling), the groups' C_eq as well.
   void set_contact(const BodyConstraints& contact);
@@ -51,6 +58,8 @@ class GroupLayout {
     std::optional<BodyDecomposition> dec;
   };
   void add_body(const Model& model, int b, bool split, Multipliers choice);
+  /// The group and its equation holding (body, node, comp), in the subdomain `within` when ≥ 0; group −1: none.
+  std::pair<int, int> group_equation(int body, int node, int comp, int within = -1) const;
   int free_dofs(size_t group) const { return assembler_.source(group).dofs->num_free(); }
 
   BlockSystem sys_;

@@ -14,6 +14,7 @@
 #include "analysis/Recovery.h"
 #include "analysis/RollingMeasures.h"
 #include "contact/ContactConstraints.h"
+#include "contact/ContactStiffness.h"
 #include "contact/Friction.h"
 #include "solve/Factorization.h"
 #include "solve/Stopwatch.h"
@@ -55,6 +56,7 @@ class NewtonRun {
         opt_(opt),
         layout_(model, solver.uses_subdomains(), multiplier_choice(solver.options())) {
     for (const Group& g : layout_.system().groups) u_.push_back(Eigen::VectorXd::Zero(g.R.rows()));
+    unfactored_.assign(u_.size(), 0);
     // petsc: every rank runs this driver alike, assembling the tangent of its own subdomain only
     layout_.assembler().set_local(solver.local_groups(all_groups(layout_.system())));
     try {
@@ -68,6 +70,10 @@ class NewtonRun {
       couple_slip_ = couple_slip_ || p.kind == ContactKind::Coulomb;
     }
     couple_slip_ = couple_slip_ && opt.consistent_friction && solver.solves_unsymmetric();
+    if (opt.contact_tangent == ContactTangent::Full && !solver.assembles_globally())
+      throw AnalysisError(
+          "analysis.contact_tangent 'full' joins the slave's and the master's stiffness, which only a solver with one "
+          "global matrix (direct, skyline) can take: use 'groups' with this solver");
     save();
   }
 
@@ -84,6 +90,11 @@ class NewtonRun {
   /// The slipping points' friction forces (μ × the normal force of the last solve) added to the residuals of `which`
   /// (with couple_slip_: those whose force the system's C_eq holds are left to it).
   void add_friction(const std::vector<size_t>& which);
+  /// True when the prescribed dofs of group g's body move over the step `at` predicts.
+  bool prescribed_moves(size_t g, GroupAssembler::Factors at) const;
+  /// The contact's geometric stiffness with the last solve's λ, at the current rows, into the tangents of `tangent`
+  /// (and, for `full`, the system's coupling); nothing while λ does not belong to the rows.
+  void add_contact_stiffness(double lf, const std::vector<size_t>& tangent);
   /// ‖R_g‖ = ‖f_g − C_gᵀλ‖ per group (λ of the last solve when it belongs to the current rows, else 0).
   std::vector<double> group_residuals() const;
   std::vector<Eigen::VectorXd> body_displacements(double lf) const;
@@ -123,6 +134,7 @@ class NewtonRun {
   bool iteration_sliding_ = false;  // a pair is searched again at every iteration
   bool couple_slip_ = false;        // slipping Coulomb friction in the system's matrix (C_eq), not lagged
   bool search_again_ = false;       // the step converged on projections that moved: search at the iterate
+  std::vector<char> unfactored_;    // per group: K was assembled after its last factorization
   std::vector<std::array<int, 3>> row_keys_;      // (pair, slave node, component) of the kept contact rows
   std::vector<Eigen::VectorXd> step_start_;       // every dof of every body where the current step began
   std::vector<Eigen::VectorXd> previous_, step_;  // the iterate before the last solve, and its correction
@@ -157,6 +169,7 @@ std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vec
   Stopwatch watch;
   const InvertedElement bad = layout_.assembler().assemble_newton(which, tangent, u_, at, layout_.system());
   assembly_s_ += watch.seconds();
+  for (size_t g : tangent) unfactored_[g] = 1;
   if (!bad) {
     add_friction(which);
     return "";
@@ -171,6 +184,25 @@ void NewtonRun::add_friction(const std::vector<size_t>& which) {
   if (load.empty()) return;
   for (size_t b = 0; b < load.size(); ++b) load[b] = layout_.body_dofs()[b]->restrict_to_free(load[b]);
   layout_.add_body_load(load, which);
+}
+
+bool NewtonRun::prescribed_moves(size_t g, GroupAssembler::Factors at) const {
+  if (at.prescribed_step == 0.0) return false;
+  const DofMap& dofs = *layout_.body_dofs()[layout_.system().groups[g].body];  // the body's: its subdomains alike
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dofs.num_free());
+  return (dofs.expand(zero, at.prescribed + at.prescribed_step) - dofs.expand(zero, at.prescribed))
+             .cwiseAbs()
+             .maxCoeff() > 0;
+}
+
+void NewtonRun::add_contact_stiffness(double lf, const std::vector<size_t>& tangent) {
+  BlockSystem& sys = layout_.system();
+  const bool full = opt_.contact_tangent == ContactTangent::Full;
+  if (full) sys.coupling = SparseMatrix();
+  if (opt_.contact_tangent == ContactTangent::None || !iteration_sliding_ || !lambda_valid_) return;
+  const std::vector<StiffnessEntry> entries = contact_geometric_stiffness(
+      model_, pairs_, rows_, contact_.kept, lambda_.head(contact_.d.size()), body_displacements(lf));
+  layout_.add_body_stiffness(entries, tangent, full ? &sys.coupling : nullptr);
 }
 
 void NewtonRun::tell_rolling(const IncrementResults& inc) const {
@@ -294,8 +326,19 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       for (size_t g : policy_.select(sys, share))  // a constant tangent (elastic, small strain) is never re-assembled
         if (!layout_.assembler().constant_tangent(g)) tangent.push_back(g);
     }
+    // a step's first iteration factors the tangents assembled at the converged iterate of the step before (with its
+    // plastic flow) where they are not factored yet: assembled again at the converged state they would be elastic,
+    // since a zero strain increment returns elastically. A group whose prescribed dofs move in the step is assembled
+    // afresh (every group of its body, so that subdomains do as their body does): its predictor (the prescribed
+    // increment times the tangent) and its matrix must be the same tangent.
+    std::vector<size_t> fresh = tangent;
+    if (opt_.first_tangent_converged && k == 1 && assembled_once_ && !refresh_all_) {
+      std::erase_if(tangent, [&](size_t g) { return !unfactored_[g] && !prescribed_moves(g, at); });
+      fresh = tangent;
+      std::erase_if(fresh, [&](size_t g) { return !prescribed_moves(g, at); });
+    }
     const std::vector<TangentChoice> choices = tangent_choices(tangent, share, all_why);
-    if (auto cause = assemble(residuals_first ? tangent : all, tangent, at); !cause.empty()) return {{}, cause, k - 1};
+    if (auto cause = assemble(residuals_first ? fresh : all, fresh, at); !cause.empty()) return {{}, cause, k - 1};
     assembled_once_ = true;
     refresh_all_ = false;
     double eta = 1.0;
@@ -329,7 +372,9 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
                   fmt(relative) + ", tolerance " + fmt(opt_.tolerance) + ")",
               k - 1};
     obs_.on_tangents(increment, k, choices);  // told only for an iteration that solves (as convergence.csv's rows)
+    add_contact_stiffness(lf, tangent);
     mark_updated(sys, tangent);
+    for (size_t g : tangent) unfactored_[g] = 0;
     const long cg_before = solver_.stats().cg_iterations;
     check_floating_groups_held(sys);
     BlockSolution sol;

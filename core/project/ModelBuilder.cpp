@@ -511,6 +511,11 @@ NewtonOptions newton_options(const Project& project) {
   o.max_cutbacks = a->value("max_cutbacks", o.max_cutbacks);
   o.line_search = a->value("line_search", o.line_search);
   o.consistent_friction = a->value("friction_tangent", std::string("consistent")) == "consistent";
+  o.first_tangent_converged = a->value("first_tangent", std::string("converged")) == "converged";
+  const std::string contact = a->value("contact_tangent", std::string("groups"));
+  o.contact_tangent = contact == "none"   ? ContactTangent::None
+                      : contact == "full" ? ContactTangent::Full
+                                          : ContactTangent::Groups;
   return o;
 }
 

@@ -321,8 +321,9 @@ const ObjectSchema kContact{
             "unilateral pairs: small sliding (the projection of the undeformed configuration), or large (Newton "
             "analysis) — searched again where each step begins, its Newton iterations keeping that projection "
             "(quadratic convergence), and again wherever the step converged while the projections moved by more "
-            "than 1e-8 of the search distance; or at every Newton iteration. The contact's geometric stiffness is "
-            "not linearised: where little slides, small sliding converges fastest (docs/BENCHMARKS-NONLINEAR.md). "
+            "than 1e-8 of the search distance; or at every Newton iteration, the rows' change with the displacement "
+            "then linearised in 2D (analysis.contact_tangent: the contact's geometric stiffness). Where little "
+            "slides, small sliding converges fastest (docs/BENCHMARKS-NONLINEAR.md). "
             "The linear analysis always slides small"),
      positive("search_distance", "length",
               "slave nodes farther from the master surface are ignored (default: 1e-6 of the model size for tied, "
@@ -417,6 +418,17 @@ const ObjectSchema kAnalysis{
          "its normal multiplier (an unsymmetric system: UMFPACK under direct, projected GMRES on the interface under "
          "mixed and feti; skyline lags it whatever this says); lagged — it lags one iteration behind the normal "
          "force (a symmetric system)"),
+     choice("first_tangent", {"converged", "fresh"}, "converged",
+            "Newton: the tangent a step's first iteration factors — converged: the one assembled at the step "
+            "before's converged iterate, with its plastic flow; fresh: assembled again at the converged state, where "
+            "a zero strain increment returns elastically, so a flowing body starts each step with its elastic "
+            "stiffness (docs/BENCHMARKS-ROLLING.md: what made `--update always` fail on the rolling pass)"),
+     choice("contact_tangent", {"none", "groups", "full"}, "groups",
+            "Newton with contact pairs that slide `large_every_iteration`: the contact's geometric stiffness (how the "
+            "rows' normal and projection turn with the displacement, node-to-segment in 2D; 3D: none). groups — the "
+            "terms within one group (the master's own part; the slave–slave part is zero) into its stiffness block, "
+            "every solver; full — also the terms joining slave and master, direct and skyline only; none — the "
+            "rows' change is not linearised (docs/BENCHMARKS-NONLINEAR.md)"),
      [] {
        Field f;
        f.name = "line_search";

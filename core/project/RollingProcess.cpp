@@ -128,6 +128,17 @@ const ObjectSchema& rolling_process_schema() {
          f.min_exclusive = false;
          return f;
        }(),
+       [] {
+         Field f;
+         f.name = "sliding";
+         f.kind = Kind::Choice;
+         f.choices = {"large", "large_every_iteration"};
+         f.default_value = "large";
+         f.doc =
+             "the roll–slab pair's large sliding (contacts[].sliding): searched where each step begins, or at every "
+             "Newton iteration (then with the contact's geometric stiffness, analysis.contact_tangent)";
+         return f;
+       }(),
        number("travel", "length", 100, 0, 1e6,
               "distance the roll's surface travels over the analysis (the roll turns travel / R)"),
        number("travel_increment", "length", 2, 0, 1e6, "roll surface travel per increment"),
@@ -242,7 +253,7 @@ json expand_process(const json& project) {
                              {"master_body", "roll"},
                              {"master_surface", "outer"},
                              {"search_distance", 4 * dh + 1e-3 * h0},
-                             {"sliding", "large"}});
+                             {"sliding", p.at("sliding")}});
   const std::string friction = p.at("friction");
   out["contacts"].back()["type"] = friction;
   if (friction == "coulomb") out["contacts"].back()["friction"] = p.at("friction_coefficient");

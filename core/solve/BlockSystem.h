@@ -58,6 +58,10 @@ struct BlockSystem {
   std::vector<Group> groups;
   Eigen::VectorXd d;                    // right-hand side of the constraints, one entry per multiplier
   std::vector<ConstraintBlock> blocks;  // the rows' meaning, in row order (rows in no block: contact, weight 1)
+  // Stiffness joining two groups (the contact's geometric stiffness between a slave and its master, analysis
+  // `contact_tangent: full`): every group's free dofs one after the other; empty (0 × 0) when none. Only strategies
+  // that assemble one global matrix (SolverStrategy::assembles_globally) take it; a change refactors that matrix.
+  SparseMatrix coupling;
 
   long num_dofs() const {
     long n = 0;

@@ -34,6 +34,7 @@ SparseMatrix global_matrix(const BlockSystem& sys) {
     }
     offset += g.K.rows();
   }
+  if (sys.coupling.nonZeros() > 0) add_block(t, sys.coupling, 0, 0, false);  // stiffness joining two groups
   SparseMatrix A(n + m, n + m);
   A.setFromTriplets(t.begin(), t.end());
   return A;
@@ -72,7 +73,8 @@ void GlobalDirect::add_times(const FactorStats& s) {
 }
 
 bool GlobalDirect::factored(const BlockSystem& sys) const {
-  if (!factor_ || factored_versions_.size() != sys.groups.size()) return false;
+  if (!factor_ || factored_versions_.size() != sys.groups.size() || !same_matrix(factored_coupling_, sys.coupling))
+    return false;
   for (size_t g = 0; g < sys.groups.size(); ++g)
     if (factored_versions_[g] != sys.groups[g].version || !same_matrix(factored_C_[g], sys.groups[g].C) ||
         !same_matrix(factored_C_eq_[g], sys.groups[g].C_eq))
@@ -92,6 +94,7 @@ void GlobalDirect::factorize(const BlockSystem& sys, const SparseMatrix& A, Anal
   factored_versions_.clear();
   factored_C_.clear();
   factored_C_eq_.clear();
+  factored_coupling_ = sys.coupling;
   factor_->factorize(A);
   for (const Group& g : sys.groups) {
     factored_versions_.push_back(g.version);

@@ -14,6 +14,7 @@ class GlobalDirect final : public SolverStrategy {
   const SolveStats& stats() const override { return stats_; }
   /// UMFPACK's LU factors the bordered matrix whatever its symmetry (skyline's LDLᵀ needs it symmetric).
   bool solves_unsymmetric() const override { return kind_ == "cholmod"; }
+  bool assembles_globally() const override { return true; }
 
  private:
   std::string kind_;
@@ -26,6 +27,7 @@ class GlobalDirect final : public SolverStrategy {
   void factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer);
   std::vector<long> factored_versions_;
   std::vector<SparseMatrix> factored_C_, factored_C_eq_;
+  SparseMatrix factored_coupling_;
   SparsityPattern analyzed_;  // of the last analysis: a new pattern (not only a new size) needs a new one
   long trailing_ = 0;
   FactorStats earlier_;       // times of factors replaced by a new pattern (active-set changes)

@@ -46,6 +46,8 @@ class SolverStrategy {
   /// True when it solves systems whose groups carry C_eq ≠ C (the unsymmetric coupling of slipping Coulomb friction);
   /// the Newton driver lags the friction force one iteration behind the normal force for the others.
   virtual bool solves_unsymmetric() const { return false; }
+  /// True when it assembles one global matrix, which can take stiffness joining two groups (BlockSystem::coupling).
+  virtual bool assembles_globally() const { return false; }
   /// Why the strategy cannot solve a model with contact pairs ("" when it can): asked before the first solve, since
   /// a frictionless pair may start with no active row.
   virtual std::string contact_refusal() const { return ""; }

@@ -12,9 +12,10 @@ using namespace rollsim;
 
 namespace {
 Results run_with(const std::string& update, const std::string& sample = "cylinder-plastic-2d",
-                 const std::string& sliding = "") {
+                 const std::string& sliding = "", const std::string& first_tangent = "converged") {
   Project p = load_project(std::string(ROLLSIM_SOURCE_DIR) + "/samples/" + sample + ".json");
   p.data["solver"]["update"] = update;
+  p.data["analysis"]["first_tangent"] = first_tangent;
   if (!sliding.empty()) p.data["contacts"][0]["sliding"] = sliding;
   return run_project(p, build_model(p));
 }
@@ -30,7 +31,7 @@ TEST(CylinderPlastic, SelectiveRefactorsTheCylinderAFractionAsOften) {
   EXPECT_GT(force, 0.0);
   EXPECT_NEAR(selective.contacts[0].normal_force, force, 5e-3 * force) << "the same answer";
   const long a = always.solver.factorizations.at("cylinder"), s = selective.solver.factorizations.at("cylinder");
-  EXPECT_LT(4 * s, a) << "cylinder factorizations: selective " << s << ", always " << a;
+  EXPECT_LT(3 * s, a) << "cylinder factorizations: selective " << s << ", always " << a;  // 32, 125
   EXPECT_GT(selective.bodies[0].plastic_strain.size(), 0u);
   double max_alpha = 0;
   for (double x : selective.bodies[0].plastic_strain) max_alpha = std::max(max_alpha, x);
@@ -56,4 +57,17 @@ TEST(CylinderPlastic, LargeSlidingPassesThePolygonsVertices) {
   ASSERT_EQ(large.status.status, Status::converged) << large.status.message;
   const double force = small.contacts[0].normal_force;
   EXPECT_NEAR(large.contacts[0].normal_force, force, 0.05 * force);  // measured 1235.4 against 1271.9
+}
+
+// `always` re-assembled every tangent at a step's first iteration, at the converged state, where the flowing base's
+// tangent is elastic (a zero strain increment returns elastically); it now factors the tangent assembled at the
+// converged iterate, as `selective` does for a group it keeps (the cylinder, whose hub moves, is assembled afresh).
+TEST(CylinderPlastic, AlwaysStartsEachStepFromTheConvergedTangent) {
+  const Results converged = run_with("always"), fresh = run_with("always", "cylinder-plastic-2d", "", "fresh");
+  ASSERT_EQ(converged.status.status, Status::converged) << converged.status.message;
+  ASSERT_EQ(fresh.status.status, Status::converged) << fresh.status.message;
+  auto iterations = [](const Results& r) { return static_cast<int>(r.newton.size()); };
+  EXPECT_LT(iterations(converged), iterations(fresh));
+  const double force = fresh.contacts.at(0).normal_force;
+  EXPECT_NEAR(converged.contacts.at(0).normal_force, force, 5e-3 * force) << "the same answer";
 }
