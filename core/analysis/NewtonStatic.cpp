@@ -292,7 +292,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       for (double& x : share) x = total > 0 ? x / total : 0.0;
       tangent.clear();
       for (size_t g : policy_.select(sys, share))  // a constant tangent (elastic, small strain) is never re-assembled
-        if (!layout_.assembler().constant_tangent(g)) tangent.push_back(g);
+        if (!opt_.keep_constant_tangents || !layout_.assembler().constant_tangent(g)) tangent.push_back(g);
     }
     const std::vector<TangentChoice> choices = tangent_choices(tangent, share, all_why);
     if (auto cause = assemble(residuals_first ? tangent : all, tangent, at); !cause.empty()) return {{}, cause, k - 1};

@@ -29,6 +29,8 @@ struct NewtonOptions {
   int max_cutbacks = 8;                  // failed attempts in the whole run before it is declared diverged
   bool line_search = true;               // one secant step along du when the residual's work along it did not halve
   bool consistent_friction = true;       // slipping Coulomb friction solved with λ_n (C_eq) where the strategy can
+  bool keep_constant_tangents = true;    // a policy reading residuals (selective) never re-assembles a group whose
+                                         // tangent is constant (elastic, small strain); false: like any group
 };
 
 /// Runs the Newton analysis; Results::status is converged, cancelled (between iterations: the last converged step

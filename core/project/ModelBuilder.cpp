@@ -449,8 +449,11 @@ double model_size(const Model& model) {
 }
 
 void add_contacts(Model& model, const json& d) {
+  const auto a = d.find("analysis");
+  const bool boxes = a == d.end() || a->value("contact_search", std::string("boxes")) == "boxes";
   for (const auto& c : d.at("contacts")) {
     ContactPair p;
+    p.box_search = boxes;
     p.name = c.at("name").get<std::string>();
     const std::string type = c.at("type").get<std::string>();
     p.kind = type == "tied"       ? ContactKind::Tied
@@ -511,6 +514,7 @@ NewtonOptions newton_options(const Project& project) {
   o.max_cutbacks = a->value("max_cutbacks", o.max_cutbacks);
   o.line_search = a->value("line_search", o.line_search);
   o.consistent_friction = a->value("friction_tangent", std::string("consistent")) == "consistent";
+  o.keep_constant_tangents = a->value("constant_tangents", std::string("keep")) == "keep";
   return o;
 }
 

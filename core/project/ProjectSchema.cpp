@@ -334,7 +334,9 @@ const ObjectSchema& solver_schema() {
   static const ObjectSchema s{
       "solver",
       "Linear solver settings.",
-      {choice("mode", solver_names(), "direct", "solver strategy (see docs/ARCHITECTURE.md)"),
+      {choice("mode", solver_mode_names(), "direct",
+              "solver strategy (see docs/ARCHITECTURE.md); auto: direct, mixed or (a body partitioned) feti, whichever "
+              "the partition table's cost model predicts cheapest (summary.json's solver.auto says why)"),
        def(count("threads", "threads for the factorization (BLAS) and parallel groups", 256), 1),
        def(str("update",
                "Newton: which groups get a new tangent and factor at each iteration — always (Mixed I / DD-I) or "
@@ -417,6 +419,13 @@ const ObjectSchema kAnalysis{
          "its normal multiplier (an unsymmetric system: UMFPACK under direct, projected GMRES on the interface under "
          "mixed and feti; skyline lags it whatever this says); lagged — it lags one iteration behind the normal "
          "force (a symmetric system)"),
+     choice("constant_tangents", {"keep", "refactor"}, "keep",
+            "Newton under the selective update: keep — a group whose tangent cannot change (elastic, small strain) is "
+            "assembled and factored once; refactor — it is re-evaluated by its residual like any group (to measure "
+            "what keeping saves)"),
+     choice("contact_search", {"boxes", "all"}, "boxes",
+            "contact search: boxes — a slave node is projected only on master facets whose bounding box is within "
+            "search_distance; all — on every master facet (the exhaustive search, to measure what the boxes save)"),
      [] {
        Field f;
        f.name = "line_search";
@@ -446,7 +455,10 @@ const ObjectSchema kOutput{"output",
                                   f.doc = "write result.vtu";
                                   return f;
                                 }(),
-                                true)},
+                                true),
+                            choice("increments", {"all", "last"}, "all",
+                                   "with analysis.increments > 1: all — results.pvd and one VTU per increment beside "
+                                   "result.vtu; last — result.vtu only")},
                            "",
                            {}};
 
