@@ -38,17 +38,6 @@ def small_cylinder(p):
     return p
 
 
-def full_width(p):
-    """The 3D pass across the whole width at the sample's resolution: twice the elements across twice the width —
-    what the model would cost without the width symmetry plane (the plane then lies at the slab's edge)."""
-    q = p["process"]
-    q["slab_nw"] = 2 * q.get("slab_nw", 8)
-    q["slab_width"] = 2 * q.get("slab_width", 350)
-    q["barrel_width"] = 2 * q.get("barrel_width", 400)
-    q["roll_n_axial"] = 2 * q.get("roll_n_axial", 8)
-    return p
-
-
 def with_(path, value):
     def f(p):
         node = p
@@ -83,11 +72,6 @@ CASES = [
     ("contact search by boxes, 3D indentation", "cylinder-plastic-3d", lambda p: p,
      ("contact_search boxes", with_(["analysis", "contact_search"], "boxes"), []),
      ("contact_search all", with_(["analysis", "contact_search"], "all"), [])),
-    ("contact search by boxes, 3D pass", "rolling-3d-16x8x4", lambda p: travel(p, 4),
-     ("contact_search boxes", with_(["analysis", "contact_search"], "boxes"), []),
-     ("contact_search all", with_(["analysis", "contact_search"], "all"), [])),
-    ("width symmetry, 3D pass", "rolling-3d-16x8x4", lambda p: travel(p, 4),
-     ("half width (symmetry)", lambda p: p, []), ("full width, same resolution", full_width, [])),
     ("increments not written", "rolling-2d-36x6", lambda p: travel(p, 20),
      ("output.increments last", with_(["output", "increments"], "last"), []),
      ("output.increments all", with_(["output", "increments"], "all"), [])),
