@@ -67,7 +67,7 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
   json& solver = p.data["solver"];
   if (o.solver) {
     try {
-      make_solver(*o.solver, {});
+      if (*o.solver != kAutoSolver) make_solver(*o.solver, {});
     } catch (const std::invalid_argument& e) {
       return std::string("--solver: ") + e.what();
     }
@@ -236,7 +236,8 @@ int run_command(const RunOptions& o) {
     return invalid(e.what());
   }
   try {  // a strategy the options or this build cannot make (petsc without PETSc) is invalid input
-    make_solver(project.data.at("solver").at("mode").get<std::string>(), solver_options(project));
+    const std::string mode = project.data.at("solver").at("mode").get<std::string>();
+    if (mode != kAutoSolver) make_solver(mode, solver_options(project));
   } catch (const std::invalid_argument& e) {
     return invalid(e.what());
   }
@@ -271,7 +272,8 @@ int run_command(const RunOptions& o) {
     results.status = {Status::error, Reason::none, e.what()};
   }
   if (!writer) return exit_code(results.status.status);  // the other ranks of a petsc run: rank 0 writes
-  if (results.solver.factor_flops_total > 0) {           // the yardstick of factor_gflops, after the analysis: ~10 ms
+  if (results.auto_choice) info.mode = results.auto_choice->mode;
+  if (results.solver.factor_flops_total > 0) {  // the yardstick of factor_gflops, after the analysis: ~10 ms
     const DgemmPeak peak = measure_dgemm_peak(options.threads);
     info.dgemm_peak_gflops = peak.gflops;
     info.peak_probe_s = peak.seconds;
@@ -281,7 +283,8 @@ int run_command(const RunOptions& o) {
     clear_run_outputs(dir);  // the folder holds this run only: no result.vtu of an earlier run beside a failure
     if (results.status.ok() && project.data.at("output").at("vtu").get<bool>()) {
       write_vtu(dir / "result.vtu", model, results);
-      if (results.load_increments > 1) write_increment_collection(dir / "results.pvd", model, results);
+      if (results.load_increments > 1 && project.data.at("output").value("increments", "all") == "all")
+        write_increment_collection(dir / "results.pvd", model, results);
     }
     if (!results.newton.empty()) write_file_atomically(dir / "convergence.csv", convergence_csv(results));
     if (results.rolling) {
@@ -306,8 +309,9 @@ int run_command(const RunOptions& o) {
     return exit_code(results.status.status);
   }
   if (!o.quiet)
-    std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s, %.3f s; results in %s/\n", project.name().c_str(),
-                 results.dofs, info.mode.c_str(), results.timing.total_s, dir.string().c_str());
+    std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s%s, %.3f s; results in %s/\n", project.name().c_str(),
+                 results.dofs, info.mode.c_str(), results.auto_choice ? " (auto)" : "", results.timing.total_s,
+                 dir.string().c_str());
   if (measured) std::cerr << rolling_line(model, *results.rolling);
   std::cout << summary << "\n";
   return 0;

@@ -20,6 +20,8 @@ namespace {
 std::string solver_help() {
   std::string s = "solver strategy, overrides the project:";
   for (const auto& i : rollsim::solver_registry()) s += "\n  " + i.name + ": " + i.description;
+  s += std::string("\n  ") + rollsim::kAutoSolver +
+       ": direct, mixed or (a partitioned body) feti, whichever the partition table's cost model predicts cheapest";
   return s;
 }
 }  // namespace

@@ -51,6 +51,10 @@ void RunPanel::refresh_description() {
   const std::string mode = pd.contains("solver") ? pd["solver"].value("mode", std::string()) : std::string();
   for (const StrategyInfo& s : solver_registry())
     if (s.name == mode) description_->setText(QString::fromStdString(s.name + ": " + s.description));
+  if (mode == kAutoSolver)
+    description_->setText(
+        QStringLiteral("auto: direct, mixed or feti, whichever the partition table's cost model "
+                       "predicts cheapest; the run's log names the choice"));
 }
 
 QString RunPanel::status() const { return status_->text(); }

@@ -324,7 +324,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       for (double& x : share) x = total > 0 ? x / total : 0.0;
       tangent.clear();
       for (size_t g : policy_.select(sys, share))  // a constant tangent (elastic, small strain) is never re-assembled
-        if (!layout_.assembler().constant_tangent(g)) tangent.push_back(g);
+        if (!opt_.keep_constant_tangents || !layout_.assembler().constant_tangent(g)) tangent.push_back(g);
     }
     // a step's first iteration factors the tangents assembled at the converged iterate of the step before (with its
     // plastic flow) where they are not factored yet: assembled again at the converged state they would be elastic,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/RollingResults.h"
+#include "solve/AutoChoice.h"
 #include "solve/RunStatus.h"
 #include "solve/SolveStats.h"
 
@@ -96,6 +97,7 @@ struct Results {
   // Newton driver only: every iteration, and the tangent (stiffness) evaluations per group
   std::vector<NewtonIteration> newton;
   std::map<std::string, long> stiffness_evaluations;
+  std::optional<AutoChoice> auto_choice;  // solver.mode was `auto`: what it chose and why
   std::string update_policy;  // the Newton driver's update policy ("always", "selective:0.01"); empty: linear
   std::optional<RollingResults> rolling;  // a rolling pass: its measures over the completed increments
 };

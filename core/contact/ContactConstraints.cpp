@@ -27,8 +27,9 @@ std::vector<PairState> search_contacts(const Model& model) {
   for (const ContactPair& p : model.contacts) {
     const Mesh& slave = model.bodies[p.slave_body].mesh;
     const Mesh& master = model.bodies[p.master_body].mesh;
-    const std::vector<ContactPoint> found = find_contact_points(
-        slave, slave.surfaces.at(p.slave_surface), master, master.surfaces.at(p.master_surface), p.search_distance);
+    const std::vector<ContactPoint> found =
+        find_contact_points(slave, slave.surfaces.at(p.slave_surface), master, master.surfaces.at(p.master_surface),
+                            p.search_distance, p.box_search ? FacetCandidates::Boxes : FacetCandidates::All);
     if (found.empty())
       throw std::runtime_error("contact pair '" + p.name + "': no node of surface '" + p.slave_surface + "' of body '" +
                                model.bodies[p.slave_body].name + "' lies over surface '" + p.master_surface +
@@ -97,7 +98,8 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
     PairState now;
     const double touch = 1e-9 * p.search_distance;
     for (ContactPoint& c : find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
-                                               master_now, master.surfaces.at(p.master_surface), p.search_distance)) {
+                                               master_now, master.surfaces.at(p.master_surface), p.search_distance,
+                                               p.box_search ? FacetCandidates::Boxes : FacetCandidates::All)) {
       c.separation = reference_separation(slave, master, c);
       const auto it = was.find(c.slave_node);
       if (it == was.end()) {

@@ -100,17 +100,36 @@ std::map<int, double> tributary(const Mesh& m, const std::vector<Facet>& surface
   }
   return w;
 }
+
+/// The axis-aligned box of a facet's nodes.
+struct Box {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  double distance(const Eigen::Vector3d& x) const { return (lo - x).cwiseMax(x - hi).cwiseMax(0.0).norm(); }
+};
+
+Box facet_box(const Mesh& m, const std::vector<int>& nodes) {
+  Box b;
+  for (int n : nodes) {
+    b.lo = b.lo.cwiseMin(point(m, n));
+    b.hi = b.hi.cwiseMax(point(m, n));
+  }
+  return b;
+}
 }  // namespace
 
 std::vector<ContactPoint> find_contact_points(const Mesh& slave, const std::vector<Facet>& slave_surface,
                                               const Mesh& master, const std::vector<Facet>& master_surface,
-                                              double search_distance) {
+                                              double search_distance, FacetCandidates candidates) {
   std::vector<std::vector<int>> facets;
+  std::vector<Box> boxes;
   std::map<int, int> facets_of;  // master node → facets of the surface holding it
   for (const Facet& f : master_surface) {
     facets.push_back(facet_nodes(master, f));
+    boxes.push_back(facet_box(master, facets.back()));
     for (int n : facets.back()) ++facets_of[n];
   }
+  const bool all = candidates == FacetCandidates::All;
   // a closest point clamped to a facet's border counts when that border is inside the surface (its nodes shared by
   // as many facets as an interior node has): a convex master's vertex (2D) or edge (3D) region, which no facet's
   // own projection reaches — a node there would otherwise drop out of contact
@@ -124,7 +143,9 @@ std::vector<ContactPoint> find_contact_points(const Mesh& slave, const std::vect
   for (const auto& [node, weight] : tributary(slave, slave_surface)) {
     const Eigen::Vector3d x = point(slave, node);
     Projection best, clamped;
-    for (const auto& nodes : facets) {
+    for (size_t f = 0; f < facets.size(); ++f) {
+      if (!all && boxes[f].distance(x) > search_distance) continue;  // every point of the facet is out of reach
+      const std::vector<int>& nodes = facets[f];
       Projection p = master.dim == 2 ? project_on_segment(master, nodes, x) : project_on_face(master, nodes, x);
       if (p.inside && p.distance < best.distance)
         best = std::move(p);

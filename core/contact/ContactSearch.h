@@ -23,12 +23,19 @@ struct ContactPoint {
   std::array<Eigen::Vector3d, 2> tangent{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};  // unit, ⊥ normal (2D: one)
 };
 
+/// Which master facets a slave node is projected on: every one (the exhaustive search), or only those whose bounding
+/// box lies within search_distance of the node (a facet farther away cannot hold a projection within reach; its
+/// projection, computed by the exhaustive search, can only keep a node out — see find_contact_points).
+enum class FacetCandidates { All, Boxes };
+
 /// Slave nodes whose projection falls on the master surface (facet edges included, within a relative 1e-6
 /// of the facet size) at a distance ≤ search_distance, each with its closest such projection, in the positions of
-/// the meshes given (separation: in those positions too).
+/// the meshes given (separation: in those positions too). A node whose closest point is a facet's border counts when
+/// no facet holds its projection inside — with `All`, any facet at any distance; with `Boxes`, a candidate facet.
 std::vector<ContactPoint> find_contact_points(const Mesh& slave, const std::vector<Facet>& slave_surface,
                                               const Mesh& master, const std::vector<Facet>& master_surface,
-                                              double search_distance);
+                                              double search_distance,
+                                              FacetCandidates candidates = FacetCandidates::Boxes);
 
 /// The unit normal (and tangents) of a master facet at the point with shape function values N, in the meshes'
 /// positions: how a contact point that keeps its master point sees the facet turn.

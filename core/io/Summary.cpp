@@ -160,6 +160,14 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
       s["solver"]["factor_peak_fraction"] = rate / run.dgemm_peak_gflops;
     }
   }
+  if (r.auto_choice) {  // solver.mode: auto — the mode above is its choice
+    json costs = json::object();
+    for (const ModeCost& c : r.auto_choice->costs) costs[c.mode] = c.flops;
+    s["solver"]["auto"] = {{"chosen", r.auto_choice->mode},
+                           {"predicted_flops", costs},
+                           {"reason", r.auto_choice->reason},
+                           {"choice_s", r.auto_choice->seconds}};
+  }
   if (st.factor.min_pivot_ratio > 0) s["solver"]["min_pivot_ratio"] = st.factor.min_pivot_ratio;
   s["analysis"] = r.update_policy.empty() ? "linear" : "newton";
   if (!r.update_policy.empty()) {

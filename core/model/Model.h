@@ -88,6 +88,9 @@ struct ContactPair {
   // the slave body has rigid modes its conditions leave free: this pair holds it, and friction keeps at least one of
   // its active points sticking (all slipping would leave the body free; see contact/Friction.h)
   bool holds_slave = false;
+  // the search projects a slave node only on master facets whose bounding box is within search_distance
+  // (analysis.contact_search: boxes); false: on every facet (all)
+  bool box_search = true;
 };
 
 struct Model {

@@ -221,12 +221,13 @@ FactorEstimate estimate_factor(const Mesh& mesh, const DofMap& dofs, std::vector
 
 // ============================================================================ the reporter
 
-namespace {
-double subdomain_cost(const FactorEstimate& f, const CostModel& m) {
+double predicted_cost(const FactorEstimate& f, const CostModel& m) {
   return m.factorizations * f.flops + (m.cg_iterations * m.substitutions_per_iteration + 2) * 4 * f.nnz;
 }
 
 double one_domain_cost(const FactorEstimate& f) { return f.flops + 4 * f.nnz; }
+
+namespace {
 
 /// The shared facets through every node.
 Csr node_facets(int num_nodes, const std::vector<SharedFacet>& facets) {
@@ -541,7 +542,7 @@ void PartitionReporter::State::assemble(std::vector<PartitionProblem> id_problem
       SubdomainReport x = cache[s].report;
       x.multipliers = multipliers[s];
       x.paper_multipliers = paper[s];
-      x.cost = subdomain_cost(x.factor, options.cost);
+      x.cost = predicted_cost(x.factor, options.cost);
       r.dofs += x.dofs;
       r.rigid_modes += x.rigid_modes;
       r.rigid_modes_after_split += x.rigid_modes_after_split;

@@ -39,6 +39,11 @@ struct CostModel {
   double substitutions_per_iteration = 2;
 };
 
+/// c_i of the CostModel for one factor [flops]: what the table's cost column and `solver.mode: auto` weigh.
+double predicted_cost(const FactorEstimate& factor, const CostModel& model);
+/// c_0, one domain factored and substituted once [flops].
+double one_domain_cost(const FactorEstimate& factor);
+
 struct SubdomainReport {
   int id = 0;
   int elements = 0;

@@ -449,8 +449,11 @@ double model_size(const Model& model) {
 }
 
 void add_contacts(Model& model, const json& d) {
+  const auto a = d.find("analysis");
+  const bool boxes = a == d.end() || a->value("contact_search", std::string("boxes")) == "boxes";
   for (const auto& c : d.at("contacts")) {
     ContactPair p;
+    p.box_search = boxes;
     p.name = c.at("name").get<std::string>();
     const std::string type = c.at("type").get<std::string>();
     p.kind = type == "tied"       ? ContactKind::Tied
@@ -516,6 +519,7 @@ NewtonOptions newton_options(const Project& project) {
   o.contact_tangent = contact == "none"   ? ContactTangent::None
                       : contact == "full" ? ContactTangent::Full
                                           : ContactTangent::Groups;
+  o.keep_constant_tangents = a->value("constant_tangents", std::string("keep")) == "keep";
   return o;
 }
 

@@ -335,7 +335,9 @@ const ObjectSchema& solver_schema() {
   static const ObjectSchema s{
       "solver",
       "Linear solver settings.",
-      {choice("mode", solver_names(), "direct", "solver strategy (see docs/ARCHITECTURE.md)"),
+      {choice("mode", solver_mode_names(), "direct",
+              "solver strategy (see docs/ARCHITECTURE.md); auto: direct, mixed or (a body partitioned) feti, whichever "
+              "the partition table's cost model predicts cheapest (summary.json's solver.auto says why)"),
        def(count("threads", "threads for the factorization (BLAS) and parallel groups", 256), 1),
        def(str("update",
                "Newton: which groups get a new tangent and factor at each iteration — always (Mixed I / DD-I) or "
@@ -429,6 +431,13 @@ const ObjectSchema kAnalysis{
             "terms within one group (the master's own part; the slave–slave part is zero) into its stiffness block, "
             "every solver; full — also the terms joining slave and master, direct and skyline only; none — the "
             "rows' change is not linearised (docs/BENCHMARKS-NONLINEAR.md)"),
+     choice("constant_tangents", {"keep", "refactor"}, "keep",
+            "Newton under the selective update: keep — a group whose tangent cannot change (elastic, small strain) is "
+            "assembled and factored once; refactor — it is re-evaluated by its residual like any group (to measure "
+            "what keeping saves)"),
+     choice("contact_search", {"boxes", "all"}, "boxes",
+            "contact search: boxes — a slave node is projected only on master facets whose bounding box is within "
+            "search_distance; all — on every master facet (the exhaustive search, to measure what the boxes save)"),
      [] {
        Field f;
        f.name = "line_search";
@@ -458,7 +467,10 @@ const ObjectSchema kOutput{"output",
                                   f.doc = "write result.vtu";
                                   return f;
                                 }(),
-                                true)},
+                                true),
+                            choice("increments", {"all", "last"}, "all",
+                                   "with analysis.increments > 1: all — results.pvd and one VTU per increment beside "
+                                   "result.vtu; last — result.vtu only")},
                            "",
                            {}};
 

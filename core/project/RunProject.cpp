@@ -7,6 +7,7 @@
 #include "analysis/RollingMeasures.h"
 #include "analysis/RollingTheory.h"
 #include "project/ModelBuilder.h"
+#include "project/SolverChoice.h"
 #include "solve/Blas.h"
 
 namespace rollsim {
@@ -83,6 +84,15 @@ std::vector<std::string> analysis_names() {
 }
 
 Results run_project(const Project& project, const Model& model, AnalysisObserver* observer) {
+  if (project.data.at("solver").at("mode").get<std::string>() == kAutoSolver) {
+    const AutoChoice choice = choose_solver_mode(project, model);
+    if (observer) observer->on_stage("solver auto: " + choice.reason);
+    Project chosen = project;
+    chosen.data["solver"]["mode"] = choice.mode;
+    Results r = run_project(chosen, model, observer);
+    r.auto_choice = choice;
+    return r;
+  }
   const std::string type = analysis_type(project);
   if (model.rolling)  // a pass the roll cannot bite is an answer, not a solver failure: nothing is solved
     if (std::string no_bite = bite_refusal(*model.rolling); !no_bite.empty()) {

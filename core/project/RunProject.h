@@ -27,7 +27,8 @@ std::vector<std::string> analysis_names();
 
 /// Runs `model` (built from `project` by build_model) with the project's analysis and solver, reporting to
 /// `observer` (may be null; it also carries the cancel request). Results::status says how it ended; throws
-/// AnalysisError for a model that cannot be solved as given.
+/// AnalysisError for a model that cannot be solved as given. solver.mode `auto` is resolved here
+/// (choose_solver_mode), said to the observer as a stage and returned in Results::auto_choice.
 Results run_project(const Project& project, const Model& model, AnalysisObserver* observer = nullptr);
 
 }  // namespace rollsim

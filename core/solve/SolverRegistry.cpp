@@ -64,11 +64,19 @@ std::vector<std::string> solver_names() {
   return names;
 }
 
+std::vector<std::string> solver_mode_names() {
+  std::vector<std::string> names = solver_names();
+  names.push_back(kAutoSolver);
+  return names;
+}
+
 std::unique_ptr<SolverStrategy> make_solver(const std::string& name, const SolverOptions& options) {
   for (const auto& s : solver_registry())
     if (s.name == name) return s.make(options);
+  if (name == kAutoSolver)  // a caller's mistake, not the user's: run_project resolves `auto` first
+    throw std::invalid_argument("solver 'auto' names no strategy: choose_solver_mode resolves it from the model");
   std::string valid;
-  for (const auto& n : solver_names()) valid += (valid.empty() ? "" : ", ") + n;
+  for (const auto& n : solver_mode_names()) valid += (valid.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown solver '" + name + "' (valid: " + valid + ")");
 }
 

@@ -70,7 +70,11 @@ std::string one_of(const std::vector<std::string>& words);
 /// All strategies, in the order shown to users.
 const std::vector<StrategyInfo>& solver_registry();
 std::vector<std::string> solver_names();
-/// Throws std::invalid_argument listing the valid names for an unknown name.
+/// `solver.mode: auto` (project/SolverChoice.h chooses a registry name from the model).
+inline constexpr const char* kAutoSolver = "auto";
+/// The values of solver.mode and --solver: the registry's names, then `auto`.
+std::vector<std::string> solver_mode_names();
+/// Throws std::invalid_argument listing the valid names (`auto` among them) for an unknown name, and for `auto`.
 std::unique_ptr<SolverStrategy> make_solver(const std::string& name, const SolverOptions& options);
 
 }  // namespace rollsim

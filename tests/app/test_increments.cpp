@@ -11,6 +11,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUtilities.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -103,6 +104,24 @@ TEST(RunIncrements, OneIncrementWritesNoCollection) {
   EXPECT_TRUE(fs::exists(dir + "/out/result.vtu"));
   EXPECT_FALSE(fs::exists(dir + "/out/results.pvd"));
   EXPECT_EQ(json::parse(read_text(dir + "/out/summary.json"))["increments"].size(), 1u);
+}
+
+TEST(RunIncrements, OutputIncrementsLastWritesTheResultOnly) {
+  const std::string dir = make_temp_dir("increments-last");
+  json j = hertz(3);
+  j["output"] = {{"increments", "last"}};
+  write_text(dir + "/hertz.json", j.dump(2));
+  const auto r = run_rollsim({"run", dir + "/hertz.json", "--out", dir + "/out", "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> names = list_dir(dir + "/out");
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"result.vtu", "summary.json"}));
+  EXPECT_EQ(json::parse(read_text(dir + "/out/summary.json"))["increments"].size(), 3u) << "the summary keeps them";
+  j["output"] = {{"increments", "first"}};
+  write_text(dir + "/bad.json", j.dump(2));
+  const auto bad = run_rollsim({"run", dir + "/bad.json", "--out", dir + "/bad"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("output.increments"), std::string::npos) << bad.err;
 }
 
 TEST(RunIncrements, BadCountsExitTwoNamingTheField) {

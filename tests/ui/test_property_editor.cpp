@@ -103,9 +103,10 @@ class TestPropertyEditor : public QObject {
     QStringList names;
     for (int i = 0; i < mode->count(); ++i)
       if (mode->itemData(i).isValid()) names << mode->itemData(i).toString();
-    QStringList registry;
-    for (const auto& s : solver_registry()) registry << QString::fromStdString(s.name);
+    QStringList registry;  // the registry's strategies, then `auto`
+    for (const auto& s : solver_mode_names()) registry << QString::fromStdString(s);
     QCOMPARE(names, registry);
+    QCOMPARE(names.back(), QStringLiteral("auto"));
     QCOMPARE(mode->currentText(), QStringLiteral("direct"));
     QVERIFY(!mode->itemData(mode->findData(QStringLiteral("mixed")), Qt::ToolTipRole).toString().isEmpty());
     // every field the schema declares for `solver` appears (later fields join without code here)

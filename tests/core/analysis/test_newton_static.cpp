@@ -1,7 +1,7 @@
 // The Newton driver: a homogeneous plastic compression equals the material point under the same mixed control,
 // converges quadratically, agrees across solver modes and partitions, keeps the factors of elastic groups under the
-// selective policy, cuts back and ends `diverged` naming the increment when no equilibrium exists, and leaves the
-// last converged increment when cancelled.
+// selective policy (unless analysis.constant_tangents says refactor), cuts back and ends `diverged` naming the
+// increment when no equilibrium exists, and leaves the last converged increment when cancelled.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -179,6 +179,17 @@ TEST(NewtonStatic, SelectiveKeepsTheFactorOfAnElasticGroup) {
   bool share = false;  // the plastic block: refactored for its share of the residual, or kept below the threshold
   for (const auto& it : told_selective.seen) share = share || it[0].why.rfind("share ", 0) == 0;
   EXPECT_TRUE(share);
+  // analysis.constant_tangents: refactor — the elastic pad is selected by its residual share like the block
+  j["solver"]["update"] = "selective:0.0000001";
+  const Results kept_pad = run(j);
+  j["analysis"]["constant_tangents"] = "refactor";
+  const Results refactored = run(j);
+  ASSERT_EQ(refactored.status.status, Status::converged) << refactored.status.message;
+  EXPECT_EQ(kept_pad.solver.factorizations.at("pad"), 1);
+  EXPECT_GT(refactored.solver.factorizations.at("pad"), 1);
+  for (size_t b = 0; b < 2; ++b)
+    EXPECT_LE((refactored.bodies[b].displacement - kept_pad.bodies[b].displacement).norm(),
+              1e-7 * kept_pad.bodies[b].displacement.norm());
 }
 
 TEST(NewtonStatic, NoEquilibriumEndsDivergedNamingTheIncrement) {
