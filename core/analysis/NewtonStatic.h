@@ -37,8 +37,8 @@ struct NewtonOptions {
   ContactTangent contact_tangent = ContactTangent::Groups;
   // a step's first iteration factors the tangents of the last step's converged iterate (not re-assembled there)
   bool first_tangent_converged = true;
-  bool keep_constant_tangents = true;    // a policy reading residuals (selective) never re-assembles a group whose
-                                         // tangent is constant (elastic, small strain); false: like any group
+  bool keep_constant_tangents = true;  // a policy reading residuals (selective) never re-assembles a group whose
+                                       // tangent is constant (elastic, small strain); false: like any group
 };
 
 /// Runs the Newton analysis; Results::status is converged, cancelled (between iterations: the last converged step
