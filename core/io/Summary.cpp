@@ -109,13 +109,23 @@ json rolling_section(const Model& m, const RollingResults& r) {
           {"theory", theory_section(*m.rolling)}};
 }
 
+bool all_finite(const json& j) {
+  if (j.is_number()) return std::isfinite(j.get<double>());
+  if (j.is_structured())
+    for (const json& v : j)
+      if (!all_finite(v)) return false;
+  return true;
+}
+
 // One increment's probe displacements and reactions (a load–displacement curve), when it kept its fields.
 void add_increment_fields(const Model& m, const IncrementResults& inc, json& entry) {
   if (inc.bodies.size() != m.bodies.size()) return;
   json probes = json::object();
   for (const Probe& p : m.probes) probes[p.name] = vec(inc.bodies[p.body].displacement.data() + p.node * m.dim, m.dim);
+  json reactions = reactions_of(m, inc.bodies);
+  if (!all_finite(probes) || !all_finite(reactions)) return;  // a failed solve's: nothing to draw, JSON has no NaN
   entry["probes"] = probes;
-  entry["reactions"] = reactions_of(m, inc.bodies);
+  entry["reactions"] = reactions;
 }
 
 // One entry per completed load increment: its load factor, solves, CG iterations, contact resultants, and the
