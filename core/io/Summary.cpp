@@ -32,6 +32,18 @@ json model_section(const Model& m, const Results& r) {
           {"contact_pairs", m.contacts.size()}};
 }
 
+// The resultant force on every node set with a displacement condition, per body and set: the reactions.
+json reactions_of(const Model& m, const std::vector<BodyResults>& bodies) {
+  json reactions = json::object();
+  std::set<std::pair<int, std::string>> done;
+  for (const DisplacementBC& bc : m.displacements) {
+    if (!done.insert({bc.body, bc.set}).second) continue;
+    const auto s = set_resultant(bodies[bc.body], m.dim, bc.nodes);
+    reactions[m.bodies[bc.body].name][bc.set] = vec(s.data(), m.dim);
+  }
+  return reactions;
+}
+
 json results_section(const Model& m, const Results& r) {
   json probes = json::object();
   for (const Probe& p : m.probes) {
@@ -43,13 +55,7 @@ json results_section(const Model& m, const Results& r) {
   }
   double umax = 0;
   for (const BodyResults& b : r.bodies) umax = std::max(umax, b.displacement.cwiseAbs().maxCoeff());
-  json reactions = json::object();
-  std::set<std::pair<int, std::string>> done;
-  for (const DisplacementBC& bc : m.displacements) {
-    if (!done.insert({bc.body, bc.set}).second) continue;
-    const auto s = set_resultant(r.bodies[bc.body], m.dim, bc.nodes);
-    reactions[m.bodies[bc.body].name][bc.set] = vec(s.data(), m.dim);
-  }
+  const json reactions = reactions_of(m, r.bodies);
   json contact = json::object();
   for (const ContactResult& c : r.contacts)
     contact[c.name] = {{"normal_force", c.normal_force}, {"tangential_force", c.tangential_force},
@@ -103,8 +109,28 @@ json rolling_section(const Model& m, const RollingResults& r) {
           {"theory", theory_section(*m.rolling)}};
 }
 
-// One entry per completed load increment: its load factor, solves, CG iterations and contact resultants.
-json increments_section(const Results& r) {
+bool all_finite(const json& j) {
+  if (j.is_number()) return std::isfinite(j.get<double>());
+  if (j.is_structured())
+    for (const json& v : j)
+      if (!all_finite(v)) return false;
+  return true;
+}
+
+// One increment's probe displacements and reactions (a load–displacement curve), when it kept its fields.
+void add_increment_fields(const Model& m, const IncrementResults& inc, json& entry) {
+  if (inc.bodies.size() != m.bodies.size()) return;
+  json probes = json::object();
+  for (const Probe& p : m.probes) probes[p.name] = vec(inc.bodies[p.body].displacement.data() + p.node * m.dim, m.dim);
+  json reactions = reactions_of(m, inc.bodies);
+  if (!all_finite(probes) || !all_finite(reactions)) return;  // a failed solve's: nothing to draw, JSON has no NaN
+  entry["probes"] = probes;
+  entry["reactions"] = reactions;
+}
+
+// One entry per completed load increment: its load factor, solves, CG iterations, contact resultants, and the
+// probes' displacements and the reactions.
+json increments_section(const Model& m, const Results& r) {
   json list = json::array();
   for (size_t i = 0; i < r.increments.size(); ++i) {
     const IncrementResults& inc = r.increments[i];
@@ -120,6 +146,7 @@ json increments_section(const Results& r) {
       entry["newton_iterations"] = inc.newton_iterations;
       entry["cutbacks"] = inc.cutbacks;
     }
+    add_increment_fields(m, inc, entry);
     list.push_back(entry);
   }
   return list;
@@ -183,7 +210,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
                  {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
                  {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};
   if (run.peak_probe_s > 0) s["timing"]["peak_probe_s"] = run.peak_probe_s;
-  s["increments"] = increments_section(r);
+  s["increments"] = increments_section(model, r);
   if (!r.status.ok()) return s;
   s["results"] = results_section(model, r);
   if (r.rolling) s["results"]["rolling"] = rolling_section(model, *r.rolling);

@@ -8,6 +8,7 @@
 #include "mesh/Cylinder.h"
 #include "mesh/PlateWithHole.h"
 #include "mesh/RollGap.h"
+#include "mesh/RoundBar.h"
 #include "mesh/StructuredBlock.h"
 
 namespace rollsim {
@@ -15,6 +16,20 @@ namespace rollsim {
 namespace {
 double num(const json& j, const char* k) { return j.at(k).get<double>(); }
 bool full_ring(const json& m) { return std::fabs(num(m, "end_angle") - num(m, "start_angle") - 360.0) < 1e-9; }
+
+RoundBarSpec round_bar_spec(const json& m) {
+  RoundBarSpec s;
+  s.radius = num(m, "radius");
+  s.length = num(m, "length");
+  s.n_core = m.at("n_core").get<int>();
+  s.n_ring = m.at("n_ring").get<int>();
+  s.n_axial = m.at("n_axial").get<int>();
+  s.core_fraction = num(m, "core_fraction");
+  s.neck_ratio = num(m, "neck_ratio");
+  if (m.contains("taper_length")) s.taper_length = num(m, "taper_length");
+  s.axial_grading = num(m, "axial_grading");
+  return s;
+}
 }  // namespace
 
 std::string grading_problem(double grading, int n) {
@@ -41,6 +56,12 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
     if (m.contains("x_grading"))
       if (auto why = grading_problem(num(m, "x_grading"), m.at("nx").get<int>()); !why.empty())
         issues.push_back({path + ".x_grading", why});
+  } else if (type == "round_bar") {
+    need_dim(3);
+    if (m.contains("taper_length") && num(m, "taper_length") > num(m, "length"))
+      issues.push_back({path + ".taper_length", "must not exceed length (the taper ends inside the bar)"});
+    if (auto why = grading_problem(num(m, "axial_grading"), m.at("n_axial").get<int>()); !why.empty())
+      issues.push_back({path + ".axial_grading", why});
   } else if (type == "plate_with_hole") {
     need_dim(2);
     if (num(m, "radius") >= std::min(num(m, "width"), num(m, "height")))
@@ -63,6 +84,7 @@ double estimated_elements(const json& m, int dim) {
   auto n = [&](const char* k) { return m.contains(k) ? m.at(k).get<double>() : 1.0; };
   if (type == "block") return n("nx") * n("ny") * (dim == 3 ? n("nz") : 1.0);
   if (type == "plate_with_hole" || type == "annulus") return n("n_around") * n("n_radial");
+  if (type == "round_bar") return n("n_core") * (n("n_core") + 2.0 * n("n_ring")) * n("n_axial");
   return n("n_around") * n("n_radial") * n("n_axial");
 }
 
@@ -74,6 +96,7 @@ std::set<std::string> generator_set_names(const json& m, int dim) {
     return s;
   }
   if (type == "plate_with_hole") return {"left", "bottom", "right", "top", "hole"};
+  if (type == "round_bar") return {"xmin", "ymin", "zmin", "zmax", "outer"};
   std::set<std::string> s{"inner", "outer"};
   if (type == "cylinder") s.insert({"ymin", "ymax"});
   if (!full_ring(m)) s.insert({"start", "end"});
@@ -101,6 +124,7 @@ Mesh make_mesh(const json& m, int dim) {
     return mesh;
   }
   auto count = [&](const char* k) { return m.at(k).get<int>(); };
+  if (type == "round_bar") return make_round_bar(round_bar_spec(m));
   if (type == "plate_with_hole")
     return make_plate_with_hole(
         {num(m, "width"), num(m, "height"), num(m, "radius"), count("n_around"), count("n_radial"), num(m, "grading")});

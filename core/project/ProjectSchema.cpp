@@ -153,12 +153,54 @@ const ObjectSchema kCylinder{
     "",
     {}};
 
-const ObjectSchema kMesh{
-    "mesh",
-    "Mesh generator of a body, selected by `type`.",
-    {},
-    "type",
-    {{"block", &kBlock}, {"plate_with_hole", &kPlate}, {"annulus", &kAnnulus}, {"cylinder", &kCylinder}}};
+Field bounded(Field f, double lo, double hi) {
+  f.min = lo;
+  f.max = hi;
+  return f;
+}
+
+const ObjectSchema kRoundBar{
+    "round_bar mesh",
+    "Solid round bar with its axis along z (3D): the quarter x ≥ 0, y ≥ 0 of its section (symmetry planes x = 0 and "
+    "y = 0) meshed as an o-grid — a square core and a ring around it — swept from z = 0 to z = length. z = 0 is "
+    "where the neck is (the mid-length symmetry plane of a whole bar: model half the bar, one eighth of it in all); "
+    "the radius may grow linearly from neck_ratio × radius there to the full radius at taper_length, the geometric "
+    "imperfection of Simo's necking benchmark. Lengths in the project's unit (the samples use mm).",
+    {req(positive("radius", "length", "full radius R of the bar")),
+     req(positive("length", "length", "axial extent (half the bar when z = 0 is its mid-length symmetry plane)")),
+     req(count("n_core", "elements along each edge of the square core; the quarter circumference has 2 × n_core", 1e4)),
+     req(count("n_ring", "elements across the ring, from the core to the round surface", 1e4)),
+     req(count("n_axial", "elements along z", 1e5)),
+     def(bounded(num("core_fraction", "-", "half-side of the square core over the radius"), 0.2, 0.7), 0.5),
+     [] {
+       Field f = def(num("neck_ratio", "-",
+                         "radius at z = 0 over the full radius: the necking imperfection (0.982 in Simo's benchmark; "
+                         "1: a straight bar)"),
+                     1.0);
+       f.min = 0.5;
+       f.max = 1.0;
+       return f;
+     }(),
+     positive("taper_length", "length",
+              "axial extent over which the radius grows linearly from neck_ratio × radius to the full radius, at most "
+              "length (default: the whole length)"),
+     def(bounded(num("axial_grading", "-",
+                     "size ratio of each element along z to its neighbour nearer z = 0 (1: uniform; > 1: finer at the "
+                     "neck)"),
+                 0.5, 2.0),
+         1.0)},
+    "",
+    {}};
+
+const ObjectSchema kMesh{"mesh",
+                         "Mesh generator of a body, selected by `type`.",
+                         {},
+                         "type",
+                         {{"block", &kBlock},
+                          {"plate_with_hole", &kPlate},
+                          {"annulus", &kAnnulus},
+                          {"cylinder", &kCylinder},
+                          {"round_bar", &kRoundBar}}};
 
 Field tolerance() {
   Field f = num("tolerance", "length", "distance tolerance of `box` (default: 1e-6 of the body size)");
@@ -516,7 +558,7 @@ std::string project_format_markdown() {
          "surfaces listed with it (and node sets of the same names, plus `all`), and `node_sets` adds more.\n\n"
          "Generated sets: `block`: xmin, xmax, ymin, ymax (, zmin, zmax); `plate_with_hole`: left, bottom, right, "
          "top, hole; `annulus`: inner, outer (, start, end for a sector); `cylinder`: inner, outer, ymin, ymax "
-         "(, start, end).\n\n" +
+         "(, start, end); `round_bar`: xmin, ymin (its symmetry planes), zmin, zmax, outer.\n\n" +
          schema_markdown(project_schema());
 }
 

@@ -51,6 +51,9 @@ const json kAnnulus = {{"type", "annulus"}, {"center", {0, 0}}, {"inner_radius",
 const json kCylinder = {{"type", "cylinder"}, {"center", {0, 0}}, {"length", 1},   {"inner_radius", 1},
                         {"outer_radius", 2},  {"n_radial", 1},    {"n_around", 8}, {"n_axial", 1}};
 
+const json kRoundBar = {{"type", "round_bar"}, {"radius", 1}, {"length", 4},
+                        {"n_core", 1},         {"n_ring", 1}, {"n_axial", 2}};
+
 /// One bad project: its text, where the message must point (a JSON path, "line L..." or "" for the whole file)
 /// and a fragment of the reason.
 struct Case {
@@ -103,6 +106,22 @@ json with(json base, const std::string& key, json value) {
   base[key] = std::move(value);
   return base;
 }
+/// The 3D project as a round bar with `key` set to `value` (`mesh` its other fields), refused at
+/// `bodies[0].mesh.<key>` for `reason`.
+Case bad_round_bar(std::string name, const std::string& key, json value, std::string reason, json mesh = kRoundBar) {
+  return edit(
+      std::move(name),
+      [key, value, mesh](json& j) {
+        j["bodies"][0]["mesh"] = with(mesh, key, value);
+        j["bodies"][0]["node_sets"] = json::array();
+        j["boundary_conditions"] = {{{"type", "displacement"}, {"body", "b"}, {"set", "zmin"}, {"uz", 0}},
+                                    {{"type", "symmetry"}, {"body", "b"}, {"set", "xmin"}, {"normal", "x"}},
+                                    {{"type", "symmetry"}, {"body", "b"}, {"set", "ymin"}, {"normal", "y"}}};
+        j["probes"] = json::array();
+      },
+      "bodies[0].mesh." + key, std::move(reason), k3D);
+}
+
 /// The 2D project with a copy of the first entry of the array at `ptr` appended.
 Case again(std::string name, std::string ptr, std::string where, std::string reason) {
   return edit(
@@ -248,7 +267,7 @@ std::vector<Case> field_cases() {
       set("unknown condition field", "/boundary_conditions/0/uxx", 0, "boundary_conditions[0].uxx", "unknown field"),
       set("misspelt E", "/materials/0/e", 1000, "materials[0].e", "unknown field"),
       set("unknown mesh type", "/bodies/0/mesh/type", "sphere", "bodies[0].mesh.type",
-          "must be one of annulus, block, cylinder, plate_with_hole, got \"sphere\""),
+          "must be one of annulus, block, cylinder, plate_with_hole, round_bar, got \"sphere\""),
       set("unknown condition type", "/boundary_conditions/0/type", "glue", "boundary_conditions[0].type",
           "got \"glue\""),
       set("unknown solver", "/solver/mode", "fast", "solver.mode", "must be one of"),
@@ -289,6 +308,7 @@ std::vector<Case> dimension_cases() {
           },
           "bodies[0].mesh.type", "'plate_with_hole' meshes are 2D only", k3D),
       set("cylinder in 2D", "/bodies/0/mesh", kCylinder, "bodies[0].mesh.type", "'cylinder' meshes are 3D only"),
+      set("round bar in 2D", "/bodies/0/mesh", kRoundBar, "bodies[0].mesh.type", "'round_bar' meshes are 3D only"),
   };
 }
 
@@ -366,6 +386,14 @@ std::vector<Case> value_cases() {
           "must be greater than start_angle"),
       set("grading out of range", "/bodies/0/mesh", with(kPlate, "grading", 3), "bodies[0].mesh.grading", "in [1, 2]"),
       set("cg tolerance 1", "/solver/cg_tolerance", 1, "solver.cg_tolerance", "in (0, 1)"),
+      bad_round_bar("round bar taper longer than the bar", "taper_length", 5, "must not exceed length"),
+      bad_round_bar("round bar neck too deep", "neck_ratio", 0.3, "in [0.5, 1]"),
+      bad_round_bar("round bar neck wider than the bar", "neck_ratio", 1.1, "in [0.5, 1]"),
+      bad_round_bar("round bar core too big", "core_fraction", 0.9, "in [0.2, 0.7]"),
+      bad_round_bar("round bar without core elements", "n_core", 0, "must be a positive integer, got 0"),
+      bad_round_bar("round bar negative radius", "radius", -1, "> 0"),
+      bad_round_bar("round bar grading too steep", "axial_grading", 2, "times the smallest",
+                    with(kRoundBar, "n_axial", 30)),
   };
 }
 

@@ -1,8 +1,12 @@
 // Tests of summary.json's factorization rate: factor_gflops = all factorizations' flops over their seconds, and its
-// fraction of the DGEMM peak when the run measured one; nothing of the kind when nothing was factored.
+// fraction of the DGEMM peak when the run measured one; nothing of the kind when nothing was factored. Every
+// increment lists its probes' displacements and reactions (a load–displacement curve).
 #include <gtest/gtest.h>
 
 #include "io/Summary.h"
+#include "project/ModelBuilder.h"
+#include "project/Project.h"
+#include "project/RunProject.h"
 
 namespace rollsim {
 namespace {
@@ -33,6 +37,33 @@ TEST(Summary, LeavesThePeakOutWhenNotMeasuredAndTheRateWhenNothingWasFactored) {
   EXPECT_FALSE(s["timing"].contains("peak_probe_s"));
   const auto none = make_summary(Model{}, factored(0, 0), RunInfo{"t", "petsc"});
   EXPECT_FALSE(none["solver"].contains("factor_gflops"));
+}
+
+TEST(Summary, ListsEveryIncrementsProbesAndReactions) {
+  const json j = {{"dimension", 2},
+                  {"materials", {{{"name", "m"}, {"E", 1000.0}, {"nu", 0.3}}}},
+                  {"bodies",
+                   {{{"name", "b"},
+                     {"material", "m"},
+                     {"mesh", {{"type", "block"}, {"nx", 4}, {"ny", 2}, {"lx", 4.0}, {"ly", 2.0}}}}}},
+                  {"boundary_conditions",
+                   {{{"type", "displacement"}, {"body", "b"}, {"set", "xmin"}, {"ux", 0.0}, {"uy", 0.0}},
+                    {{"type", "displacement"}, {"body", "b"}, {"set", "xmax"}, {"ux", 0.4}}}},
+                  {"analysis", {{"increments", 4}}},
+                  {"probes", {{{"name", "tip"}, {"at", {4.0, 2.0}}}}}};
+  const Project p = parse_project(j.dump(), "curve.json");
+  const Model m = build_model(p);
+  const auto s = make_summary(m, run_project(p, m), RunInfo{"curve", "direct"});
+  ASSERT_EQ(s["increments"].size(), 4u);
+  const json& last = s["increments"][3];
+  EXPECT_EQ(last["probes"]["tip"], s["results"]["probes"]["tip"]["displacement"]);
+  EXPECT_EQ(last["reactions"], s["results"]["reactions"]);
+  // linear: the first increment is a quarter of the last
+  const double f1 = s["increments"][0]["reactions"]["b"]["xmax"][0].get<double>();
+  const double f4 = last["reactions"]["b"]["xmax"][0].get<double>();
+  EXPECT_GT(f4, 0.0);
+  EXPECT_NEAR(f1, 0.25 * f4, 1e-9 * f4);
+  EXPECT_NEAR(s["increments"][1]["probes"]["tip"][0].get<double>(), 0.2, 1e-12);
 }
 
 }  // namespace
