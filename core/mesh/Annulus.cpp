@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -123,10 +122,7 @@ Mesh make_annulus(const AnnulusSpec& s) {
   m.type = ElementType::Quad4;
   add_nodes(m, s, ring, num);
   add_elements(m, s, ring, num);
-  add_node_sets_from_surfaces(m);
-  std::vector<int> every(m.nodes.size());
-  std::iota(every.begin(), every.end(), 0);
-  m.node_sets["all"] = std::move(every);
+  add_derived_node_sets(m);
   return m;
 }
 

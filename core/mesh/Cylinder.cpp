@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 
 #include "mesh/Annulus.h"
@@ -100,10 +99,7 @@ Mesh make_cylinder(const CylinderSpec& s) {
   m.type = ElementType::Hex8;
   add_nodes(m, s, ring, num);
   add_elements(m, s, ring, num);
-  add_node_sets_from_surfaces(m);
-  std::vector<int> every(m.nodes.size());
-  std::iota(every.begin(), every.end(), 0);
-  m.node_sets["all"] = std::move(every);
+  add_derived_node_sets(m);
   return m;
 }
 

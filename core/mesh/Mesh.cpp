@@ -1,6 +1,7 @@
 #include "mesh/Mesh.h"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 namespace rollsim {
@@ -27,9 +28,12 @@ std::vector<int> surface_nodes(const Mesh& mesh, const std::vector<Facet>& facet
   return ids;
 }
 
-void add_node_sets_from_surfaces(Mesh& mesh) {
+void add_derived_node_sets(Mesh& mesh) {
   for (const auto& [name, facets] : mesh.surfaces)
     if (!mesh.node_sets.count(name)) mesh.node_sets[name] = surface_nodes(mesh, facets);
+  std::vector<int> every(mesh.nodes.size());
+  std::iota(every.begin(), every.end(), 0);
+  mesh.node_sets["all"] = std::move(every);
 }
 
 namespace {

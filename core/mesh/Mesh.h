@@ -41,8 +41,9 @@ std::vector<int> facet_local_nodes(ElementType t, int local);
 /// Node ids touched by a surface, sorted and unique.
 std::vector<int> surface_nodes(const Mesh& mesh, const std::vector<Facet>& facets);
 
-/// Adds node sets for every surface that has no node set of the same name.
-void add_node_sets_from_surfaces(Mesh& mesh);
+/// Adds the node sets every generator provides: one per surface that has no node set of the same
+/// name, and "all" (every node).
+void add_derived_node_sets(Mesh& mesh);
 
 /// Throws std::runtime_error naming the element if any element has non-positive Jacobian at a corner.
 void check_element_orientation(const Mesh& mesh);

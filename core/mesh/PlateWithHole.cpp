@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -96,10 +95,7 @@ Mesh make_plate_with_hole(const PlateWithHoleSpec& s) {
   m.type = ElementType::Quad4;
   add_nodes(m, s, num);
   add_elements(m, s, num);
-  add_node_sets_from_surfaces(m);
-  std::vector<int> every(m.nodes.size());
-  std::iota(every.begin(), every.end(), 0);
-  m.node_sets["all"] = std::move(every);
+  add_derived_node_sets(m);
   return m;
 }
 

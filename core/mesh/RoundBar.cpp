@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -121,10 +120,7 @@ Mesh make_round_bar(const RoundBarSpec& s) {
       if (q.xmin_face >= 0) m.surfaces["xmin"].push_back({e, q.xmin_face});
       if (q.outer_face >= 0) m.surfaces["outer"].push_back({e, q.outer_face});
     }
-  add_node_sets_from_surfaces(m);
-  std::vector<int> every(m.nodes.size());
-  std::iota(every.begin(), every.end(), 0);
-  m.node_sets["all"] = std::move(every);
+  add_derived_node_sets(m);
   return m;
 }
 

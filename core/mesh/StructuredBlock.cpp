@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 
 namespace rollsim {
@@ -86,10 +85,7 @@ Mesh make_block(const BlockSpec& s) {
     }
     all.push_back(e);
   }
-  add_node_sets_from_surfaces(m);
-  std::vector<int> every(m.nodes.size());
-  std::iota(every.begin(), every.end(), 0);
-  m.node_sets["all"] = std::move(every);
+  add_derived_node_sets(m);
   return m;
 }
 
