@@ -221,7 +221,12 @@ std::string rolling_line(const Model& model, const RollingResults& r) {
       s.roll_force, plane ? "N/mm" : "N", s.roll_torque, plane ? "N·mm/mm" : "N·mm", 100 * s.forward_slip,
       s.exit_thickness, s.volume_change, state, t.sims_force, plane ? "N/mm" : "N", t.sims_torque,
       plane ? "N·mm/mm" : "N·mm", 100 * t.sims_forward_slip);
-  return buf;
+  if (plane) return buf;
+  char spread[200];
+  std::snprintf(spread, sizeof spread,
+                "rollsim: rolling: spread %.3g mm at the widest point, %.3g mm of the mean width; Wusatowski %.3g mm\n",
+                s.spread, s.mean_spread, t.wusatowski_spread);
+  return buf + std::string(spread);
 }
 }  // namespace
 

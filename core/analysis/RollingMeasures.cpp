@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace rollsim {
 
@@ -54,6 +55,29 @@ void exit_geometry(const RollingPass& pass, const Mesh& slab, const BodyResults&
   if (pass.width_axis >= 0 && side > 0) out.spread = 2 * side - pass.width;
 }
 
+/// The mean width past the exit plane, less the entry width: each column of the slab's side face (its nodes of one
+/// reference x, the face y = b0/2) whose nodes are all past the exit plane (0 < x ≤ window) gives its position
+/// averaged over the thickness (trapezoid rule over the current heights); the columns' mean, doubled (the width is
+/// symmetric about y = 0). 0 when no column is there yet.
+double mean_spread(const RollingPass& pass, const Mesh& slab, const BodyResults& r, double window) {
+  std::map<double, std::vector<Eigen::Vector3d>> columns;  // reference x → current positions of the side's nodes
+  for (int n : slab.node_sets.at("ymax"))
+    columns[slab.nodes[static_cast<size_t>(n)][0]].push_back(current(slab, r.displacement, n));
+  const int up = pass.thickness_axis, across = pass.width_axis;
+  double sum = 0;
+  int counted = 0;
+  for (auto& [x0, c] : columns) {
+    const auto outside = [&](const Eigen::Vector3d& x) { return x[0] <= 0 || x[0] > window; };
+    if (c.size() < 2 || std::any_of(c.begin(), c.end(), outside)) continue;
+    std::sort(c.begin(), c.end(), [&](const auto& a, const auto& b) { return a[up] < b[up]; });
+    double area = 0;
+    for (size_t i = 0; i + 1 < c.size(); ++i)
+      area += 0.5 * (c[i][across] + c[i + 1][across]) * (c[i + 1][up] - c[i][up]);
+    sum += area / (c.back()[up] - c.front()[up]), ++counted;
+  }
+  return counted ? 2 * sum / counted - pass.width : 0.0;
+}
+
 double mean_advance(const Mesh& slab, const std::vector<int>& nodes, const Eigen::VectorXd& u) {
   double s = 0;
   for (int n : nodes) s += u[n * slab.dim];
@@ -72,12 +96,13 @@ RollingIncrement window_mean(const std::vector<RollingIncrement>& h, double from
     m.travel = r.travel;
     m.roll_force += w * r.roll_force, m.roll_torque += w * r.roll_torque;
     m.contact_length += w * r.contact_length, m.exit_thickness += w * r.exit_thickness;
-    m.forward_slip += w * r.forward_slip, m.spread += w * r.spread, m.volume_change += w * r.volume_change;
+    m.forward_slip += w * r.forward_slip, m.spread += w * r.spread, m.mean_spread += w * r.mean_spread;
+    m.volume_change += w * r.volume_change;
     weight += w;
   }
   if (weight <= 0) return m;
   for (double* v : {&m.roll_force, &m.roll_torque, &m.contact_length, &m.exit_thickness, &m.forward_slip, &m.spread,
-                    &m.volume_change})
+                    &m.mean_spread, &m.volume_change})
     *v /= weight;
   return m;
 }
@@ -145,7 +170,7 @@ int steady_state_from(const std::vector<RollingIncrement>& h, double window) {
 
 RollingIncrement roll_load(const Model& model, const IncrementResults& inc) {
   const RollingPass& pass = *model.rolling;
-  const double symmetry = model.dim == 3 ? 2.0 : 1.0;  // 3D models half the width
+  const double symmetry = pass.half_width ? 2.0 : 1.0;
   RollingIncrement r;
   r.travel = inc.load_factor * pass.travel;
   hub_reaction(model, pass, inc.bodies[static_cast<size_t>(pass.roll)], r);
@@ -157,7 +182,7 @@ RollingIncrement roll_load(const Model& model, const IncrementResults& inc) {
 RollingResults measure_rolling(const Model& model, const Results& results) {
   const RollingPass& pass = *model.rolling;
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
-  const double symmetry = model.dim == 3 ? 2.0 : 1.0;          // 3D models half the width
+  const double symmetry = pass.half_width ? 2.0 : 1.0;
   const double contact = rolling_theory(pass).contact_length;  // √(R Δh)
   const double volume0 = volume(slab, Eigen::VectorXd::Zero(slab.num_nodes() * slab.dim));
   RollingResults out;
@@ -168,6 +193,8 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
     RollingIncrement r = roll_load(model, inc);
     for (const ContactResult& c : inc.contacts) r.contact_length += symmetry * c.measure;
     exit_geometry(pass, slab, inc.bodies[static_cast<size_t>(pass.slab)], contact, r);
+    if (pass.width_axis >= 0)
+      r.mean_spread = mean_spread(pass, slab, inc.bodies[static_cast<size_t>(pass.slab)], contact);
     const Eigen::VectorXd& u = inc.bodies[static_cast<size_t>(pass.slab)].displacement;
     const double front = mean_advance(slab, slab.node_sets.at("xmax"), u);
     const double rear = mean_advance(slab, slab.node_sets.at("xmin"), u);

@@ -15,7 +15,9 @@ struct RollingIncrement {
   // slab front's advance / roll surface travel − 1 over the last tenth of a nominal contact length √(R Δh) of travel
   // (from the start before that) [-]
   double forward_slip = 0;
-  double spread = 0;         // 3D: whole width past the exit − entry width (0 in 2D) [length]
+  double spread = 0;  // 3D: whole width past the exit (its widest point) − entry width (0 in 2D) [length]
+  // 3D: the same with the section's mean width: the side face's position averaged over the thickness (0 in 2D) [length]
+  double mean_spread = 0;
   double volume_change = 0;  // the slab's current volume (area in 2D) / its initial one − 1 [-]
 };
 

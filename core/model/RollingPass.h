@@ -8,6 +8,7 @@ struct RollingPass {
   int hub = 0;                                     // index in Model::displacements of the hub's rigid rotation
   int thickness_axis = 1;                          // y in 2D, z in 3D (the slab's mid-plane at 0)
   int width_axis = -1;                             // y in 3D (width symmetry plane at 0), −1 in 2D
+  bool half_width = false;                         // 3D: the model holds half the width (y ≥ 0)
   double radius = 0;                               // roll radius R [length]
   double entry_thickness = 0, exit_thickness = 0;  // nominal h0 and h1 of the whole slab [length]
   double width = 0;                                // whole slab width b0 (3D) [length]

@@ -107,6 +107,17 @@ const ObjectSchema& rolling_process_schema() {
              "what flattening changes)";
          return f;
        }(),
+       [] {
+         Field f;
+         f.name = "width_symmetry";
+         f.kind = Kind::Boolean;
+         f.default_value = true;
+         f.doc =
+             "3D: model half the width, with a symmetry plane at y = 0 (the pass is symmetric about it). false: the "
+             "whole width, slab and roll mirrored (twice the elements of slab_nw and roll_n_axial), held in y only "
+             "along the slab's centre line — what the symmetry saves, and a check of it";
+         return f;
+       }(),
        number("roll_E", "stress", 2.1e5, 0, 1e12, "roll Young's modulus"),
        number("roll_nu", "-", 0.3, -1, 0.5, "roll Poisson's ratio"),
        [] {
@@ -164,6 +175,8 @@ const ObjectSchema& rolling_process_schema() {
 
 namespace {
 constexpr double kPaperReduction = 0.132;
+
+bool half_width(const json& process) { return process.value("width_symmetry", true); }
 
 /// The whole exit thickness h1: exit_thickness, or h0 (1 − reduction), the paper's reduction when neither is given.
 double exit_thickness(const json& p) {
@@ -225,16 +238,25 @@ json expand_process(const json& project) {
     slab_mesh.update({{"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-L, 0.0}}});
     roll_mesh.update({{"type", "annulus"}, {"center", {0.0, axis}}});
   } else {
-    slab_mesh.update(
-        {{"ny", p.at("slab_nw")}, {"ly", W / 2}, {"nz", p.at("slab_nt")}, {"lz", h0 / 2}, {"origin", {-L, 0.0, 0.0}}});
+    const int halves = half_width(p) ? 1 : 2;  // the modelled width: half (from y = 0) or whole (about y = 0)
+    const double barrel = p.at("barrel_width");
+    slab_mesh.update({{"ny", halves * p.at("slab_nw").get<int>()},
+                      {"ly", halves * W / 2},
+                      {"nz", p.at("slab_nt")},
+                      {"lz", h0 / 2},
+                      {"origin", {-L, halves == 1 ? 0.0 : -W / 2, 0.0}}});
     roll_mesh.update({{"type", "cylinder"},
                       {"center", {0.0, axis}},
-                      {"y0", 0.0},
-                      {"length", p.at("barrel_width").get<double>() / 2},
-                      {"n_axial", p.at("roll_n_axial")}});
+                      {"y0", halves == 1 ? 0.0 : -barrel / 2},
+                      {"length", halves * barrel / 2},
+                      {"n_axial", halves * p.at("roll_n_axial").get<int>()}});
   }
   json slab = {{"name", "slab"},         {"material", "slab"}, {"formulation", "bbar"},
                {"kinematics", "finite"}, {"mesh", slab_mesh},  {"node_sets", json::array()}};
+  if (dim == 3 && !half_width(p))
+    slab["node_sets"].push_back({{"name", "centre_line"},
+                                 {"box_min", {-L - 1, -1e-6 * W, -1e-6 * h0}},
+                                 {"box_max", {1.0, 1e-6 * W, 1e-6 * h0}}});
   if (p.contains("slab_partition")) slab["partition"] = p.at("slab_partition");
   if (p.contains("slab_partition_map")) slab["partition_map"] = p.at("slab_partition_map");
   out["bodies"].push_back(slab);
@@ -272,7 +294,9 @@ json expand_process(const json& project) {
   } else {
     hub["center"] = {0.0, 0.0, axis};
     hub["axis"] = {0.0, -1.0, 0.0};
-    bcs.push_back({{"type", "symmetry"}, {"body", "slab"}, {"set", "ymin"}, {"normal", "y"}});
+    // the whole width: the centre line (y = 0 on the mid-plane) holds the slab's sideways motion and yaw
+    bcs.push_back(
+        {{"type", "symmetry"}, {"body", "slab"}, {"set", half_width(p) ? "ymin" : "centre_line"}, {"normal", "y"}});
   }
   bcs.push_back(hub);
   out["analysis"]["increments"] =
@@ -295,6 +319,7 @@ std::optional<RollingPass> rolling_pass(const json& project, const Model& model)
     if (model.displacements[i].body == pass.roll && model.displacements[i].rotation) pass.hub = static_cast<int>(i);
   pass.thickness_axis = model.dim - 1;
   pass.width_axis = model.dim == 3 ? 1 : -1;
+  pass.half_width = model.dim == 3 && half_width(p);
   pass.radius = p.at("roll_radius");
   pass.entry_thickness = p.at("slab_thickness");
   pass.exit_thickness = exit_thickness(p);

@@ -5,7 +5,10 @@
 
 #include <cmath>
 
+#include "analysis/Results.h"
 #include "analysis/RollingMeasures.h"
+#include "project/ModelBuilder.h"
+#include "project/Project.h"
 
 using namespace rollsim;
 
@@ -74,4 +77,40 @@ TEST(RollingMeasures, NotSteadyWhileRisingShorterThanTwoWindowsOrTorqueDrifting)
   EXPECT_EQ(steady_state_from(history(30), 31.45), 0);          // 60 mm of travel, shorter than two windows
   EXPECT_EQ(steady_state_from(history(80, 2000.0), 31.45), 0);  // torque keeps growing by 2000 N·mm per mm
   EXPECT_EQ(steady_state_from({}, 31.45), 0);
+}
+
+// Spread, two ways, from the slab's side face past the exit plane: the widest point and the mean width over the
+// thickness. A 3D slab moved 150 mm past the exit plane whose side leans out linearly with height (y = b0/2 + c z on
+// the side face; the half thickness 50 mm behind the arc): widest 2 c · 50, mean 2 c · 25; the half-width model
+// doubles both.
+TEST(RollingMeasures, SpreadAtTheWidestPointAndOfTheMeanWidth) {
+  const json project = {{"dimension", 3},
+                        {"process",
+                         {{"type", "rolling"},
+                          {"slab_nx", 8},
+                          {"slab_nw", 2},
+                          {"slab_nt", 4},
+                          {"roll_n_axial", 2},
+                          {"roll_n_around", 48}}}};
+  const Model m = build_model(parse_project(project.dump(), "lean"));
+  const double c = 0.02;
+  IncrementResults inc;
+  for (const Body& b : m.bodies) {
+    BodyResults r;
+    r.displacement = Eigen::VectorXd::Zero(b.mesh.num_nodes() * 3);
+    r.nodal_force = Eigen::VectorXd::Zero(b.mesh.num_nodes() * 3);
+    inc.bodies.push_back(r);
+  }
+  const Mesh& slab = m.bodies[0].mesh;
+  for (int n = 0; n < slab.num_nodes(); ++n) {
+    const auto& X = slab.nodes[static_cast<size_t>(n)];
+    inc.bodies[0].displacement[3 * n] = 150;  // the columns at X in (−150, −87] lie past the exit
+    inc.bodies[0].displacement[3 * n + 1] = X[1] / 175 * c * X[2];  // the side face (y = 175) leans out
+  }
+  Results results;
+  results.increments.push_back(inc);
+  const RollingResults r = measure_rolling(m, results);
+  ASSERT_EQ(r.increments.size(), 1u);
+  EXPECT_NEAR(r.increments[0].spread, 2 * c * 50, 1e-9);
+  EXPECT_NEAR(r.increments[0].mean_spread, 2 * c * 25, 1e-9);
 }

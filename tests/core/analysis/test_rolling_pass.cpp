@@ -123,3 +123,35 @@ TEST(RollingPass, EverySolverModeGivesTheSameRollForce) {
     EXPECT_NEAR(last.roll_torque, ref.roll_torque, 1e-6 * ref.roll_torque);
   }
 }
+
+// process.width_symmetry: the whole width (false) and the half width with its symmetry plane (the default) are the
+// same pass: a coarse 3D pass (rigid roll) over its first 2 mm gives the same roll force, torque, contact area and
+// spread from both, the whole-width model counting its force once and the half-width model twice. (The forward slip
+// is not compared: it is the plain mean advance of the front face's nodes, whose weights differ between the two.)
+TEST(RollingPass, WholeWidthGivesTheHalfWidthPass) {
+  nlohmann::json half = {{"name", "pass3d"},
+                         {"dimension", 3},
+                         {"process",
+                          {{"type", "rolling"},
+                           {"slab_nx", 16},
+                           {"slab_nw", 2},
+                           {"slab_nt", 2},
+                           {"roll", "rigid"},
+                           {"roll_n_around", 48},
+                           {"roll_n_axial", 2},
+                           {"travel", 2.0},
+                           {"travel_increment", 1.0}}},
+                         {"solver", {{"mode", "mixed"}, {"cg_tolerance", 1e-10}}}};
+  nlohmann::json whole = half;
+  whole["process"]["width_symmetry"] = false;
+  const Results h = testing_support::run_json(half), w = testing_support::run_json(whole);
+  ASSERT_TRUE(h.status.ok()) << h.status.message;
+  ASSERT_TRUE(w.status.ok()) << w.status.message;
+  ASSERT_TRUE(h.rolling && w.rolling);
+  const RollingIncrement &a = h.rolling->increments.back(), &b = w.rolling->increments.back();
+  EXPECT_GT(a.roll_force, 0.0);
+  EXPECT_NEAR(b.roll_force, a.roll_force, 1e-6 * a.roll_force);
+  EXPECT_NEAR(b.roll_torque, a.roll_torque, 1e-6 * std::abs(a.roll_torque));
+  EXPECT_NEAR(b.contact_length, a.contact_length, 1e-6 * a.contact_length);
+  EXPECT_NEAR(b.spread, a.spread, 1e-6 * 350);
+}

@@ -207,3 +207,29 @@ TEST(RollingProcess, BadGradingIsRefusedNamingTheField) {
   EXPECT_NE(spread.find("process.grading: 2 over 48 elements"), std::string::npos) << spread;
   EXPECT_EQ(spread.find("bodies["), std::string::npos) << spread;  // not repeated under the generated body
 }
+
+// process.width_symmetry: false models the whole width about y = 0 — twice the slab's and the roll's elements across
+// it, no symmetry plane at y = 0 but the slab's centre line (y = 0 on its mid-plane) held sideways — and the pass's
+// measures then count the model once instead of twice.
+TEST(RollingProcess, WholeWidthMirrorsSlabAndRollAndHoldsTheCentreLine) {
+  const json small = {{"slab_nx", 4}, {"slab_nw", 2}, {"slab_nt", 2}, {"roll_n_axial", 2}, {"roll_n_around", 48}};
+  json whole_spec = small;
+  whole_spec["width_symmetry"] = false;
+  const Model half = rolling(3, small), whole = rolling(3, whole_spec);
+  for (size_t b = 0; b < 2; ++b)
+    EXPECT_EQ(whole.bodies[b].mesh.num_elements(), 2 * half.bodies[b].mesh.num_elements()) << b;
+  double lo = 1e300, hi = -1e300;
+  for (const auto& x : whole.bodies[0].mesh.nodes) lo = std::min(lo, x[1]), hi = std::max(hi, x[1]);
+  EXPECT_NEAR(lo, -175.0, 1e-9);
+  EXPECT_NEAR(hi, 175.0, 1e-9);
+  const std::vector<int>& line = whole.bodies[0].mesh.node_sets.at("centre_line");
+  EXPECT_EQ(line.size(), 5u);  // slab_nx + 1 nodes at y = 0, z = 0
+  for (int n : line) {
+    EXPECT_NEAR(whole.bodies[0].mesh.nodes[static_cast<size_t>(n)][1], 0.0, 1e-9);
+    EXPECT_NEAR(whole.bodies[0].mesh.nodes[static_cast<size_t>(n)][2], 0.0, 1e-9);
+  }
+  ASSERT_TRUE(half.rolling && whole.rolling);
+  EXPECT_TRUE(half.rolling->half_width);
+  EXPECT_FALSE(whole.rolling->half_width);
+  EXPECT_FALSE(rolling(2, {{"width_symmetry", false}}).rolling->half_width);  // plane strain has no width
+}
