@@ -8,9 +8,20 @@
 //   a row whose ξ is held (a sticking point's normal and tangential rows, a projection clamped to a vertex):
 //   λ ∂C/∂u = −λ/l D N0ᵀ (normal row) or λ/l Dₙ N0ᵀ (tangential row, Dₙ = [n; −(1 − ξ) n; −ξ n]) — unsymmetric;
 //   its symmetric part is given (an approximation).
-// Every term has a master factor (N0): the slave–slave part is zero, and a rigid master (no free dof) gets nothing.
-// Rows that do not follow the configuration (small sliding, and `large`, whose rows stay fixed through a step's
-// iterations) have a constant C: no term. 3D (node-to-face) is not linearised: no term.
+// Node-to-face in 3D on a bilinear face (Wriggers, §9, node-to-surface; the same choices): slave at (ξ, η),
+// a_α = x_,α, normal n = a_1 × a_2 / |a_1 × a_2|, metric m_αβ = a_α · a_β, curvature h_αβ = n · x_,αβ (bilinear:
+// only h_12 = n · x_,ξη, the face's warp), δr̃ = δx_s − Σ N_k δx_k and δã_α = Σ N_k,α δx_k (ξ held), gap
+// g = n · (x_s − x(ξ, η)),
+//   sliding normal row: λ ∂²g/∂u² = λ [−δξ^α n·Δã_α − n·δã_α Δξ^α − h_αβ δξ^α Δξ^β
+//                                       + g m^αβ (n·δã_α + h_αγ δξ^γ)(n·Δã_β + h_βδ Δξ^δ)],
+//   (m_αβ − g h_αβ) δξ^β = a_α · δr̃ + g n · δã_α — exact and symmetric;
+//   ξ held: normal row λ Δn · δr̃ with Δn = −a^α (n · Δã_α) (a^α = m^αβ a_β); tangential rows (t_1 = a_1/|a_1|,
+//   t_2 = n × t_1) λ Δt_k · δr̃ with Δt_1 = (I − t_1 t_1ᵀ) Δã_1 / |a_1|, Δt_2 = Δn × t_1 + n × Δt_1 — unsymmetric;
+//   the symmetric part is given. A projection clamped to the face's border (|ξ| or |η| = 1) counts as held.
+// In 2D and on a flat face (h = 0) every term has a master factor (N0, n·δã_α): the slave–slave part is zero, and a
+// rigid master (no free dof) gets nothing; on a warped face the normal turns as the slave slides over it, and the
+// terms in h give a slave–slave part too (into the slave's block). Rows that do not follow the configuration (small
+// sliding, and `large`, whose rows stay fixed through a step's iterations) have a constant C: no term.
 #include <Eigen/Dense>
 #include <vector>
 

@@ -364,7 +364,7 @@ const ObjectSchema kContact{
             "analysis) — searched again where each step begins, its Newton iterations keeping that projection "
             "(quadratic convergence), and again wherever the step converged while the projections moved by more "
             "than 1e-8 of the search distance; or at every Newton iteration, the rows' change with the displacement "
-            "then linearised in 2D (analysis.contact_tangent: the contact's geometric stiffness). Where little "
+            "then linearised (analysis.contact_tangent: the contact's geometric stiffness). Where little "
             "slides, small sliding converges fastest (docs/BENCHMARKS-NONLINEAR.md). "
             "The linear analysis always slides small"),
      positive("search_distance", "length",
@@ -469,10 +469,10 @@ const ObjectSchema kAnalysis{
             "stiffness (docs/BENCHMARKS-ROLLING.md: what made `--update always` fail on the rolling pass)"),
      choice("contact_tangent", {"none", "groups", "full"}, "groups",
             "Newton with contact pairs that slide `large_every_iteration`: the contact's geometric stiffness (how the "
-            "rows' normal and projection turn with the displacement, node-to-segment in 2D; 3D: none). groups — the "
-            "terms within one group (the master's own part; the slave–slave part is zero) into its stiffness block, "
-            "every solver; full — also the terms joining slave and master, direct and skyline only; none — the "
-            "rows' change is not linearised (docs/BENCHMARKS-NONLINEAR.md)"),
+            "rows' normal and projection turn with the displacement: node-to-segment in 2D, node-to-face in 3D). "
+            "groups — the terms within one group (the master's own part; the slave's on a warped 3D face) into its "
+            "stiffness block, every solver; full — also the terms joining slave and master, direct and skyline only; "
+            "none — the rows' change is not linearised (docs/BENCHMARKS-NONLINEAR.md)"),
      choice("constant_tangents", {"keep", "refactor"}, "keep",
             "Newton under the selective update: keep — a group whose tangent cannot change (elastic, small strain) is "
             "assembled and factored once; refactor — it is re-evaluated by its residual like any group (to measure "

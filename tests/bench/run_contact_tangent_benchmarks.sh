@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Newton iterations with and without the contact's geometric stiffness (analysis.contact_tangent: none, groups, full)
 # and with the first tangent of a step under `always` (analysis.first_tangent: fresh, converged) -> the tables of
-# docs/BENCHMARKS-NONLINEAR.md ("The contact's geometric stiffness") and docs/BENCHMARKS-ROLLING.md ("Why `always`
-# failed"). Counts, not times: each row is one run; status, where the run ended, steps, cut-backs, Newton iterations,
+# docs/BENCHMARKS-NONLINEAR.md ("The contact's geometric stiffness", its 3D part from sliding3d, cylinder3d and rolling3d)
+# and docs/BENCHMARKS-ROLLING.md ("Why `always` failed"). Counts, not times: each row is one run; status, where the run ended, steps, cut-backs, Newton iterations,
 # factorizations and tangent evaluations per group (summary.json's order) and the contact force.
 #
-# Usage: tests/bench/run_contact_tangent_benchmarks.sh [sliding|cylinder|rolling|rigid] [--rollsim BIN]
+# Usage: tests/bench/run_contact_tangent_benchmarks.sh [sliding|cylinder|rolling|rigid|sliding3d|cylinder3d|rolling3d]
+#        [--rollsim BIN]
 # This script builds nothing. It fails only if a run cannot start.
 set -euo pipefail
 
@@ -16,7 +17,7 @@ PART=${1:-sliding}
 while (($#)); do
   case $1 in
     --rollsim) ROLLSIM=$2; shift 2 ;;
-    -h|--help) sed -n 2,9p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,10p "$0"; exit 0 ;;
     *) echo "run_contact_tangent_benchmarks: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -148,10 +149,71 @@ rigid() {
   done
 }
 
+# 3D: a 1.5 x 1.5 x 1 block pressed 0.02 into a 12 x 3 x 1 base and pushed 5 along it (10 faces) in 20 steps
+# (tests/core/analysis/test_contact_tangent.cpp)
+sliding3d() {
+  python3 - "$WORK/slider3d.json" <<'PY'
+import json, sys
+block = lambda name, mesh: {"name": name, "material": name, "kinematics": "finite", "mesh": mesh}
+p = {"name": "slider3d", "dimension": 3,
+     "materials": [{"name": "base", "E": 1000.0, "nu": 0.3}, {"name": "slider", "E": 2000.0, "nu": 0.3}],
+     "bodies": [block("base", {"type": "block", "nx": 24, "ny": 3, "nz": 1, "lx": 12.0, "ly": 3.0, "lz": 1.0}),
+                block("slider", {"type": "block", "nx": 3, "ny": 2, "nz": 1, "lx": 1.5, "ly": 1.5, "lz": 1.0,
+                                 "origin": [3.25, 0.75, 1.0]})],
+     "contacts": [{"name": "slide", "type": "frictionless", "slave_body": "slider", "slave_surface": "zmin",
+                   "master_body": "base", "master_surface": "zmax", "search_distance": 0.2, "sliding": "large"}],
+     "boundary_conditions": [
+         {"type": "displacement", "body": "base", "set": "zmin", "ux": 0.0, "uy": 0.0, "uz": 0.0},
+         {"type": "displacement", "body": "slider", "set": "zmax", "ux": 5.0, "uy": 0.0, "uz": -0.02}],
+     "analysis": {"type": "newton", "increments": 20, "tolerance": 1e-9},
+     "solver": {"mode": "direct", "cg_tolerance": 1e-10}}
+json.dump(p, open(sys.argv[1], "w"))
+PY
+  header
+  row "large (rows fixed through a step)" "$WORK/slider3d.json" direct always 5
+  for t in none groups full; do
+    edit "$WORK/slider3d.json" "$WORK/s3-$t.json" contacts.0.sliding=large_every_iteration analysis.contact_tangent=$t
+    for mode in direct skyline mixed; do
+      [[ $t == full && $mode == mixed ]] && continue
+      row "every iteration, contact_tangent $t" "$WORK/s3-$t.json" "$mode" always 5
+    done
+  done
+}
+
+# the paper's Example 2 in 3D (quarter model: the base slides over the cylinder's faces) searched at every iteration
+cylinder3d() {
+  header
+  row "small (the sample)" "$ROOT/samples/cylinder-plastic-3d.json" direct always 1
+  for t in none groups full; do
+    edit "$ROOT/samples/cylinder-plastic-3d.json" "$WORK/c3-$t.json" contacts.0.sliding=large_every_iteration \
+      analysis.contact_tangent=$t
+    row "every iteration, contact_tangent $t" "$WORK/c3-$t.json" direct always 1
+    [[ $t == full ]] && continue
+    row "every iteration, contact_tangent $t" "$WORK/c3-$t.json" mixed selective 1
+  done
+}
+
+# the 3D pass (sample rolling-3d-16x8x4) cut down to its first 15 mm of travel, 0.5 mm steps
+rolling3d() {
+  header
+  edit "$ROOT/samples/rolling-3d-16x8x4.json" "$WORK/r3.json" process.travel=15
+  row "large (the sample's)" "$WORK/r3.json" direct always 15
+  for t in none groups full; do
+    edit "$WORK/r3.json" "$WORK/r3-$t.json" process.sliding=large_every_iteration analysis.contact_tangent=$t
+    row "every iteration, contact_tangent $t" "$WORK/r3-$t.json" direct always 15
+    [[ $t == full ]] && continue
+    row "every iteration, contact_tangent $t" "$WORK/r3-$t.json" mixed selective 15
+  done
+}
+
 case $PART in
   sliding) sliding ;;
   cylinder) cylinder ;;
   rolling) rolling ;;
   rigid) rigid ;;
-  *) echo "run_contact_tangent_benchmarks: unknown part $PART (sliding, cylinder, rolling or rigid)" >&2; exit 2 ;;
+  sliding3d) sliding3d ;;
+  cylinder3d) cylinder3d ;;
+  rolling3d) rolling3d ;;
+  *) echo "run_contact_tangent_benchmarks: unknown part $PART (sliding, cylinder, rolling, rigid, sliding3d," \
+       "cylinder3d or rolling3d)" >&2; exit 2 ;;
 esac
