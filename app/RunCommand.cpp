@@ -263,6 +263,7 @@ int run_command(const RunOptions& o) {
                options.cg_tolerance,   options.threads,
                options.preconditioner, options.multipliers,
                options.projector,      blas_description()};
+  info.fields = project.data.at("output").value("fields", std::vector<std::string>{});
   const auto dir = output_dir(project, o);
   std::error_code ec;
   if (writer) std::filesystem::create_directories(dir, ec);
@@ -287,9 +288,9 @@ int run_command(const RunOptions& o) {
   try {
     clear_run_outputs(dir);  // the folder holds this run only: no result.vtu of an earlier run beside a failure
     if (results.status.ok() && project.data.at("output").at("vtu").get<bool>()) {
-      write_vtu(dir / "result.vtu", model, results);
+      write_vtu(dir / "result.vtu", model, results, info.fields);
       if (results.load_increments > 1 && project.data.at("output").value("increments", "all") == "all")
-        write_increment_collection(dir / "results.pvd", model, results);
+        write_increment_collection(dir / "results.pvd", model, results, info.fields);
     }
     if (!results.newton.empty()) write_file_atomically(dir / "convergence.csv", convergence_csv(results));
     if (results.rolling) {

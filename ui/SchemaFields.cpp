@@ -114,6 +114,14 @@ json parse_value_text(const Field& field, const QString& raw) {
         return n.is_null() ? json(text.toStdString()) : n;
       }
       return text.toStdString();
+    case Kind::ChoiceList: {  // "displacement, plastic_strain" (or with brackets) → an array of the names
+      QString inner = text;
+      if (inner.startsWith('[') && inner.endsWith(']')) inner = inner.mid(1, inner.size() - 2);
+      json out = json::array();
+      for (const QString& part : inner.split(QRegularExpression(QStringLiteral("[,;\\s\"]+")), Qt::SkipEmptyParts))
+        out.push_back(part.toStdString());
+      return out;
+    }
     case Kind::Vector: {
       QString inner = text;
       if (inner.startsWith('[') && inner.endsWith(']')) inner = inner.mid(1, inner.size() - 2);

@@ -30,11 +30,13 @@ vtkNew<vtkIntArray> int_array(const char* name, vtkIdType tuples) {
   return a;
 }
 
-/// One array per registered output field (io/OutputFields), filled body by body; point data also carries body_id.
-void add_results(vtkUnstructuredGrid* grid, const Model& model, const std::vector<BodyResults>& fields) {
+/// One array per registered output field (io/OutputFields) that `selected` names, filled body by body; point data
+/// also carries body_id.
+void add_results(vtkUnstructuredGrid* grid, const Model& model, const std::vector<BodyResults>& fields,
+                 const std::vector<std::string>& selected) {
   const vtkIdType np = model.total_nodes(), nc = model.total_elements();
   for (const OutputField& f : output_fields()) {
-    if (!is_present(f, model)) continue;
+    if (!is_present(f, model) || !is_selected(f, selected)) continue;
     const bool at_nodes = f.location == FieldLocation::Node;
     auto a = array(f.name.c_str(), f.components, at_nodes ? np : nc);
     double v[6];
@@ -64,12 +66,14 @@ void add_results(vtkUnstructuredGrid* grid, const Model& model, const std::vecto
 
 }  // namespace
 
-vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const Results* results) {
+vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const Results* results,
+                                                     const std::vector<std::string>& selected) {
   static const std::vector<BodyResults> none;
-  return make_model_grid(model, results ? results->bodies : none);
+  return make_model_grid(model, results ? results->bodies : none, selected);
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const std::vector<BodyResults>& fields) {
+vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const std::vector<BodyResults>& fields,
+                                                     const std::vector<std::string>& selected) {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -95,7 +99,7 @@ vtkSmartPointer<vtkUnstructuredGrid> make_model_grid(const Model& model, const s
   grid->SetPoints(points);
   grid->GetCellData()->AddArray(body_id);
   grid->GetCellData()->AddArray(subdomain_id);
-  if (!fields.empty() && fields.size() == model.bodies.size()) add_results(grid, model, fields);
+  if (!fields.empty() && fields.size() == model.bodies.size()) add_results(grid, model, fields, selected);
   return grid;
 }
 

@@ -34,7 +34,8 @@ std::string xml_attribute(const std::string& text) {
 }  // namespace
 
 std::vector<std::filesystem::path> write_increment_collection(const std::filesystem::path& pvd, const Model& model,
-                                                              const Results& results) {
+                                                              const Results& results,
+                                                              const std::vector<std::string>& selected) {
   const std::string stem = pvd.stem().string();
   std::vector<std::filesystem::path> files;
   std::string xml =
@@ -45,7 +46,7 @@ std::vector<std::filesystem::path> write_increment_collection(const std::filesys
     char name[32];
     std::snprintf(name, sizeof name, "_%04zu.vtu", i + 1);
     const std::filesystem::path file = pvd.parent_path() / (stem + name);
-    write_vtu(file, model, results.increments[i].bodies);
+    write_vtu(file, model, results.increments[i].bodies, selected);
     files.push_back(file);
     char step[40];
     std::snprintf(step, sizeof step, "%.17g", results.increments[i].load_factor);

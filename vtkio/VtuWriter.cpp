@@ -30,12 +30,14 @@ void write(const std::filesystem::path& file, vtkUnstructuredGrid* grid) {
 
 }  // namespace
 
-void write_vtu(const std::filesystem::path& file, const Model& model, const Results& results) {
-  write(file, make_model_grid(model, &results));
+void write_vtu(const std::filesystem::path& file, const Model& model, const Results& results,
+               const std::vector<std::string>& selected) {
+  write(file, make_model_grid(model, &results, selected));
 }
 
-void write_vtu(const std::filesystem::path& file, const Model& model, const std::vector<BodyResults>& fields) {
-  write(file, make_model_grid(model, fields));
+void write_vtu(const std::filesystem::path& file, const Model& model, const std::vector<BodyResults>& fields,
+               const std::vector<std::string>& selected) {
+  write(file, make_model_grid(model, fields, selected));
 }
 
 void write_mesh_vtu(const std::filesystem::path& file, const Model& model) { write(file, make_model_grid(model)); }

@@ -2,6 +2,8 @@
 // The one adapter between core results and VTK: writes a model and its results as a VTK XML
 // unstructured grid (.vtu) that ParaView opens. No VTK header appears here.
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "analysis/Results.h"
 #include "model/Model.h"
@@ -9,11 +11,14 @@
 namespace rollsim {
 
 /// Point data: displacement, stress (nodal average), von_mises, body_id;
-/// cell data: stress (element mean), von_mises, body_id, subdomain_id. Written atomically.
-void write_vtu(const std::filesystem::path& file, const Model& model, const Results& results);
+/// cell data: stress (element mean), von_mises, body_id, subdomain_id — of the output fields, those `selected` names
+/// (output.fields; empty: every one). Written atomically.
+void write_vtu(const std::filesystem::path& file, const Model& model, const Results& results,
+               const std::vector<std::string>& selected = {});
 
 /// The same arrays for one state's fields, e.g. a load increment's (Results::increments[i].bodies).
-void write_vtu(const std::filesystem::path& file, const Model& model, const std::vector<BodyResults>& fields);
+void write_vtu(const std::filesystem::path& file, const Model& model, const std::vector<BodyResults>& fields,
+               const std::vector<std::string>& selected = {});
 
 /// Mesh only (no results): body_id and subdomain_id per cell.
 void write_mesh_vtu(const std::filesystem::path& file, const Model& model);

@@ -64,6 +64,18 @@ const std::vector<OutputField>& output_fields() {
 
 bool is_present(const OutputField& field, const Model& model) { return !field.present || field.present(model); }
 
+std::vector<std::string> output_field_names() {
+  std::vector<std::string> names;
+  for (const OutputField& f : output_fields())
+    if (std::find(names.begin(), names.end(), f.name) == names.end()) names.push_back(f.name);
+  return names;
+}
+
+bool is_selected(const OutputField& field, const std::vector<std::string>& names) {
+  return names.empty() || std::find(names.begin(), names.end(), kAllFields) != names.end() ||
+         std::find(names.begin(), names.end(), field.name) != names.end();
+}
+
 const char* to_string(FieldLocation location) { return location == FieldLocation::Node ? "node" : "cell"; }
 
 }  // namespace rollsim

@@ -33,6 +33,16 @@ const std::vector<OutputField>& output_fields();
 /// Whether the results of `model` carry `field`.
 bool is_present(const OutputField& field, const Model& model);
 
+/// The distinct names of output_fields(), in order (a name may be a point and a cell array: stress, von_mises).
+std::vector<std::string> output_field_names();
+
+/// In output.fields: every field (the default, and what an empty selection means).
+inline constexpr const char* kAllFields = "all";
+
+/// Whether output.fields' `names` select `field`: its name is among them (its point and its cell array alike), or
+/// `all` is, or there are none.
+bool is_selected(const OutputField& field, const std::vector<std::string>& names);
+
 /// "node" or "cell".
 const char* to_string(FieldLocation location);
 

@@ -218,7 +218,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   if (r.rolling) s["results"]["rolling"] = rolling_section(model, *r.rolling);
   s["fields"] = json::array();  // what result.vtu holds, from the output registry
   for (const OutputField& f : output_fields())
-    if (is_present(f, model))
+    if (is_present(f, model) && is_selected(f, run.fields))
       s["fields"].push_back(
           {{"name", f.name}, {"location", to_string(f.location)}, {"components", f.components}, {"unit", f.unit}});
   return s;

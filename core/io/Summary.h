@@ -2,6 +2,7 @@
 // summary.json: status, model counts, solver statistics, timings and key results of a run.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "analysis/Results.h"
 #include "model/Model.h"
@@ -20,6 +21,7 @@ struct RunInfo {
   // DGEMM's rate on this machine with the factorizations' thread count (solve/DgemmPeak.h; 0: not measured) and
   // what measuring it cost
   double dgemm_peak_gflops = 0, peak_probe_s = 0;
+  std::vector<std::string> fields = {};  // output.fields: the arrays result.vtu holds (empty: every one)
 };
 
 nlohmann::json make_summary(const Model& model, const Results& results, const RunInfo& run);

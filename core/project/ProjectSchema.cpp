@@ -1,6 +1,7 @@
 // Declaration of every project field: name, type, range, default, unit, documentation.
 #include "project/ProjectSchema.h"
 
+#include "io/OutputFields.h"
 #include "project/RollingProcess.h"
 #include "project/RunProject.h"
 #include "solve/SolverStrategy.h"
@@ -512,7 +513,21 @@ const ObjectSchema kOutput{"output",
                                 true),
                             choice("increments", {"all", "last"}, "all",
                                    "with analysis.increments > 1: all — results.pvd and one VTU per increment beside "
-                                   "result.vtu; last — result.vtu only")},
+                                   "result.vtu; last — result.vtu only"),
+                            [] {
+                              Field f;
+                              f.name = "fields";
+                              f.kind = Kind::ChoiceList;
+                              f.choices = output_field_names();
+                              f.choices.insert(f.choices.begin(), kAllFields);
+                              f.default_value = json::array({kAllFields});
+                              f.min_items = 1;
+                              f.doc =
+                                  "the field arrays written to result.vtu and the increments' VTUs: all, or the names "
+                                  "to write (a name writes its point and its cell array; body_id and subdomain_id are "
+                                  "always written; a field the model does not carry is not written)";
+                              return f;
+                            }()},
                            "",
                            {}};
 

@@ -116,6 +116,24 @@ void check_choice(const json& v, const Field& f, const std::string& path, std::v
   out.push_back({path, "must be one of " + list + ", got " + describe(v)});
 }
 
+void check_choice_list(const json& v, const Field& f, const std::string& path, std::vector<Issue>& out) {
+  std::string list;
+  for (const auto& c : f.choices) list += (list.empty() ? "" : ", ") + c;
+  if (!v.is_array() || v.size() < f.min_items) {
+    out.push_back({path, "must be an array of " +
+                             (f.min_items > 0 ? "at least " + std::to_string(f.min_items) + " " : "") + "of: " + list +
+                             "; got " + describe(v)});
+    return;
+  }
+  std::set<std::string> seen;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const std::string p = path + "[" + std::to_string(i) + "]";
+    check_choice(v[i], f, p, out);
+    if (v[i].is_string() && !seen.insert(v[i].get<std::string>()).second)
+      out.push_back({p, "names " + describe(v[i]) + " a second time"});
+  }
+}
+
 void check_vector(const json& v, const Field& f, const std::string& path, int dim, std::vector<Issue>& out) {
   const bool any = f.vector_size < 0;
   const size_t n = any ? (v.is_array() ? v.size() : 0) : f.vector_size ? f.vector_size : static_cast<size_t>(dim);
@@ -134,6 +152,9 @@ void check_field(json& v, const Field& f, const std::string& path, int dim, std:
   switch (f.kind) {
     case Kind::Choice:
       check_choice(v, f, path, out);
+      return;
+    case Kind::ChoiceList:
+      check_choice_list(v, f, path, out);
       return;
     case Kind::Vector:
       check_vector(v, f, path, dim, out);
@@ -226,6 +247,11 @@ std::string type_text(const Field& f) {
       for (const auto& c : f.choices) s += (s.empty() ? "" : " \\| ") + ("`" + c + "`");
       for (int c : f.int_choices) s += (s.empty() ? "" : " \\| ") + ("`" + std::to_string(c) + "`");
       return s;
+    }
+    case Kind::ChoiceList: {
+      std::string s;
+      for (const auto& c : f.choices) s += (s.empty() ? "" : " \\| ") + ("`" + c + "`");
+      return "array of " + s;
     }
     case Kind::Vector:
       return f.vector_size < 0 ? "array of numbers"

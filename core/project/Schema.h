@@ -17,6 +17,7 @@ enum class Kind {
   String,   // non-empty string
   Boolean,
   Choice,       // one of `choices` (strings), or of `int_choices`
+  ChoiceList,   // array of at least `min_items` distinct strings, each one of `choices`
   Vector,       // array of `dimension` finite numbers (a point or direction)
   Object,       // nested object described by `object`
   ObjectArray,  // array of objects described by `object`

@@ -5,13 +5,16 @@
 // are no Dirichlet rows to zero and PCBDDCSetDirichletBoundaries has nothing to mark. The global numbering comes
 // from the glue rows B_i themselves: the copies of a dof that the rows join are one global dof, numbered in the
 // lowest group that has it — which is the rank that owns it, so each rank's owned dofs are one contiguous range.
+//
+// This file is the module rollsim_petsc.so, not part of rollsim_core: the only code that links PETSc and MPI. Its one
+// exported symbol, rollsim_petsc_module(), hands PetscLoader.cpp the table of PetscModule.h.
 #include <petscksp.h>
 
 #include <Eigen/IterativeLinearSolvers>
 #include <numeric>
 #include <stdexcept>
 
-#include "solve/PetscStrategy.h"
+#include "solve/PetscModule.h"
 #include "solve/Stopwatch.h"
 
 namespace rollsim {
@@ -19,6 +22,32 @@ namespace rollsim {
 namespace {
 
 bool started_here = false;
+
+/// Starts PETSc and MPI once (start_processes of PetscStrategy.h).
+void start_petsc() {
+  PetscBool up = PETSC_FALSE;
+  PetscInitialized(&up);
+  if (up) return;
+  if (static_cast<int>(PetscInitializeNoArguments()) != 0)
+    throw std::invalid_argument("petsc: PetscInitializeNoArguments failed (MPI or PETSc could not start)");
+  started_here = true;
+}
+
+/// This process's MPI rank, 0 before PETSc starts (process_rank).
+int mpi_rank() {
+  PetscBool up = PETSC_FALSE;
+  PetscInitialized(&up);
+  if (!up) return 0;
+  int r = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &r);
+  return r;
+}
+
+/// Ends PETSc and MPI when start_petsc() started them (finish_processes).
+void finish_petsc() {
+  if (started_here) PetscFinalize();
+  started_here = false;
+}
 
 void check(PetscErrorCode code, const char* call) {
   if (static_cast<int>(code) != 0)
@@ -202,11 +231,7 @@ std::string unused_options() {
 
 class PetscStrategy final : public SolverStrategy {
  public:
-  explicit PetscStrategy(SolverOptions options) : options_(std::move(options)) {
-    if (options_.petsc_method != "bddc" && options_.petsc_method != "fetidp")
-      throw std::invalid_argument("petsc: the method must be " + one_of(petsc_method_names()) + ", got '" +
-                                  options_.petsc_method + "'");
-  }
+  explicit PetscStrategy(SolverOptions options) : options_(std::move(options)) {}  // the loader checked the method
   ~PetscStrategy() override { release(); }
   PetscStrategy(const PetscStrategy&) = delete;
   PetscStrategy& operator=(const PetscStrategy&) = delete;
@@ -217,10 +242,10 @@ class PetscStrategy final : public SolverStrategy {
   double multiplier_tolerance() const override { return options_.cg_tolerance; }
   const SolverOptions& options() const override { return options_; }
   std::vector<size_t> local_groups(std::vector<size_t> groups) const override {
-    start_processes();
+    start_petsc();
     std::vector<size_t> mine;
     for (size_t g : groups)
-      if (g == static_cast<size_t>(process_rank())) mine.push_back(g);
+      if (g == static_cast<size_t>(mpi_rank())) mine.push_back(g);
     return mine;
   }
   std::string contact_refusal() const override {
@@ -274,7 +299,7 @@ std::string PetscStrategy::check_system(const BlockSystem& sys) const {
   for (const Group& g : sys.groups)
     if (g.geometry.x.rows() != g.C.cols() || g.geometry.modes.rows() != g.C.cols())
       return "petsc: group '" + g.name + "' has no dof geometry (coordinates, rigid modes) to hand to PETSc";
-  const Group& own = sys.groups[static_cast<size_t>(process_rank())];
+  const Group& own = sys.groups[static_cast<size_t>(mpi_rank())];
   if (own.K.rows() != own.C.cols()) return "petsc: the stiffness of group '" + own.name + "' was not assembled";
   return "";
 }
@@ -282,7 +307,7 @@ std::string PetscStrategy::check_system(const BlockSystem& sys) const {
 void PetscStrategy::set_up(const BlockSystem& sys) {
   release();
   const MPI_Comm comm = PETSC_COMM_WORLD;
-  const size_t rank = static_cast<size_t>(process_rank());
+  const size_t rank = static_cast<size_t>(mpi_rank());
   const Group& own = sys.groups[rank];
   const int dim = static_cast<int>(own.geometry.x.cols());
   num_ = number_dofs(sys, dim);
@@ -375,10 +400,10 @@ void PetscStrategy::set_up(const BlockSystem& sys) {
 }
 
 BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
-  start_processes();
+  start_petsc();
   ++stats_.solves;
   refuse_together(check_system(sys));
-  const size_t rank = static_cast<size_t>(process_rank());
+  const size_t rank = static_cast<size_t>(mpi_rank());
   const Group& own = sys.groups[rank];
   if (!options_checked_ && !options_.petsc_options.empty())
     ROLLSIM_PETSC(PetscOptionsInsertString(nullptr, options_.petsc_options.c_str()));
@@ -447,34 +472,14 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   return sol;
 }
 
+std::unique_ptr<SolverStrategy> make(const SolverOptions& options) { return std::make_unique<PetscStrategy>(options); }
+
 }  // namespace
 
-bool petsc_available() { return true; }
-
-std::unique_ptr<SolverStrategy> make_petsc_strategy(const SolverOptions& options) {
-  return std::make_unique<PetscStrategy>(options);
-}
-
-void start_processes() {
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (up) return;
-  ROLLSIM_PETSC(PetscInitializeNoArguments());
-  started_here = true;
-}
-
-int process_rank() {
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (!up) return 0;
-  int rank = 0;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  return rank;
-}
-
-void finish_processes() {
-  if (started_here) PetscFinalize();
-  started_here = false;
-}
-
 }  // namespace rollsim
+
+extern "C" __attribute__((visibility("default"))) const rollsim::PetscModule* rollsim_petsc_module() {
+  static const rollsim::PetscModule module{rollsim::kPetscModuleAbi, &rollsim::make, &rollsim::start_petsc,
+                                           &rollsim::mpi_rank, &rollsim::finish_petsc};
+  return &module;
+}

@@ -3,7 +3,9 @@
 // 2 and 4 ranks takes `direct`'s Newton iterations per increment (±1) to its displacements and reactions, and a load
 // beyond the limit ends `diverged` on every rank; bad input — an option PETSc does not use, a rank count that is not
 // the partition's, no mpirun (linear and Newton projects alike), contact, an unknown method — exits 2 on every rank
-// with a message. Without PETSc in the build, `--solver petsc` exits 2 saying how to build it.
+// with a message. PETSc is a module the binary loads when `petsc` is chosen: other commands and modes never map it, and
+// a module that cannot be loaded exits 2 naming the file, on every rank. Without PETSc in the build, `--solver petsc`
+// exits 2 saying how to build it.
 #include <gtest/gtest.h>
 #include <stdlib.h>
 #include <vtkDataArray.h>
@@ -236,6 +238,56 @@ TEST(PetscRun, ContactIsNotYetSupported) {
                                                                                                   << r.err;
     EXPECT_NE(r.err.find(kind), std::string::npos) << sample << "\n" << r.err;
   }
+}
+
+/// Sets an environment variable for the processes spawned in its scope (unset again after).
+struct ScopedEnv {
+  ScopedEnv(const char* name, const std::string& value) : name_(name) { setenv(name, value.c_str(), 1); }
+  ~ScopedEnv() { unsetenv(name_); }
+  const char* name_;
+};
+
+// The dynamic loader's own account (LD_DEBUG=files lists every object it maps): neither `--version`, `check` nor a
+// `direct` run maps PETSc; a `petsc` run maps the module and, through it, libpetsc.
+TEST(PetscRun, TheModuleIsMappedOnlyWhenPetscIsChosen) {
+  const std::string dir = make_temp_dir("petsc-lazy");
+  const std::string file = small_sample(dir, "cantilever-2d-120x120.json", {8, 8});
+  const ScopedEnv debug("LD_DEBUG", "files");
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"--version"}, {"check", file}, {"run", file, "--solver", "direct", "--out", dir + "/direct", "--quiet"}}) {
+    const auto r = run_rollsim(args);
+    EXPECT_EQ(r.exit_code, 0) << args[0] << "\n" << r.err;
+    EXPECT_EQ(r.err.find("libpetsc"), std::string::npos) << args[0];
+    EXPECT_EQ(r.err.find("rollsim_petsc.so"), std::string::npos) << args[0];
+  }
+  const auto r =
+      run_rollsim({"run", file, "--solver", "petsc", "--partition", "1x1", "--out", dir + "/petsc", "--quiet"});
+  EXPECT_EQ(r.exit_code, 0) << r.err.substr(r.err.size() > 4000 ? r.err.size() - 4000 : 0);
+  EXPECT_NE(r.err.find("rollsim_petsc.so"), std::string::npos);
+  EXPECT_NE(r.err.find("libpetsc"), std::string::npos);
+}
+
+// A module that is missing, is not a library, or lacks the entry point: exit 2 naming the file and dlerror()'s
+// reason; under mpirun every rank refuses before MPI starts, none is left hanging.
+TEST(PetscRun, AModuleThatCannotBeLoadedIsRefusedNamingTheFile) {
+  const std::string dir = make_temp_dir("petsc-module");
+  const std::string file = small_sample(dir, "cantilever-2d-120x120.json", {8, 8});
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {dir + "/missing/rollsim_petsc.so", "No such file"},
+      {file, "cannot load its module " + file},  // a JSON file: not a shared object
+      {"libm.so.6", "no entry point rollsim_petsc_module"}};
+  for (const auto& [module, words] : cases) {
+    const ScopedEnv env("ROLLSIM_PETSC_MODULE", module);
+    const auto r = run_rollsim({"run", file, "--solver", "petsc", "--partition", "1x1", "--out", dir + "/out"});
+    EXPECT_EQ(r.exit_code, 2) << module << "\n" << r.err;
+    EXPECT_NE(r.err.find("cannot load its module " + module), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+  }
+  const ScopedEnv env("ROLLSIM_PETSC_MODULE", dir + "/missing/rollsim_petsc.so");
+  const auto r = mpirun(2, {"run", file, "--solver", "petsc", "--partition", "2x1", "--out", dir + "/out"});
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("cannot load its module"), std::string::npos) << r.err;
 }
 
 TEST(PetscRun, RefusesAnUnknownMethod) {

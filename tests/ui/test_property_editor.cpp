@@ -160,6 +160,13 @@ class TestPropertyEditor : public QObject {
     QCOMPARE(parse_value_text(num, QStringLiteral("")), json());
     QCOMPARE(parse_value_text(num, QStringLiteral("1e-3")), json(1e-3));
     QCOMPARE(issue_path("/bodies/0/mesh/nx"), std::string("bodies[0].mesh.nx"));
+    Field names;  // output.fields: the names as typed become an array, and show as typed
+    names.kind = Kind::ChoiceList;
+    QCOMPARE(parse_value_text(names, QStringLiteral("displacement, plastic_strain")),
+             json::parse(R"(["displacement", "plastic_strain"])"));
+    QCOMPARE(parse_value_text(names, QStringLiteral("[\"stress\"]")), json::parse(R"(["stress"])"));
+    QCOMPARE(value_text(json::parse(R"(["displacement", "plastic_strain"])")),
+             QStringLiteral("displacement, plastic_strain"));
   }
 };
 

@@ -1,6 +1,6 @@
 // make_model_grid (the grid of result.vtu and of the window's view): with results of a model that has contact pairs,
 // a point array contact_pressure holding every body's nodal pressure (0 off the slave surfaces); none without
-// contact pairs or without results.
+// contact pairs or without results; with a selection (output.fields), exactly the selected arrays.
 #include <gtest/gtest.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -8,6 +8,8 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <filesystem>
+#include <set>
+#include <string>
 
 #include "ModelGrid.h"
 #include "analysis/LinearStatic.h"
@@ -79,4 +81,31 @@ TEST(ModelGrid, OneArrayPerRegisteredOutputField) {
     ++checked;
   }
   EXPECT_EQ(checked, 9);
+}
+
+/// The names of the arrays of `data`, sorted.
+std::set<std::string> array_names(vtkDataSetAttributes* data) {
+  std::set<std::string> names;
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i) names.insert(data->GetArrayName(i));
+  return names;
+}
+
+// output.fields: a name selects its point and its cell array; body_id and subdomain_id are always there; `all` and
+// no selection give every field.
+TEST(ModelGrid, WritesExactlyTheSelectedFields) {
+  const Model model = sample("cylinder-indent-2d.json");
+  auto solver = make_solver("direct", {});
+  const Results res = run_linear_static(model, *solver);
+  using Names = std::set<std::string>;
+  auto grid = make_model_grid(model, &res, {"von_mises", "contact_pressure"});
+  EXPECT_EQ(array_names(grid->GetPointData()), (Names{"body_id", "contact_pressure", "von_mises"}));
+  EXPECT_EQ(array_names(grid->GetCellData()), (Names{"body_id", "subdomain_id", "von_mises"}));
+  grid = make_model_grid(model, &res, {"displacement"});
+  EXPECT_EQ(array_names(grid->GetPointData()), (Names{"body_id", "displacement"}));
+  EXPECT_EQ(array_names(grid->GetCellData()), (Names{"body_id", "subdomain_id"}));
+  EXPECT_NE(grid->GetPointData()->GetVectors(), nullptr) << "displacement stays the active vectors";
+  const auto all = make_model_grid(model, &res, {"all"}), none = make_model_grid(model, &res);
+  EXPECT_EQ(array_names(all->GetPointData()), array_names(none->GetPointData()));
+  EXPECT_EQ(array_names(all->GetCellData()), array_names(none->GetCellData()));
+  EXPECT_EQ(array_names(none->GetPointData()).size(), 7u);  // 6 fields with contact pairs, and body_id
 }

@@ -1,0 +1,85 @@
+// The `petsc` strategy in a build with PETSc (ROLLSIM_WITH_PETSC): its code is the module rollsim_petsc.so
+// (PetscStrategy.cpp, the only code that links PETSc and MPI), loaded here the first time a run chooses `petsc`.
+// Every other command and solver mode runs without mapping PETSc and its MPI stack (docs/BENCHMARKS-AUTO.md,
+// start-up). A module that cannot be loaded is invalid input for that run: a message naming the file and why.
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <mutex>
+#include <stdexcept>
+
+#include "solve/PetscModule.h"
+#include "solve/PetscStrategy.h"
+
+namespace rollsim {
+
+namespace {
+
+std::mutex load_mutex;
+std::atomic<const PetscModule*> loaded{nullptr};  // never unloaded: strategies and PETSc live to the process's end
+
+std::invalid_argument load_error(const std::filesystem::path& file, const std::string& why) {
+  return std::invalid_argument("solver 'petsc': cannot load its module " + file.string() + ": " + why +
+                               " (it is built beside the rollsim binary with -DROLLSIM_WITH_PETSC=ON; " +
+                               kPetscModuleEnv + " names another path)");
+}
+
+const PetscModule& load() {
+  std::lock_guard lock(load_mutex);
+  if (const PetscModule* m = loaded.load()) return *m;
+  const std::filesystem::path file = petsc_module_path();
+  // RTLD_GLOBAL: MPI_Init dlopens Open MPI's own components, which look MPI's symbols up in the global scope
+  // (open-mpi/ompi#3705); RTLD_NOW: a missing symbol is this message, not a crash in the middle of a run
+  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_GLOBAL);
+  if (!handle) throw load_error(file, dlerror());
+  using Entry = const PetscModule* (*)();
+  const auto entry = reinterpret_cast<Entry>(dlsym(handle, kPetscModuleEntry));
+  if (!entry) {
+    const std::string why = dlerror();
+    dlclose(handle);
+    throw load_error(file, "no entry point " + std::string(kPetscModuleEntry) + " (" + why + ")");
+  }
+  const PetscModule* module = entry();
+  if (!module || module->abi != kPetscModuleAbi) {
+    dlclose(handle);
+    throw load_error(file, "it was built by another rollsim (module interface " +
+                               std::to_string(module ? module->abi : -1) + ", this binary's " +
+                               std::to_string(kPetscModuleAbi) + "): rebuild both together");
+  }
+  loaded = module;
+  return *module;
+}
+
+}  // namespace
+
+std::filesystem::path petsc_module_path() {
+  if (const char* env = std::getenv(kPetscModuleEnv); env && *env) return env;
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::path(kPetscModuleFile) : exe.parent_path() / kPetscModuleFile;
+}
+
+bool petsc_available() { return true; }
+
+std::unique_ptr<SolverStrategy> make_petsc_strategy(const SolverOptions& options) {
+  const auto& methods = petsc_method_names();
+  if (std::find(methods.begin(), methods.end(), options.petsc_method) == methods.end())
+    throw std::invalid_argument("petsc: the method must be " + one_of(methods) + ", got '" + options.petsc_method +
+                                "'");
+  return load().make_strategy(options);
+}
+
+void start_processes() { load().start(); }
+
+int process_rank() {
+  const PetscModule* m = loaded.load();
+  return m ? m->rank() : 0;  // no module loaded: PETSc and MPI were never started here
+}
+
+void finish_processes() {
+  if (const PetscModule* m = loaded.load()) m->finish();
+}
+
+}  // namespace rollsim
