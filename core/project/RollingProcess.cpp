@@ -35,8 +35,7 @@ const ObjectSchema& rolling_process_schema() {
       "rolling process",
       "A flat-rolling pass. Generates bodies `slab` (J2-plastic, finite strain, F-bar) and `roll` (elastic, finite "
       "strain), their materials, the contact `roll-slab` (slave: the slab's top, master: the roll's surface; large "
-      "sliding) and the conditions: slab mid-plane symmetry (and width symmetry y = 0 in 3D, of the slab and the "
-      "elastic roll) and the roll's hub "
+      "sliding) and the conditions: slab mid-plane symmetry (and width symmetry y = 0 in 3D) and the roll's hub "
       "turned as a rigid body about the roll's axis, so that its surface travels `travel` in increments of "
       "`travel_increment` (they set analysis.increments). Entry: the slab starts pre-bitten — its front end lies at "
       "the exit plane with its top cut to the roll's surface over the arc of contact, touching the roll along the "
@@ -298,9 +297,6 @@ json expand_process(const json& project) {
     // the whole width: the centre line (y = 0 on the mid-plane) holds the slab's sideways motion and yaw
     bcs.push_back(
         {{"type", "symmetry"}, {"body", "slab"}, {"set", half_width(p) ? "ymin" : "centre_line"}, {"normal", "y"}});
-    // the half roll's cut face y = 0 is its symmetry plane too (the hub's rotation about y moves nothing along y)
-    if (half_width(p) && p.at("roll") == "elastic")
-      bcs.push_back({{"type", "symmetry"}, {"body", "roll"}, {"set", "ymin"}, {"normal", "y"}});
   }
   bcs.push_back(hub);
   out["analysis"]["increments"] =
