@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <tuple>
 
 #include "analysis/ConstraintAssembly.h"
@@ -84,6 +85,9 @@ class NewtonRun {
   /// The contact rows at the current iterate; `step_begins`: the pairs that slide large per step are searched again
   /// (in the configuration the step starts from), those that slide per iteration always are.
   void set_constraints(double lf, bool step_begins = false);
+  /// The last solve's λ carried to the rows `keys` (the same point's same component; 0 for a new row), the glue rows
+  /// as they were: where the interface solve starts. Empty when λ belongs to no row set of this size.
+  Eigen::VectorXd multiplier_guess(const std::vector<std::array<int, 3>>& keys, long rows) const;
   /// Residuals (and trial states) of `which`, tangents of `tangent`; empty cause when no element inverted.
   std::string assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                        GroupAssembler::Factors at);
@@ -161,7 +165,20 @@ void NewtonRun::set_constraints(double lf, bool step_begins) {
   for (int r : contact_.kept)
     keys.push_back({rows_[r].pair, pairs_[rows_[r].pair].points[rows_[r].point].slave_node, rows_[r].comp});
   if (keys != row_keys_ || lambda_.size() != sys.num_multipliers()) lambda_valid_ = false;
+  sys.lambda_start = multiplier_guess(keys, sys.num_multipliers());
   row_keys_ = std::move(keys);
+}
+
+Eigen::VectorXd NewtonRun::multiplier_guess(const std::vector<std::array<int, 3>>& keys, long rows) const {
+  const long glue = rows - static_cast<long>(keys.size());  // the subdomains' glue rows follow the contact rows
+  if (lambda_.size() != static_cast<long>(row_keys_.size()) + glue) return {};
+  std::map<std::array<int, 3>, double> last;
+  for (size_t r = 0; r < row_keys_.size(); ++r) last[row_keys_[r]] = lambda_[static_cast<Eigen::Index>(r)];
+  Eigen::VectorXd guess = Eigen::VectorXd::Zero(rows);
+  for (size_t r = 0; r < keys.size(); ++r)
+    if (const auto it = last.find(keys[r]); it != last.end()) guess[static_cast<Eigen::Index>(r)] = it->second;
+  guess.tail(glue) = lambda_.tail(glue);
+  return guess;
 }
 
 std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,

@@ -397,6 +397,11 @@ const ObjectSchema& solver_schema() {
            "metric Q of the rigid-mode projector P = I − QG(GᵀQG)⁻¹Gᵀ of `feti` with a preconditioner: identity "
            "(Q = I, the paper's; always without a preconditioner) or preconditioner (Q = M⁻¹: 15–25 % fewer "
            "iterations, but M⁻¹G costs a preconditioner solve per floating neighbour's mode, once per factorization)"),
+       choice("interface_start", interface_start_names(), "zero",
+              "where the interface CG / GMRES of `mixed` and `feti` starts in a Newton analysis: zero (the least-norm "
+              "λ with Gᵀλ = e, the paper's) or previous (the last iteration's multipliers of the rows that stay, its "
+              "tolerance still relative to the zero start's residual: 27–30 % fewer CG iterations on the 3D pass, "
+              "the roll force within 5e-6 of zero's, docs/BENCHMARKS-ROLLING.md)"),
        choice("petsc_method", petsc_method_names(), "bddc",
               "method of `petsc`: bddc (PCBDDC preconditioning CG on the whole problem) or fetidp (KSPFETIDP: CG on "
               "the FETI-DP multipliers, the inner BDDC's coarse space)"),

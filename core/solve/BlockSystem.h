@@ -62,6 +62,9 @@ struct BlockSystem {
   // `contact_tangent: full`): every group's free dofs one after the other; empty (0 × 0) when none. Only strategies
   // that assemble one global matrix (SolverStrategy::assembles_globally) take it; a change refactors that matrix.
   SparseMatrix coupling;
+  // A guess of λ (the last Newton iteration's multipliers of the rows that stay, 0 for new rows) where iterative
+  // strategies start their interface solve; empty: none (they start from the least-norm λ with Gᵀλ = e).
+  Eigen::VectorXd lambda_start;
 
   long num_dofs() const {
     long n = 0;

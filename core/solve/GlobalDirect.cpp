@@ -21,16 +21,39 @@ void add_block(Triplets& t, const SparseMatrix& A, long row0, long col0, bool tr
     }
 }
 
-/// Paper eq. (1): the groups' K on the diagonal, C and Cᵀ (C_eqᵀ) in the border, multipliers last.
-SparseMatrix global_matrix(const BlockSystem& sys) {
-  const long n = sys.num_dofs(), m = sys.num_multipliers();
+/// The rows `kept` of C, in their order.
+SparseMatrix select_rows(const SparseMatrix& C, const std::vector<int>& kept) {
+  SparseMatrix S(static_cast<int>(kept.size()), static_cast<int>(C.rows()));
+  Triplets t;
+  for (size_t i = 0; i < kept.size(); ++i) t.emplace_back(static_cast<int>(i), kept[i], 1.0);
+  S.setFromTriplets(t.begin(), t.end());
+  return S * C;
+}
+
+/// Every group's C side by side: the multipliers × all dofs.
+SparseMatrix stacked_constraints(const BlockSystem& sys) {
+  Triplets t;
+  long offset = 0;
+  for (const Group& g : sys.groups) {
+    add_block(t, g.C, 0, offset, false);
+    offset += g.C.cols();
+  }
+  SparseMatrix C(static_cast<int>(sys.num_multipliers()), static_cast<int>(offset));
+  C.setFromTriplets(t.begin(), t.end());
+  return C;
+}
+
+/// Paper eq. (1): the groups' K on the diagonal, C and Cᵀ (C_eqᵀ) in the border, multipliers last — only the
+/// independent rows `kept` of C (a dependent row would make the matrix singular).
+SparseMatrix global_matrix(const BlockSystem& sys, const std::vector<int>& kept) {
+  const long n = sys.num_dofs(), m = static_cast<long>(kept.size());
   Triplets t;
   long offset = 0;
   for (const Group& g : sys.groups) {
     add_block(t, g.K, offset, offset, false);
     if (m > 0) {
-      add_block(t, g.C, n, offset, false);
-      add_block(t, g.equation_C(), offset, n, true);  // C_eqᵀ: unsymmetric under slipping Coulomb friction
+      add_block(t, select_rows(g.C, kept), n, offset, false);
+      add_block(t, select_rows(g.equation_C(), kept), offset, n, true);  // C_eqᵀ: unsymmetric under Coulomb slip
     }
     offset += g.K.rows();
   }
@@ -61,6 +84,24 @@ void check_backward_error(const SparseMatrix& A, const Eigen::VectorXd& x, const
     throw SingularMatrix(what, -1);
   }
 }
+
+/// The rows left out as dependent hold too: C_j u = d_j to round-off of its terms. Otherwise they contradict the rows
+/// they depend on (two constraints asking different things of the same dofs) and no solution exists.
+void check_dependent_rows(const BlockSystem& sys, const ConstraintBasis& basis, const std::vector<Eigen::VectorXd>& u) {
+  Eigen::VectorXd Cu = Eigen::VectorXd::Zero(sys.num_multipliers());
+  double scale = sys.d.size() ? sys.d.lpNorm<Eigen::Infinity>() : 0.0;
+  for (size_t g = 0; g < sys.groups.size(); ++g) {
+    Cu += sys.groups[g].C * u[g];
+    scale = std::max(scale, u[g].size() ? u[g].lpNorm<Eigen::Infinity>() : 0.0);
+  }
+  std::vector<char> kept(static_cast<size_t>(sys.num_multipliers()), 0);
+  for (int r : basis.kept) kept[static_cast<size_t>(r)] = 1;
+  for (long r = 0; r < sys.num_multipliers(); ++r)
+    if (!kept[static_cast<size_t>(r)] && !(std::abs(Cu[r] - sys.d[r]) <= 1e-8 * std::max(scale, 1e-300)))
+      throw SingularMatrix("constraint row " + std::to_string(r) +
+                               " depends on other rows and contradicts them (the constraints have no solution)",
+                           -1);
+}
 }  // namespace
 
 GlobalDirect::GlobalDirect(std::string kind) : kind_(std::move(kind)) {}
@@ -83,7 +124,7 @@ bool GlobalDirect::factored(const BlockSystem& sys) const {
 }
 
 void GlobalDirect::factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer) {
-  const long m = sys.num_multipliers();
+  const long m = static_cast<long>(basis_.kept.size());
   if (!factor_ || trailing_ != m || !analyzed_.matches(A)) {  // an active-set swap changes the pattern
     if (factor_) add_times(factor_->stats());                 // a new pattern: keep what the old spent
     factor_ = make_factorization(kind_, static_cast<int>(m));
@@ -113,15 +154,19 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver* obse
                                 " rigid modes held only by contact): use 'direct' or 'mixed'");
   const bool single = sys.groups.size() == 1 && m == 0;
   const bool refactor = !factored(sys);  // the update policy's versions, or constraint rows that changed
-  if (refactor && !single) global_ = global_matrix(sys);
+  if (refactor) {
+    basis_ = independent_rows(stacked_constraints(sys));
+    if (!single) global_ = global_matrix(sys, basis_.kept);
+  }
   const SparseMatrix& A = single ? sys.groups[0].K : global_;
-  Eigen::VectorXd f(n + m);
+  const long k = static_cast<long>(basis_.kept.size());
+  Eigen::VectorXd f(n + k);
   long offset = 0;
   for (const Group& g : sys.groups) {
     f.segment(offset, g.f.size()) = g.f;
     offset += g.f.size();
   }
-  f.tail(m) = sys.d;
+  for (long i = 0; i < k; ++i) f[n + i] = sys.d[basis_.kept[static_cast<size_t>(i)]];
   if (refactor) factorize(sys, A, observer);
   const Eigen::VectorXd x = factor_->solve(f);
   check_backward_error(A, x, f);
@@ -137,7 +182,10 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver* obse
     out.u.push_back(x.segment(offset, g.f.size()));
     offset += g.f.size();
   }
-  out.lambda = x.tail(m);
+  out.lambda = Eigen::VectorXd::Zero(m);  // a dependent row's share of the force goes to the rows it depends on…
+  for (long i = 0; i < k; ++i) out.lambda[basis_.kept[static_cast<size_t>(i)]] = x[n + i];
+  out.lambda = basis_.minimum_norm(out.lambda);  // …then spread as the interface CG spreads it
+  if (!basis_.full_rank()) check_dependent_rows(sys, basis_, out.u);
   if (observer) observer->on_solve_end(solve, 0);
   return out;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // Strategies "skyline" and "direct": one global matrix (groups stacked on the diagonal;
 // constraint rows last once contact exists) factored by a single sparse factorization — again only when a group's
-// version (the update policy) or the constraint rows changed.
+// version (the update policy) or the constraint rows changed. Linearly dependent constraint rows are left out of the
+// matrix (solve/ConstraintBasis) and their multipliers recovered as the least-norm λ with the same forces.
+#include "solve/ConstraintBasis.h"
 #include "solve/SolverStrategy.h"
 #include "solve/SparseCompare.h"
 
@@ -20,6 +22,7 @@ class GlobalDirect final : public SolverStrategy {
   std::string kind_;
   std::unique_ptr<Factorization> factor_;
   SparseMatrix global_;
+  ConstraintBasis basis_;  // the independent constraint rows of the factored matrix (all of them, as a rule)
   void add_times(const FactorStats& s);
   /// True when the factor belongs to `sys`: every group's version and constraint block as when it was made.
   bool factored(const BlockSystem& sys) const;

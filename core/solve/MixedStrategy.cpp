@@ -140,6 +140,7 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   std::vector<Eigen::VectorXd> Kf(sys.groups.size());
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) { Kf[g] = groups_[g].apply(sys.groups[g].f); });
   InterfaceProblem problem = interface_problem(sys, Kf);
+  if (options_.interface_start == "previous") problem.start = sys.lambda_start;
   if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols() && !problem.unsymmetric)
     problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
   ProjectedCGOptions cg{options_.cg_tolerance, 10000, {}, solve};

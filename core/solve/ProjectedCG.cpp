@@ -68,12 +68,19 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
   const double w0 = w.norm();
   // round-off floor: a projected residual this small relative to the data is zero (e.g. λ fully fixed by Gᵀλ = e)
   const double floor = 1e-14 * std::max(r.norm(), p.b.norm());
-  res.residuals.push_back(w0 > floor ? 1.0 : 0.0);
+  if (p.start.size() == p.b.size() && w0 > floor) {  // a guess, moved onto Gᵀλ = e: kept when it is closer
+    Eigen::VectorXd guess = p.start;
+    if (G.cols()) guess += P.start(p.e - G.transpose() * p.start, p.b.size());
+    Eigen::VectorXd rg = p.b - p.F(guess);
+    Eigen::VectorXd wg = P.residual(rg);
+    if (wg.norm() < w0) res.lambda = std::move(guess), r = std::move(rg), w = std::move(wg);
+  }
+  res.residuals.push_back(w0 > floor ? w.norm() / w0 : 0.0);
   res.max_constraint_error = constraint_error(G, p.e, res.lambda, g_max);
   Eigen::VectorXd dir;
   double wy_prev = 0;
   std::vector<double> steps, updates;  // CG's a_k, b_k for the eigenvalue estimate
-  res.converged = w0 <= floor;
+  res.converged = w0 <= floor || res.residuals[0] <= o.tolerance;
   while (!res.converged && res.iterations < o.max_iterations) {
     const Eigen::VectorXd y = P.direction(o.preconditioner ? o.preconditioner(w) : w);
     const double wy = w.dot(y);

@@ -30,6 +30,10 @@ struct InterfaceProblem {
   // empty when it is G
   SparseMatrix Gt;
   bool unsymmetric = false;  // some group's equations take C_eq ≠ C: F is unsymmetric (projected_gmres, not CG)
+  // A guess of λ (the last Newton iteration's): the solve starts there, moved onto Gᵀλ = e, when its projected
+  // residual is below the least-norm start's — which stays the reference of the relative tolerance, so a guess
+  // saves iterations without loosening the answer. Empty: the least-norm start.
+  Eigen::VectorXd start;
 };
 
 struct ProjectedCGOptions {
@@ -58,6 +62,7 @@ struct ProjectedCGResult {
 RunStatus cg_status(const ProjectedCGResult& result, const ProjectedCGOptions& options);
 
 /// Reports every iteration to `observer` (may be null) and stops early when it asks to cancel.
+/// With problem.start, residuals[0] is the guess's residual relative to the least-norm start's (below 1).
 /// Throws SingularMatrix (column −1) when GᵀQG is singular: the constraints do not hold some rigid mode.
 ProjectedCGResult projected_cg(const InterfaceProblem& problem, const ProjectedCGOptions& options,
                                AnalysisObserver* observer = nullptr);

@@ -44,10 +44,17 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
   res.lambda = P.start(p.e, p.b.size());
   Eigen::VectorXd raw = p.b - p.F(res.lambda);
   Eigen::VectorXd r = P.direction(raw);
-  const double r0 = r.norm();
+  const double r0 = r.norm();  // the reference of the relative tolerance, also from a guess (as projected_cg)
   const double floor = 1e-14 * std::max(raw.norm(), p.b.norm());
-  res.residuals.push_back(r0 > floor ? 1.0 : 0.0);
-  res.converged = r0 <= floor;
+  if (p.start.size() == p.b.size() && r0 > floor) {
+    Eigen::VectorXd guess = p.start;
+    if (Gt.cols()) guess += P.start(p.e - Gt.transpose() * p.start, p.b.size());
+    Eigen::VectorXd raw_g = p.b - p.F(guess);
+    Eigen::VectorXd rg = P.direction(raw_g);
+    if (rg.norm() < r0) res.lambda = std::move(guess), raw = std::move(raw_g), r = std::move(rg);
+  }
+  res.residuals.push_back(r0 > floor ? r.norm() / r0 : 0.0);
+  res.converged = r0 <= floor || res.residuals[0] <= o.tolerance;
   while (!res.converged && !res.breakdown && !res.cancelled && res.iterations < o.max_iterations) {
     const double beta = r.norm();
     Hessenberg h(beta);

@@ -47,6 +47,11 @@ const std::vector<std::string>& projector_names() {
   return names;
 }
 
+const std::vector<std::string>& interface_start_names() {
+  static const std::vector<std::string> names{"zero", "previous"};
+  return names;
+}
+
 const std::vector<std::string>& petsc_method_names() {
   static const std::vector<std::string> names{"bddc", "fetidp"};
   return names;

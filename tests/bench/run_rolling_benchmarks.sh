@@ -312,7 +312,7 @@ table16() {
 table17() {
   table3d_header
   project3d t17 24x12x8
-  local variants=("direct - selective" "mixed - selective")
+  local variants=("direct - always" "direct - selective" "mixed - selective")
   for part in 2x1x1 1x2x1 3x1x1 1x3x1 2x2x1 1x4x1 3x2x1 2x3x1 2x4x1 3x3x1 3x4x1; do variants+=("feti $part selective"); done
   for v in "${variants[@]}"; do run3d t17 $v; done
   report3d t17 "$ROOT/tests/bench/paper/t17_rolling3d_dd2.csv" "${variants[@]}"

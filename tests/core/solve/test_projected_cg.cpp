@@ -120,3 +120,26 @@ TEST(ProjectedCG, EigenvalueEstimatesBracketTheOperatorsSpectrum) {
   EXPECT_GE(early.lambda_min, 1.0 - 1e-9);
   EXPECT_LE(early.lambda_max, 40.0 + 1e-9);
 }
+
+// A guess near the solution (the last Newton iteration's λ) is moved onto Gᵀλ = e and saves iterations; the tolerance
+// stays relative to the least-norm start's residual, so the answer is as accurate. A guess farther than that start
+// is not taken.
+TEST(ProjectedCG, StartsFromAGuessWithTheToleranceOfTheLeastNormStart) {
+  InterfaceProblem p = laplacian(200);
+  ProjectedCGOptions o;
+  o.tolerance = 1e-8;
+  const ProjectedCGResult cold = projected_cg(p, o);
+  ASSERT_TRUE(cold.converged);
+  p.start = cold.lambda + 1e-4 * Eigen::VectorXd::LinSpaced(200, 0, 1).array().sin().matrix();  // infeasible
+  const ProjectedCGResult warm = projected_cg(p, o);
+  ASSERT_TRUE(warm.converged);
+  EXPECT_LT(warm.residuals[0], 1e-2);
+  EXPECT_LT(warm.iterations, cold.iterations * 3 / 4);
+  EXPECT_NEAR((p.G.transpose() * warm.lambda)(0), 1.0, 1e-10);
+  EXPECT_LT((warm.lambda - cold.lambda).norm(), 1e-5 * cold.lambda.norm());
+  p.start = Eigen::VectorXd::Constant(200, 1e6);
+  const ProjectedCGResult far = projected_cg(p, o);
+  EXPECT_EQ(far.residuals[0], 1.0);
+  EXPECT_EQ(far.iterations, cold.iterations);
+  EXPECT_EQ(far.lambda, cold.lambda);
+}

@@ -92,3 +92,18 @@ TEST(ProjectedGMRES, OnASymmetricProblemItGivesProjectedCGsAnswer) {
   EXPECT_LT((g.lambda - c.lambda).norm(), 1e-9 * c.lambda.norm());
   EXPECT_LT((g.alpha - c.alpha).norm(), 1e-9 * c.alpha.norm());
 }
+
+TEST(ProjectedGMRES, StartsFromAGuessWithTheToleranceOfTheLeastNormStart) {
+  const Dense d = problem(300, 0.05, false, 2.02);
+  const auto [lambda, alpha] = exact(d);
+  InterfaceProblem p = interface(d);
+  const ProjectedCGOptions o{1e-10, 5000, {}, 1};
+  const ProjectedCGResult cold = projected_gmres(p, o);
+  ASSERT_TRUE(cold.converged);
+  p.start = lambda + 1e-4 * Eigen::VectorXd::LinSpaced(300, 0, 3).array().cos().matrix();  // off G̃ᵀλ = e
+  const ProjectedCGResult warm = projected_gmres(p, o);
+  ASSERT_TRUE(warm.converged);
+  EXPECT_LT(warm.iterations, cold.iterations);
+  EXPECT_LT((d.Gt.transpose() * warm.lambda - d.e).norm(), 1e-10);
+  EXPECT_LT((warm.lambda - lambda).norm(), 1e-7 * lambda.norm());
+}

@@ -1,0 +1,58 @@
+// `direct` on constraint rows that depend on each other (four stick rows holding three roll dofs, as on the 3D pass's
+// symmetry plane, with the round-off terms a tangent leaves on the slave's free dofs): the bordered matrix is singular,
+// an LU of it gave λ of 1e17 and a correction that was no solution. It must give the solution `mixed` gives (whose
+// interface CG tolerates dependent rows) and mixed's least-norm λ; rows that contradict each other are reported.
+#include <gtest/gtest.h>
+
+#include "solve/SolverStrategy.h"
+
+using namespace rollsim;
+
+namespace {
+/// "roll": three dofs on springs, loaded; "slab": two dofs; four rows on the roll's dofs alone (but for round-off
+/// terms on the slab's second dof), one normal row joining both with a gap.
+BlockSystem dependent_rows(double round_off) {
+  Eigen::MatrixXd Kr(3, 3), Ks(2, 2);
+  Kr << 3, -1, 0, -1, 3, -1, 0, -1, 3;
+  Ks << 2, -1, -1, 2;
+  Eigen::MatrixXd Cr(5, 3), Cs = Eigen::MatrixXd::Zero(5, 2);
+  Cr << -0.005, -0.995, 0, -0.67, -0.33, 0, 0, -0.66, -0.34, 0, 0, -1, -1, 0, 0;
+  Cs(0, 1) = round_off, Cs(1, 1) = 0.07 * round_off;
+  Cs(4, 0) = 1;
+  BlockSystem sys;
+  Group roll, slab;
+  roll.name = "roll", slab.name = "slab";
+  roll.K = Kr.sparseView(), slab.K = Ks.sparseView();
+  roll.f = Eigen::Vector3d(1, -2, 0.5), slab.f = Eigen::Vector2d(0.3, 1);
+  roll.C = Cr.sparseView(), slab.C = Cs.sparseView();
+  roll.R.resize(3, 0), slab.R.resize(2, 0);
+  sys.groups = {roll, slab};
+  sys.d = Eigen::VectorXd::Zero(5);
+  sys.d[4] = 0.1;
+  return sys;
+}
+
+void expect_mixed_solution(const BlockSystem& sys) {
+  SolverOptions o;
+  o.cg_tolerance = 1e-13;
+  const BlockSolution mixed = make_solver("mixed", o)->solve(sys);
+  ASSERT_TRUE(mixed.status.ok());
+  const BlockSolution direct = make_solver("direct", {})->solve(sys);
+  for (size_t g = 0; g < 2; ++g) EXPECT_LT((direct.u[g] - mixed.u[g]).norm(), 1e-10) << sys.groups[g].name;
+  EXPECT_LT((direct.lambda - mixed.lambda).norm(), 1e-9 * mixed.lambda.norm());
+}
+}  // namespace
+
+TEST(GlobalDirectDependentRows, GivesMixedsSolutionWithRoundOffTermsInTheRows) {
+  expect_mixed_solution(dependent_rows(7e-18));
+}
+
+TEST(GlobalDirectDependentRows, GivesMixedsSolutionWithExactlyDependentRows) {
+  expect_mixed_solution(dependent_rows(0.0));
+}
+
+TEST(GlobalDirectDependentRows, RowsThatContradictEachOtherAreReported) {
+  BlockSystem sys = dependent_rows(0.0);
+  sys.d[3] = 0.2;  // row 3 is a combination of rows 0–2 (right-hand sides 0): it cannot hold too
+  EXPECT_THROW(make_solver("direct", {})->solve(sys), SingularMatrix);
+}
