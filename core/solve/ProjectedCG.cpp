@@ -69,8 +69,7 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
   // round-off floor: a projected residual this small relative to the data is zero (e.g. λ fully fixed by Gᵀλ = e)
   const double floor = 1e-14 * std::max(r.norm(), p.b.norm());
   if (p.start.size() == p.b.size() && w0 > floor) {  // a guess, moved onto Gᵀλ = e: kept when it is closer
-    Eigen::VectorXd guess = p.start;
-    if (G.cols()) guess += P.start(p.e - G.transpose() * p.start, p.b.size());
+    Eigen::VectorXd guess = P.feasible(p.start, p.e);
     Eigen::VectorXd rg = p.b - p.F(guess);
     Eigen::VectorXd wg = P.residual(rg);
     if (wg.norm() < w0) res.lambda = std::move(guess), r = std::move(rg), w = std::move(wg);

@@ -47,8 +47,7 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
   const double r0 = r.norm();  // the reference of the relative tolerance, also from a guess (as projected_cg)
   const double floor = 1e-14 * std::max(raw.norm(), p.b.norm());
   if (p.start.size() == p.b.size() && r0 > floor) {
-    Eigen::VectorXd guess = p.start;
-    if (Gt.cols()) guess += P.start(p.e - Gt.transpose() * p.start, p.b.size());
+    Eigen::VectorXd guess = P.feasible(p.start, p.e);
     Eigen::VectorXd raw_g = p.b - p.F(guess);
     Eigen::VectorXd rg = P.direction(raw_g);
     if (rg.norm() < r0) res.lambda = std::move(guess), raw = std::move(raw_g), r = std::move(rg);

@@ -28,6 +28,10 @@ class Projector {
   Eigen::VectorXd start(const Eigen::VectorXd& e, Eigen::Index rows) const {
     return G_.cols() == 0 ? Eigen::VectorXd(Eigen::VectorXd::Zero(rows)) : Eigen::VectorXd(QG_ * coarse(e));
   }
+  /// A guess λ moved onto Gᵀλ = e: λ + QG(GᵀQG)⁻¹(e − Gᵀλ)
+  Eigen::VectorXd feasible(const Eigen::VectorXd& guess, const Eigen::VectorXd& e) const {
+    return G_.cols() == 0 ? guess : Eigen::VectorXd(guess + start(e - G_.transpose() * guess, guess.size()));
+  }
   /// α = −(GᵀQG)⁻¹(QG)ᵀ r, so that r + Gα = b − Fλ + Gα is annihilated by (QG)ᵀ
   Eigen::VectorXd amplitudes(const Eigen::VectorXd& r) const {
     return G_.cols() == 0 ? Eigen::VectorXd() : Eigen::VectorXd(-coarse(QG_.transpose() * r));
