@@ -484,6 +484,7 @@ Results NewtonRun::run() {
     obs_.on_progress(lf);
     if (attempt_no == 0) step = std::min(2 * step, nominal);  // grow back after a cut-back once a step converges
     attempt_no = 0;
+    cutbacks = 0;  // the limit is per increment: a long pass may need a few cut-backs at many node entries
   }
   res.newton = log_;
   res.active_set_iterations = static_cast<int>(log_.size());

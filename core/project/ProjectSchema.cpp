@@ -434,7 +434,9 @@ Field newton_tolerance() {
 }
 
 Field max_cutbacks() {
-  Field f = def(count("max_cutbacks", "Newton: failed steps (each halves the step) before the run is diverged", 50), 8);
+  Field f = def(count("max_cutbacks",
+                      "Newton: failed attempts of one increment (each halves the step) before the run is diverged", 50),
+                8);
   f.min = 0;
   return f;
 }

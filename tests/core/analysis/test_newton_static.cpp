@@ -208,6 +208,29 @@ TEST(NewtonStatic, NoEquilibriumEndsDivergedNamingTheIncrement) {
   for (const BodyResults& b : r.bodies) EXPECT_TRUE(b.displacement.allFinite());
 }
 
+TEST(NewtonStatic, CutBackLimitIsPerIncrement) {
+  // a slender finite-strain cantilever bent by its tip in 4 steps of 15 mm, 4 Newton iterations allowed: each full
+  // step needs one cut-back, so the run uses 4 in all, more than its limit of 1 per increment
+  const json mesh = {{"type", "block"}, {"nx", 20}, {"ny", 2}, {"lx", 100.0}, {"ly", 5.0}};
+  const json j = {{"name", "beam"},
+                  {"dimension", 2},
+                  {"materials", {{{"name", "steel"}, {"E", E}, {"nu", nu}}}},
+                  {"bodies", {{{"name", "beam"}, {"material", "steel"}, {"kinematics", "finite"}, {"mesh", mesh}}}},
+                  {"boundary_conditions",
+                   {{{"type", "displacement"}, {"body", "beam"}, {"set", "xmin"}, {"ux", 0.0}, {"uy", 0.0}},
+                    {{"type", "displacement"}, {"body", "beam"}, {"set", "xmax"}, {"uy", -60.0}}}},
+                  {"analysis", {{"type", "newton"}, {"increments", 4}, {"max_iterations", 4}, {"max_cutbacks", 1}}},
+                  {"solver", {{"mode", "direct"}}}};
+  const Results r = run(j);
+  ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
+  int cutbacks = 0;
+  for (const IncrementResults& inc : r.increments) {
+    EXPECT_LE(inc.cutbacks, 1);
+    cutbacks += inc.cutbacks;
+  }
+  EXPECT_GT(cutbacks, 1) << "the case must need more cut-backs in all than its limit per increment";
+}
+
 namespace {
 struct CancelAfter : AnalysisObserver {
   int iterations = 0, limit;
