@@ -432,7 +432,9 @@ Results NewtonRun::run() {
   res.paper_convention_multipliers = layout_.paper_convention_multipliers();
   const double nominal = 1.0 / opt_.increments;
   double lf = 0.0, step = nominal;
-  int increment = 0, cutbacks = 0, attempt_no = 0;
+  // depth: how many times the step is halved below its nominal size. It limits the step, not the run: a long pass
+  // may cut back at many node entries, and a step that keeps shrinking across increments still ends
+  int increment = 0, depth = 0, attempt_no = 0;
   while (lf < 1.0) {
     double target = std::min(1.0, lf + step);
     if (1.0 - target < 1e-12) target = 1.0;
@@ -448,14 +450,14 @@ Results NewtonRun::run() {
     if (!a.cause.empty()) {
       restore();
       refresh_all_ = true;
-      if (cutbacks == opt_.max_cutbacks) {
+      if (depth == opt_.max_cutbacks) {
         res.status = {Status::diverged, Reason::none,
                       "increment " + std::to_string(increment + 1) + " (load factor " + fmt(lf) + " to " + fmt(target) +
-                          "): " + a.cause + "; " + std::to_string(cutbacks) +
-                          " cut-backs used (analysis.max_cutbacks)"};
+                          "): " + a.cause + "; " + std::to_string(depth) +
+                          " cut-backs used (analysis.max_cutbacks: the step halved that often)"};
         break;
       }
-      ++cutbacks;
+      ++depth;
       ++attempt_no;
       step /= 2;
       continue;
@@ -482,9 +484,11 @@ Results NewtonRun::run() {
     obs_.on_increment_end(increment, increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9)));
     if (model_.rolling && lf < 1.0) tell_rolling(res.increments.back());
     obs_.on_progress(lf);
-    if (attempt_no == 0) step = std::min(2 * step, nominal);  // grow back after a cut-back once a step converges
+    if (attempt_no == 0 && depth > 0) {  // grow back after a cut-back once a step converges at first attempt
+      step *= 2;
+      --depth;
+    }
     attempt_no = 0;
-    cutbacks = 0;  // the limit is per increment: a long pass may need a few cut-backs at many node entries
   }
   res.newton = log_;
   res.active_set_iterations = static_cast<int>(log_.size());

@@ -435,7 +435,9 @@ Field newton_tolerance() {
 
 Field max_cutbacks() {
   Field f = def(count("max_cutbacks",
-                      "Newton: failed attempts of one increment (each halves the step) before the run is diverged", 50),
+                      "Newton: how often the step may be halved below its nominal size (after failed attempts; it "
+                      "grows back by doubling after a step that converges at once) before the run is diverged",
+                      50),
                 8);
   f.min = 0;
   return f;

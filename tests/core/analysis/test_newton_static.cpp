@@ -231,6 +231,26 @@ TEST(NewtonStatic, CutBackLimitIsPerIncrement) {
   EXPECT_GT(cutbacks, 1) << "the case must need more cut-backs in all than its limit per increment";
 }
 
+TEST(NewtonStatic, StepNeverShrinksBelowItsCutBackLimit) {
+  // pressed past its limit load (2/√3 σ_y in plane strain), a perfectly plastic block converges ever closer to it
+  // with ever smaller steps: the run must end with no step below nominal / 2^max_cutbacks, not creep on
+  json j = compression(2, 0.0, 4);
+  j["materials"][0]["hardening_modulus"] = 0.0;
+  j["boundary_conditions"].erase(2);
+  j["boundary_conditions"].push_back(
+      {{"type", "pressure"}, {"body", "block"}, {"surface", "ymax"}, {"value", 1.5 * sy}});
+  j["analysis"]["max_cutbacks"] = 8;
+  const Results r = run(j);
+  ASSERT_EQ(r.status.status, Status::diverged) << r.status.message;
+  ASSERT_GE(r.increments.size(), 3u);
+  double previous = 0;
+  for (const IncrementResults& inc : r.increments) {
+    EXPECT_GE(inc.load_factor - previous, 0.25 / 256 - 1e-12) << "at load factor " << inc.load_factor;
+    previous = inc.load_factor;
+  }
+  EXPECT_LT(previous, 2 / std::sqrt(3.0) / 1.5) << "no equilibrium past the limit load";
+}
+
 namespace {
 struct CancelAfter : AnalysisObserver {
   int iterations = 0, limit;
