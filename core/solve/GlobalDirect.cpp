@@ -97,10 +97,15 @@ void check_dependent_rows(const BlockSystem& sys, const ConstraintBasis& basis, 
   std::vector<char> kept(static_cast<size_t>(sys.num_multipliers()), 0);
   for (int r : basis.kept) kept[static_cast<size_t>(r)] = 1;
   for (long r = 0; r < sys.num_multipliers(); ++r)
-    if (!kept[static_cast<size_t>(r)] && !(std::abs(Cu[r] - sys.d[r]) <= 1e-8 * std::max(scale, 1e-300)))
-      throw SingularMatrix("constraint row " + std::to_string(r) +
-                               " depends on other rows and contradicts them (the constraints have no solution)",
-                           -1);
+    if (const double miss = std::abs(Cu[r] - sys.d[r]);
+        !kept[static_cast<size_t>(r)] && !(miss <= 1e-8 * std::max(scale, 1e-300))) {
+      char what[200];
+      std::snprintf(what, sizeof what,
+                    "constraint row %ld depends on other rows and contradicts them by %.3g (its tolerance %.3g; the "
+                    "constraints have no solution)",
+                    r, miss, 1e-8 * scale);
+      throw SingularMatrix(what, -1);
+    }
 }
 }  // namespace
 
