@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Simo's necking bar (issue 12) -> docs/VALIDATION.md "Simo's necking bar" and docs/images/necking_*.png: the sample
 # samples/necking-bar-3d.json on three meshes with F-bar (formulation bbar) and the middle mesh with full
-# integration, each end pulled 3.5 mm; load and neck radius per increment (docs/data/necking.csv), the plots, and the
+# integration, each end pulled 3.5 mm (--end U: U mm in 10 U steps; the published curves go to 7); load and neck radius per increment (docs/data/necking.csv), the plots, and the
 # markdown table beside the reference points (docs/data/necking_reference.csv), with wall time and peak memory.
 #
-# Usage: tests/bench/run_necking_benchmarks.sh [--rollsim BIN] [--curve BIN] [--out DIR]
+# Usage: tests/bench/run_necking_benchmarks.sh [--rollsim BIN] [--curve BIN] [--out DIR] [--end U] [--only LABELS]
 # This script builds nothing (needs the GUI build for rollsim_necking_curve). It fails only if a run fails other
 # than by diverging (exit 4: its converged increments are drawn, the table names the status).
 set -euo pipefail
@@ -13,11 +13,15 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 ROLLSIM=$ROOT/build/app/rollsim
 CURVE=$ROOT/build/tests/bench/rollsim_necking_curve
 OUT=$ROOT/docs
+END=3.5
+ONLY=""
 while (($#)); do
   case $1 in
     --rollsim) ROLLSIM=$2; shift 2 ;;
     --curve) CURVE=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
+    --end) END=$2; shift 2 ;;
+    --only) ONLY=$2; shift 2 ;;  # comma-separated labels, e.g. coarse,medium
     -h|--help) sed -n 2,8p "$0"; exit 0 ;;
     *) echo "run_necking_benchmarks: unknown argument $1" >&2; exit 2 ;;
   esac
@@ -33,10 +37,15 @@ echo "| mesh | elements | dofs | steps | cut-backs | Newton iterations | wall s 
 echo "|---|---|---|---|---|---|---|---|"
 for v in "${VARIANTS[@]}"; do
   read -r label core ring axial grading formulation <<<"$v"
-  python3 - "$SAMPLE" "$WORK/$label.json" "$core" "$ring" "$axial" "$grading" "$formulation" <<'PY'
+  [[ -z $ONLY || ,$ONLY, == *,$label,* ]] || continue
+  python3 - "$SAMPLE" "$WORK/$label.json" "$core" "$ring" "$axial" "$grading" "$formulation" "$END" <<'PY'
 import json, sys
-src, dst, core, ring, axial, grading, formulation = sys.argv[1:]
+src, dst, core, ring, axial, grading, formulation, end = sys.argv[1:]
 p = json.load(open(src))
+for bc in p["boundary_conditions"]:
+    if "uz" in bc:
+        bc["uz"] = float(end)
+p["analysis"]["increments"] = round(10 * float(end))
 b = p["bodies"][0]
 b["formulation"] = formulation
 b["mesh"].update({"n_core": int(core), "n_ring": int(ring), "n_axial": int(axial), "axial_grading": float(grading)})
