@@ -129,8 +129,7 @@ void write_plots(const fs::path& dir, const std::vector<Run>& runs, const std::v
         refs[p.series].points.emplace_back(p.edge, p.value);
       }
     for (auto& [name, c] : refs) curves.push_back(c);
-    rollsim::ui::write_curves_png(dir / file, title, "edge displacement u [mm] (each end; total elongation 2u)",
-                                  y_title, curves, y_min);
+    rollsim::ui::write_curves_png(dir / file, title, "edge displacement u [mm], each end", y_title, curves, y_min);
   }
 }
 
