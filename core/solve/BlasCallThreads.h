@@ -1,13 +1,14 @@
 #pragma once
 // The BLAS thread count chosen per call by the call's work (OpenBLAS's own thresholds thread a call from ~1e4
 // flops on: dtrsm from m·n ≥ 1024, dpotrf from n ≥ 64, dsyrk from n ≥ 100). A supernodal Cholesky makes thousands of
-// such calls per factorization, most of them small (2D: almost all; 3D 16³: ~50 of ~4800 calls above 1e7 flops hold
-// 2/3 of the flops). Each threaded call wakes OpenBLAS's worker and waits for it: on two cores shared with other
-// work that wait was a scheduler time slice, and `--threads 2` made `direct` 1.3-4x slower than `--threads 1`.
-// So a call runs on the allowed threads only when it is large enough to pay for the hand-over, and on one otherwise.
-// The choice is made by interposing dgemm_, dsyrk_, dtrsm_ and dpotrf_ (CHOLMOD's and UMFPACK's level-3 calls): the
-// executable's definitions come before the BLAS library's in the dynamic linker's search, like GOMP_parallel in
-// Blas.cpp.
+// such calls per factorization, most of them small (counted on the 16³ cube: 41 of ~5600 calls reach 1e7 flops and hold
+// 60 % of the flops; on the 120² square 2 calls). Each threaded call wakes OpenBLAS's worker and waits for it: on two
+// cores shared with other work that wait can be a scheduler time slice: `--threads 2` took 1.3x the time of `--threads
+// 1` on the 3D cubes in docs/BENCHMARKS.md before this (load ~6), and its factorization of the 16³ cube 8.5 s
+// against 1.95 s at load 10. So a call runs on the allowed threads only when it is large enough to pay for the
+// hand-over, and on one otherwise. The choice is made by interposing dgemm_, dsyrk_, dtrsm_ and dpotrf_ (CHOLMOD's and
+// UMFPACK's level-3 calls): the executable's definitions come before the BLAS library's in the dynamic linker's search,
+// like GOMP_parallel in Blas.cpp.
 
 namespace rollsim {
 
