@@ -280,7 +280,8 @@ int run_command(const RunOptions& o) {
   if (!writer) return exit_code(results.status.status);  // the other ranks of a petsc run: rank 0 writes
   if (results.auto_choice) info.mode = results.auto_choice->mode;
   if (results.solver.factor_flops_total > 0) {  // the yardstick of factor_gflops, after the analysis: ~10 ms
-    const DgemmPeak peak = measure_dgemm_peak(options.threads);
+    // order 256 for any thread count: the 384 of bench's 2-thread peak took 3x the flops, ~20 ms more of a 0.5 s run
+    const DgemmPeak peak = measure_dgemm_peak(options.threads, 256);
     info.dgemm_peak_gflops = peak.gflops;
     info.peak_probe_s = peak.seconds;
   }

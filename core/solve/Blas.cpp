@@ -4,6 +4,8 @@
 
 #include <atomic>
 
+#include "solve/BlasCallThreads.h"
+
 namespace rollsim {
 
 std::string blas_description() {
@@ -27,7 +29,7 @@ bool call_setter(const char* name, int threads) {
 }
 }  // namespace
 
-bool set_blas_threads(int threads) { return call_setter("openblas_set_num_threads", threads); }
+bool set_blas_threads(int threads) { return set_blas_call_threads(threads); }
 
 namespace {
 std::atomic<bool> serial_regions{false};

@@ -8,7 +8,8 @@ namespace rollsim {
 
 /// e.g. "OpenBLAS 0.3.21 DYNAMIC_ARCH ... Haswell MAX_THREADS=64" or "reference BLAS (not OpenBLAS)".
 std::string blas_description();
-/// Sets the BLAS thread count (process-wide) when the BLAS supports it; returns false otherwise.
+/// Sets the BLAS thread count (process-wide) when the BLAS supports it; returns false otherwise. Only calls of at
+/// least kThreadedBlasFlops use them (BlasCallThreads.h): the small ones of a supernodal factorization run on one.
 bool set_blas_threads(int threads);
 /// Sets the OpenMP thread count of the *calling thread* (OpenMP's nthreads ICV is per thread: a thread started
 /// with std::thread begins with the process default, OMP_NUM_THREADS or the core count), and makes every OpenMP

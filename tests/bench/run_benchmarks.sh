@@ -98,29 +98,29 @@ factor_bench() {
 }
 
 # ---------------------------------------------------------------- 2. end to end
-# run_e2e SAMPLE THREADS: repeats direct, skyline and ccx interleaved (drift on a shared machine hits all three);
-# a subshell, so that the thread variables stay local
+# run_e2e SAMPLE THREADS R: repeat R of direct, skyline and ccx, interleaved (drift on a shared machine hits all
+# three); main runs the thread counts of a sample back to back in every repeat, so that "2 threads against 1" compares
+# runs seconds apart, not two blocks minutes apart. A subshell, so that the thread variables stay local.
 run_e2e() (
-  s=$1 t=$2 dir=$WORK/$1-t$2
-  mkdir -p "$dir/ccx"
-  "$ROLLSIM" export-ccx "$ROOT/samples/$s.json" "$dir/ccx/model.inp" > /dev/null
+  s=$1 t=$2 r=$3 dir=$WORK/$1-t$2
+  if ((r == 1)); then
+    mkdir -p "$dir/ccx"
+    "$ROLLSIM" export-ccx "$ROOT/samples/$s.json" "$dir/ccx/model.inp" > /dev/null
+  fi
   export OMP_NUM_THREADS=$t OPENBLAS_NUM_THREADS=$t CCX_NPROC_EQUATION_SOLVER=$t CCX_NPROC_STIFFNESS=$t \
          CCX_NPROC_RESULTS=$t
-  for ((r = 1; r <= REPEAT; r++)); do
-    for mode in direct skyline; do
-      measure "$dir/$mode.times" "$ROLLSIM" run "$ROOT/samples/$s.json" --solver "$mode" --out "$dir/$mode" \
-        --threads "$t" --quiet
-      cp "$dir/$mode/summary.json" "$dir/$mode-summary-$r.json"
-    done
-    if [[ -n $BASELINE ]]; then
-      measure "$dir/before.times" "$BASELINE" run "$ROOT/samples/$s.json" --solver direct --out "$dir/before" \
-        --threads "$t" --quiet
-    fi
-    (cd "$dir/ccx" && measure "$dir/ccx.times" ccx -i model)
-    cp "$WORK/stdout.txt" "$dir/ccx-$r.log"
-    measure "$dir/startup.times" "$ROLLSIM" --version  # process start-up alone: exec, the libraries, exit
+  for mode in direct skyline; do
+    measure "$dir/$mode.times" "$ROLLSIM" run "$ROOT/samples/$s.json" --solver "$mode" --out "$dir/$mode" \
+      --threads "$t" --quiet
+    cp "$dir/$mode/summary.json" "$dir/$mode-summary-$r.json"
   done
-  log "end to end $s, $t thread(s) done"
+  if [[ -n $BASELINE ]]; then
+    measure "$dir/before.times" "$BASELINE" run "$ROOT/samples/$s.json" --solver direct --out "$dir/before" \
+      --threads "$t" --quiet
+  fi
+  (cd "$dir/ccx" && measure "$dir/ccx.times" ccx -i model)
+  cp "$WORK/stdout.txt" "$dir/ccx-$r.log"
+  measure "$dir/startup.times" "$ROLLSIM" --version  # process start-up alone: exec, the libraries, exit
 )
 
 # ---------------------------------------------------------------- 3. the report
@@ -321,7 +321,7 @@ e2e_section() {
 Wall time of the whole process: rollsim reads the project, builds, solves, writes summary.json and result.vtu;
 CalculiX reads the .inp that `rollsim export-ccx` writes (same nodes, CPE4 plane strain of unit thickness / C3D8,
 same supports), solves, writes the .dat (total reactions) and the .frd (U and S, the fields result.vtu holds).
-The three programs run interleaved, each under `/usr/bin/time -v` (peak RSS); the wall time is taken around it
+The three programs run interleaved, a sample's thread counts back to back in every repeat, each under `/usr/bin/time -v` (peak RSS); the wall time is taken around it
 with a nanosecond clock. In brackets: the range of CalculiX / direct over the interleaved run pairs (the noise of
 this shared machine). CPU time = user + system (medians), less sensitive than wall time to other jobs on the machine.
 Target of issue 14 (on wall time): CalculiX / direct ≥ 8 on the 2D squares, ≥ 2 on the 3D cubes, at 1 and 2 threads.
@@ -448,14 +448,22 @@ verdict_line() {
   echo "${line%;}."
 }
 
-# threads_line: issue 14's "2 threads never slower than 1", direct, per sample (medians of the wall times)
+# threads_line: issue 14's "2 threads never slower than 1", direct, per sample (medians of the wall times; the runs
+# of one repeat are seconds apart, so the range of 2 / 1 over the repeats shows the noise, as "borderline" does above)
 threads_line() {
-  local s one two line=""
+  local s one two cpu1 cpu2 range line=""
   [[ $THREADS == "1 2" ]] || return 0
   for s in "${SAMPLES[@]}"; do
     one=$(col_median "$WORK/$s-t1/direct.times" 1)
     two=$(col_median "$WORK/$s-t2/direct.times" 1)
-    line+=" $s $(awk -v a="$one" -v b="$two" 'BEGIN {printf "%s (%.3f s on 1, %.3f s on 2)", (b <= a) ? "met" : "missed", a, b}');"
+    cpu1=$(col_median "$WORK/$s-t1/direct.times" 3)
+    cpu2=$(col_median "$WORK/$s-t2/direct.times" 3)
+    range=$(paste -d' ' "$WORK/$s-t1/direct.times" "$WORK/$s-t2/direct.times" |
+            awk -v n="$(awk 'END {print NF}' "$WORK/$s-t1/direct.times")" '{r = $(n + 1) / $1
+              if (NR == 1 || r < lo) lo = r; if (NR == 1 || r > hi) hi = r} END {printf "%.2f-%.2f", lo, hi}')
+    line+=" $s $(awk -v a="$one" -v b="$two" -v c="$cpu1" -v d="$cpu2" -v r="$range" 'BEGIN {
+      split(r, x, "-"); printf "%s (%.3f s on 1, %.3f s on 2; 2 / 1 over the repeats %s%s; CPU %.2f / %.2f s)",
+      (b <= a) ? "met" : "missed", a, b, r, (x[1] <= 1 && x[2] > 1) ? ", borderline" : "", c, d}');"
   done
   echo "- direct on 2 threads never slower than on 1:${line%;}."
 }
@@ -481,8 +489,11 @@ verdict_section() {
 # ---------------------------------------------------------------- main
 stage_bench
 factor_bench
-for t in $THREADS; do
-  for s in "${SAMPLES[@]}"; do run_e2e "$s" "$t"; done
+for ((r = 1; r <= REPEAT; r++)); do
+  for s in "${SAMPLES[@]}"; do
+    for t in $THREADS; do run_e2e "$s" "$t" "$r"; done
+  done
+  log "end to end, repeat $r of $REPEAT done"
 done
 {
   machine_section
