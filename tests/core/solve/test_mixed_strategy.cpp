@@ -5,6 +5,7 @@
 // u_i = i. Before CholeskyOrLU, CHOLMOD refused B's tangent and the solve threw.
 #include <gtest/gtest.h>
 
+#include "solve/CholmodFactorization.h"
 #include "solve/MixedStrategy.h"
 
 using namespace rollsim;
@@ -62,6 +63,9 @@ TEST(MixedStrategy, FetiSolvesSubdomainsWithIndefiniteTangentsAsDirect) {
   const BlockSystem sys = torn_chain(1.5, -0.5);
   ASSERT_LT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(sys.groups[1].K)).eigenvalues()[0], -0.1)
       << "B alone must be indefinite";
+  CholmodFactorization llt;  // what GroupSolver factored with before: it refuses B without its fixed dof
+  const SparseMatrix Kpp = sys.groups[1].K.bottomRightCorner(2, 2);
+  EXPECT_THROW(llt.factorize(Kpp), NotPositiveDefinite);
   const BlockSolution direct = make_solver("direct", {})->solve(sys);
   expect_u_equals_node_index(direct, 1e-10);
   SolverOptions o;
