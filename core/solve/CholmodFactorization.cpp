@@ -115,7 +115,7 @@ void CholmodFactorization::factorize(const SparseMatrix& A) {
     // factor_->minor is the column (in CHOLMOD's permuted order) where it failed
     const int* perm = static_cast<const int*>(factor_->Perm);
     const int col = (perm && factor_->minor < factor_->n) ? perm[factor_->minor] : -1;
-    throw SingularMatrix("matrix is not positive definite", col);
+    throw NotPositiveDefinite("matrix is not positive definite", col);
   }
   if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorization failed");
   const auto [ratio, col] = smallest_pivot_ratio(*factor_, A);

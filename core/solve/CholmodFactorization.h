@@ -27,6 +27,12 @@ struct CholmodSettings {
   static constexpr double kNestedDissectionDegree = 12;
 };
 
+/// Thrown when the Cholesky factorization meets a negative (or zero) pivot: the matrix is indefinite or singular,
+/// which a symmetric indefinite factorization (CholeskyOrLU) can tell apart.
+struct NotPositiveDefinite : SingularMatrix {
+  using SingularMatrix::SingularMatrix;
+};
+
 class CholmodFactorization final : public Factorization {
  public:
   explicit CholmodFactorization(CholmodSettings settings = {});

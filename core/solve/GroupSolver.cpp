@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "solve/CholeskyOrLU.h"
+
 namespace rollsim {
 
 namespace {
@@ -40,7 +42,7 @@ void GroupSolver::factorize(const Group& g) {
 void GroupSolver::factorize_values(const Group& g) {
   if (g.K.rows() != size_) {
     size_ = g.K.rows();
-    factor_ = make_factorization(kind_);
+    factor_ = kind_ == "cholmod" ? std::make_unique<CholeskyOrLU>() : make_factorization(kind_);
     analyzed_ = false;
     fixed_.clear(), kept_.clear();
     choose_fixed_dofs(g.R);
@@ -67,6 +69,11 @@ void GroupSolver::choose_fixed_dofs(const Eigen::MatrixXd& R) {
     else if (!fixed_.empty())
       kept_.push_back(i);
   analyzed_ = false;
+}
+
+bool GroupSolver::indefinite() const {
+  const auto* f = dynamic_cast<const CholeskyOrLU*>(factor_.get());
+  return f && f->indefinite();
 }
 
 Eigen::VectorXd GroupSolver::apply(const Eigen::VectorXd& b) {

@@ -2,7 +2,8 @@
 // A generalized inverse K⁺ of one group's stiffness (paper eqs. (5)-(6)). A regular K is factored as is.
 // A floating group (kernel R with r columns) has r dofs fixed — those where R is best conditioned, chosen by
 // column-pivoted QR of Rᵀ, so that no rigid motion survives them — and K⁺ = [Kpp⁻¹ 0; 0 0] (the paper's
-// reordering). Then K K⁺ b = b for every b with Rᵀb = 0, which is all projected CG needs.
+// reordering). Then K K⁺ b = b for every b with Rᵀb = 0, which is all projected CG needs. Kind "cholmod" factors with
+// CholeskyOrLU: a tangent that is not positive definite (a compressed finite-strain subdomain) goes to LU.
 #include <memory>
 #include <vector>
 
@@ -22,6 +23,8 @@ class GroupSolver {
   Eigen::VectorXd apply(const Eigen::VectorXd& b);
   const FactorStats& stats() const { return factor_->stats(); }
   const std::vector<int>& fixed_dofs() const { return fixed_; }
+  /// True when the factor is of an indefinite matrix (K⁺ is then indefinite, and so may the interface operator be).
+  bool indefinite() const;
 
  private:
   std::string kind_;

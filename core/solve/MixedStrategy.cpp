@@ -111,6 +111,10 @@ const SparseMatrix& MixedStrategy::weighted_modes(const BlockSystem& sys, const 
   return QG_;
 }
 
+bool MixedStrategy::any_indefinite() const {
+  return std::any_of(groups_.begin(), groups_.end(), [](const GroupSolver& g) { return g.indefinite(); });
+}
+
 bool MixedStrategy::same_constraints(const BlockSystem& sys) const {
   if (preconditioned_C_.size() != sys.groups.size()) return false;
   for (size_t g = 0; g < sys.groups.size(); ++g)
@@ -141,11 +145,15 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) { Kf[g] = groups_[g].apply(sys.groups[g].f); });
   InterfaceProblem problem = interface_problem(sys, Kf);
   if (options_.interface_start == "previous") problem.start = sys.lambda_start;
-  if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols() && !problem.unsymmetric)
+  // an indefinite group factor (CholeskyOrLU) makes F symmetric but possibly indefinite on ker Gᵀ, where CG may
+  // break down: GMRES then, as for an unsymmetric F; positive definite groups keep CG
+  const bool krylov_gmres = problem.unsymmetric || any_indefinite();
+  if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols() && !krylov_gmres)
     problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
   ProjectedCGOptions cg{options_.cg_tolerance, 10000, {}, solve};
   if (preconditioner_) cg.preconditioner = [&](const Eigen::VectorXd& w) { return preconditioner_->apply(sys, w); };
-  last_ = problem.unsymmetric ? projected_gmres(problem, cg, observer) : projected_cg(problem, cg, observer);
+  last_ = krylov_gmres ? projected_gmres(problem, cg, observer) : projected_cg(problem, cg, observer);
+  gmres_solves_ += krylov_gmres;
   stats_.cg_iterations += last_.iterations;
   stats_.cg_lambda_min = last_.lambda_min;
   stats_.cg_lambda_max = last_.lambda_max;

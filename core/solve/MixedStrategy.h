@@ -26,6 +26,8 @@ class MixedStrategy final : public SolverStrategy {
   double multiplier_tolerance() const override { return options_.cg_tolerance; }
   /// The last interface solve (residual history, constraint error), for tests and reports.
   const ProjectedCGResult& last_interface_solve() const { return last_; }
+  /// Interface solves done by projected GMRES: an unsymmetric F (friction), or an indefinite group factor.
+  long gmres_solves() const { return gmres_solves_; }
 
  private:
   void factorize_changed(const BlockSystem& sys, AnalysisObserver* observer);
@@ -40,6 +42,8 @@ class MixedStrategy final : public SolverStrategy {
   /// True when every group's constraint block is the one the preconditioner was set up with (an active set that
   /// swaps rows while keeping their count is a change).
   bool same_constraints(const BlockSystem& sys) const;
+  /// Some group's factor is of an indefinite tangent (GroupSolver::indefinite): the interface is solved by GMRES.
+  bool any_indefinite() const;
   const SparseMatrix& weighted_modes(const BlockSystem& sys, const SparseMatrix& G, bool preconditioner_changed);
 
   SolverOptions options_;
@@ -51,6 +55,7 @@ class MixedStrategy final : public SolverStrategy {
   std::vector<GroupSolver> groups_;
   std::vector<long> factored_version_;
   ProjectedCGResult last_;
+  long gmres_solves_ = 0;
   SolveStats stats_;
 };
 

@@ -51,6 +51,7 @@ void UmfpackFactorization::factorize(const SparseMatrix& A) {
     throw std::runtime_error("UMFPACK factorization failed (status " + std::to_string(status) + ")");
   stats_.nnz_factor = info[UMFPACK_LNZ] + info[UMFPACK_UNZ];
   stats_.flops = info[UMFPACK_FLOPS];
+  rcond_ = info[UMFPACK_RCOND];
 }
 
 Eigen::VectorXd UmfpackFactorization::solve(const Eigen::VectorXd& b) {

@@ -17,6 +17,8 @@ class UmfpackFactorization final : public Factorization {
   void factorize(const SparseMatrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
   const FactorStats& stats() const override { return stats_; }
+  /// UMFPACK's estimate of the reciprocal condition number, min |U_jj| / max |U_jj| of the last factorization
+  double rcond() const { return rcond_; }
 
  private:
   void free_numeric();
@@ -25,6 +27,7 @@ class UmfpackFactorization final : public Factorization {
   void* numeric_ = nullptr;
   double control_[20]{};
   FactorStats stats_;
+  double rcond_ = 0;
 };
 
 }  // namespace rollsim

@@ -1,0 +1,94 @@
+// `feti` on subdomains whose own tangents are indefinite while the whole system's is positive definite (a compressed
+// finite-strain subdomain, paper Example 5): a spring chain 0-1-…-6, node 0 held, a unit force at node 6, torn at
+// nodes 4 and 5. The spring 4-5 (total stiffness 1) is split between the subdomains as +1.5 (A) and −0.5 (B), so B —
+// nodes 4, 5, 6, floating — has a negative eigenvalue beside its translation. Every spring carries the force 1:
+// u_i = i. Before CholeskyOrLU, CHOLMOD refused B's tangent and the solve threw.
+#include <gtest/gtest.h>
+
+#include "solve/CholmodFactorization.h"
+#include "solve/MixedStrategy.h"
+
+using namespace rollsim;
+
+namespace {
+using Triplets = std::vector<Eigen::Triplet<double, int>>;
+
+/// A spring k between local dofs a and b (−1: a held node).
+void spring(Triplets& t, int a, int b, double k) {
+  if (a >= 0) t.emplace_back(a, a, k);
+  if (b >= 0) t.emplace_back(b, b, k);
+  if (a >= 0 && b >= 0) t.emplace_back(a, b, -k), t.emplace_back(b, a, -k);
+}
+
+SparseMatrix matrix(int rows, int cols, const Triplets& t) {
+  SparseMatrix A(rows, cols);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+BlockSystem torn_chain(double split_a, double split_b) {
+  Group a;  // nodes 1..5 (dofs 0..4), node 0 held
+  a.name = "A";
+  Triplets ka;
+  spring(ka, -1, 0, 1), spring(ka, 0, 1, 1), spring(ka, 1, 2, 1), spring(ka, 2, 3, 1), spring(ka, 3, 4, split_a);
+  a.K = matrix(5, 5, ka);
+  a.f = Eigen::VectorXd::Zero(5);
+  a.C = matrix(2, 5, {{0, 3, 1.0}, {1, 4, 1.0}});  // u_A(4) − u_B(4) = 0, u_A(5) − u_B(5) = 0
+  a.R.resize(5, 0);
+  Group b;  // nodes 4, 5, 6 (dofs 0..2), floating
+  b.name = "B";
+  Triplets kb;
+  spring(kb, 0, 1, split_b), spring(kb, 1, 2, 1);
+  b.K = matrix(3, 3, kb);
+  b.f = Eigen::Vector3d(0, 0, 1);
+  b.C = matrix(2, 3, {{0, 0, -1.0}, {1, 1, -1.0}});
+  b.R = Eigen::MatrixXd::Ones(3, 1);
+  BlockSystem sys;
+  sys.groups = {a, b};
+  sys.d = Eigen::VectorXd::Zero(2);
+  ConstraintBlock glue;
+  glue.kind = ConstraintKind::Glue;
+  glue.begin = 0, glue.end = 2;
+  sys.blocks.push_back(glue);
+  return sys;
+}
+
+void expect_u_equals_node_index(const BlockSolution& s, double tol) {
+  EXPECT_LT((s.u[0] - Eigen::VectorXd::LinSpaced(5, 1, 5)).norm(), tol);
+  EXPECT_LT((s.u[1] - Eigen::Vector3d(4, 5, 6)).norm(), tol);
+}
+}  // namespace
+
+TEST(MixedStrategy, FetiSolvesSubdomainsWithIndefiniteTangentsAsDirect) {
+  const BlockSystem sys = torn_chain(1.5, -0.5);
+  ASSERT_LT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(sys.groups[1].K)).eigenvalues()[0], -0.1)
+      << "B alone must be indefinite";
+  CholmodFactorization llt;  // what GroupSolver factored with before: it refuses B without its fixed dof
+  const SparseMatrix Kpp = sys.groups[1].K.bottomRightCorner(2, 2);
+  EXPECT_THROW(llt.factorize(Kpp), NotPositiveDefinite);
+  const BlockSolution direct = make_solver("direct", {})->solve(sys);
+  expect_u_equals_node_index(direct, 1e-10);
+  SolverOptions o;
+  o.cg_tolerance = 1e-12;
+  for (const std::string preconditioner : {"none", "lumped"}) {
+    SCOPED_TRACE(preconditioner);
+    o.preconditioner = preconditioner;
+    MixedStrategy feti(o, /*subdomains=*/true);
+    const BlockSolution s = feti.solve(sys);
+    EXPECT_TRUE(s.status.ok()) << s.status.message;
+    expect_u_equals_node_index(s, 1e-9);
+    EXPECT_LT((s.lambda - direct.lambda).norm(), 1e-9);
+    EXPECT_EQ(feti.gmres_solves(), 1) << "an indefinite subdomain factor: the interface by GMRES";
+  }
+}
+
+TEST(MixedStrategy, FetiKeepsCGForPositiveDefiniteSubdomains) {
+  const BlockSystem sys = torn_chain(0.5, 0.5);  // the same chain, B positive semi-definite
+  SolverOptions o;
+  o.cg_tolerance = 1e-12;
+  MixedStrategy feti(o, /*subdomains=*/true);
+  const BlockSolution s = feti.solve(sys);
+  EXPECT_TRUE(s.status.ok()) << s.status.message;
+  expect_u_equals_node_index(s, 1e-9);
+  EXPECT_EQ(feti.gmres_solves(), 0);
+}
