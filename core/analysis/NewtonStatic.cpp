@@ -17,6 +17,7 @@
 #include "contact/ContactConstraints.h"
 #include "contact/ContactStiffness.h"
 #include "contact/Friction.h"
+#include "contact/FrictionStiffness.h"
 #include "solve/Factorization.h"
 #include "solve/Stopwatch.h"
 
@@ -96,8 +97,9 @@ class NewtonRun {
   void add_friction(const std::vector<size_t>& which);
   /// True when the prescribed dofs of group g's body move over the step `at` predicts.
   bool prescribed_moves(size_t g, GroupAssembler::Factors at) const;
-  /// The contact's geometric stiffness with the last solve's λ, at the current rows, into the tangents of `tangent`
-  /// (and, for `full`, the system's coupling); nothing while λ does not belong to the rows.
+  /// The contact's geometric stiffness with the last solve's λ, at the current rows (nothing while λ does not belong
+  /// to them), and the slipping points' friction direction stiffness, into the tangents of `tangent` (and, for
+  /// `full`, the system's coupling).
   void add_contact_stiffness(double lf, const std::vector<size_t>& tangent);
   /// ‖R_g‖ = ‖f_g − C_gᵀλ‖ per group (λ of the last solve when it belongs to the current rows, else 0).
   std::vector<double> group_residuals() const;
@@ -216,10 +218,15 @@ void NewtonRun::add_contact_stiffness(double lf, const std::vector<size_t>& tang
   BlockSystem& sys = layout_.system();
   const bool full = opt_.contact_tangent == ContactTangent::Full;
   if (full) sys.coupling = SparseMatrix();
-  if (opt_.contact_tangent == ContactTangent::None || !iteration_sliding_ || !lambda_valid_) return;
-  const std::vector<StiffnessEntry> entries = contact_geometric_stiffness(
-      model_, pairs_, rows_, contact_.kept, lambda_.head(contact_.d.size()), body_displacements(lf));
-  layout_.add_body_stiffness(entries, tangent, full ? &sys.coupling : nullptr);
+  if (opt_.contact_tangent == ContactTangent::None) return;
+  std::vector<StiffnessEntry> entries = slip_direction_stiffness(model_, pairs_);  // any sliding, 3D
+  const bool rows_follow = iteration_sliding_ && lambda_valid_;
+  if (rows_follow) {
+    const std::vector<StiffnessEntry> rows = contact_geometric_stiffness(
+        model_, pairs_, rows_, contact_.kept, lambda_.head(contact_.d.size()), body_displacements(lf));
+    entries.insert(entries.end(), rows.begin(), rows.end());
+  }
+  if (rows_follow || !entries.empty()) layout_.add_body_stiffness(entries, tangent, full ? &sys.coupling : nullptr);
 }
 
 void NewtonRun::tell_rolling(const IncrementResults& inc) const {

@@ -36,6 +36,9 @@ struct PairState {
   std::vector<int> switches;  // stick ↔ slip changes in the current step (a point that came back to slip stays)
   std::vector<int> contact_switches;  // in ↔ out changes in the current step (a point that came back in stays)
   std::vector<double> slid;           // tangential sliding accumulated over the converged steps [length]
+  // |v_t| of the slip over the step that set friction_dir (−v_t / |v_t|) at this iterate; 0 when the direction came
+  // from elsewhere (the force at the return onto the cone, or the last step): the direction's stiffness needs it
+  std::vector<double> slip_step;
 };
 
 /// True for the kinds with tangential rows while they stick (sticking, coulomb).

@@ -64,6 +64,7 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
         const Eigen::Vector3d f = m[i][j].tangential_force;
         if (f.norm() <= limit * (1 + 1e-9) || f.norm() == 0.0) continue;
         s.slip[j] = 1, s.friction_dir[j] = f.normalized();  // the return onto the cone keeps the direction
+        s.slip_step[j] = 0;
         ++s.switches[j], ++changed;
         if (f.norm() / limit < least.ratio) least = {j, f.norm() / limit};
         continue;
@@ -73,12 +74,13 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
       // μN, slip, along...): it gets one way back per step, then slips with the force against its slip.
       const Eigen::Vector3d start = relative_position(p, c, u_start, model.dim);
       const Eigen::Vector3d v = tangential_part(relative_position(p, c, u, model.dim) - start, c.normal);
+      s.slip_step[j] = 0;
       if (v.norm() <= 1e-12 * p.search_distance) continue;
       if (v.dot(s.friction_dir[j]) > 0 && s.switches[j] < 2) {
         s.slip[j] = 0, s.anchor[j] = start;
         ++s.switches[j], ++changed;
       } else {
-        s.friction_dir[j] = -v.normalized();
+        s.friction_dir[j] = -v.normalized(), s.slip_step[j] = v.norm();
       }
     }
     if (p.holds_slave && least.ratio < std::numeric_limits<double>::max() && !any_sticks(s)) {
@@ -176,6 +178,7 @@ void new_step(std::vector<PairState>& pairs) {
   for (PairState& s : pairs) {
     std::fill(s.switches.begin(), s.switches.end(), 0);
     std::fill(s.contact_switches.begin(), s.contact_switches.end(), 0);
+    std::fill(s.slip_step.begin(), s.slip_step.end(), 0.0);  // the direction is the last step's
   }
 }
 

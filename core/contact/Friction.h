@@ -14,7 +14,8 @@ namespace rollsim {
 
 /// Stick/slip update of the frictional pairs from the rows and multipliers of the last solve, the displacements
 /// now (u) and at the start of the step (u_start; every dof of every body, node-major). Records every active
-/// point's normal force; returns the number of points that changed between stick and slip. A point that went back
+/// point's normal force, and a slipping point's slip over the step |v_t| beside the direction −v_t/|v_t| it sets
+/// (PairState::slip_step); returns the number of points that changed between stick and slip. A point that went back
 /// from slip to stick once in the step and slips again stays slipping for the rest of the step (no chatter). A pair
 /// that holds its slave body (ContactPair::holds_slave) keeps the least overloaded of the points that would start to
 /// slip sticking when no other point sticks: with every point slipping nothing would hold the body (a rolling slab
@@ -24,7 +25,7 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
                     std::vector<PairState>& pairs);
 
 /// A step begins: every point may switch between stick and slip, in and out again (the chatter rules of
-/// update_friction and update_active_set).
+/// update_friction and update_active_set); a slipping point's direction is the last step's (no slip_step).
 void new_step(std::vector<PairState>& pairs);
 
 /// A step converged: every active point of a unilateral pair adds the tangential part of its relative motion over

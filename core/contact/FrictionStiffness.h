@@ -1,0 +1,24 @@
+#pragma once
+// The stiffness of the friction direction's turn (3D). A slipping point carries the friction force F d on its slave
+// node and −N_k F d on its master nodes (F = μ N, or the shear cap), d = −v_t / |v_t| with v_t the tangential part of
+// its relative motion over the step (Friction.cpp, backward Euler). In 2D d = ±t cannot turn in the plane; in 3D it
+// turns with v_t. With R̃ δu = δu_s − Σ N_k δu_k (the projection held) and P = I − d dᵀ − n nᵀ = w wᵀ, w = n × d:
+//   ∂d/∂u = −P R̃ / |v_t|  (the derivative of a unit vector),
+// and the friction loads are r's, so the tangent −∂r/∂u gains
+//   K_d = (F / |v_t|) R̃ᵀ w wᵀ R̃   — symmetric, positive semidefinite, rank one per point.
+// Left out (second order): the projection's motion (∂N_k, the master's motion over the step weighted by it) and the
+// normal's turn with the master facet. A point whose direction was not set from its slip at this iterate
+// (PairState::slip_step 0: just returned onto the cone, the first iteration of a step, |v_t| ≤ 1e-12 of the search
+// distance) gets no term: its residual's direction does not move with u there.
+#include <vector>
+
+#include "contact/ContactStiffness.h"
+
+namespace rollsim {
+
+/// K_d of every slipping point of the pairs that can slip (3D; empty in 2D), over the point's slave and master nodes
+/// in body terms: the slave–slave part belongs in the slave's block, the master–master part in the master's, the
+/// slave–master part joins two bodies (the entries say which). Every entry (i, j) has its (j, i).
+std::vector<StiffnessEntry> slip_direction_stiffness(const Model& model, const std::vector<PairState>& pairs);
+
+}  // namespace rollsim
