@@ -301,3 +301,55 @@ TEST_P(ContactStiffnessDim, RowsThatDoNotFollowTheConfigurationGetNone) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Dimensions, ContactStiffnessDim, ::testing::Values(2, 3));
+
+namespace {
+/// Every body's every dof one after the other (body-major, then node-major): where (body, node, comp) sits.
+long dof_index(const Model& model, const Dof& d) {
+  long offset = 0;
+  for (int b = 0; b < std::get<0>(d); ++b) offset += model.bodies[b].mesh.num_nodes() * model.dim;
+  return offset + model.dim * std::get<1>(d) + std::get<2>(d);
+}
+
+/// ‖(I − P) K du‖ / (‖K‖ ‖du‖), P the projection onto range(Cᵀ), for a random du with C du = 0 (the rows' motion
+/// held, as in every Newton iteration after a step's first): 0 when the term only shifts the multipliers.
+double outside_rows(const Fixture& s, const std::vector<StiffnessEntry>& k) {
+  long n = 0;
+  for (const Body& b : s.model.bodies) n += b.mesh.num_nodes() * s.model.dim;
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(static_cast<long>(s.rows.size()), n), K = Eigen::MatrixXd::Zero(n, n);
+  for (size_t r = 0; r < s.rows.size(); ++r)
+    for (const ConstraintTerm& t : s.rows[r].terms)
+      C(static_cast<long>(r), dof_index(s.model, {t.body, t.node, t.comp})) += t.coef;
+  for (const StiffnessEntry& e : k)
+    K(dof_index(s.model, {e.body_i, e.node_i, e.comp_i}), dof_index(s.model, {e.body_j, e.node_j, e.comp_j})) +=
+        e.value;
+  const Eigen::MatrixXd kernel = Eigen::FullPivLU<Eigen::MatrixXd>(C).kernel();
+  const Eigen::VectorXd du = kernel * Eigen::VectorXd::LinSpaced(kernel.cols(), 1.0, 2.0);
+  const Eigen::VectorXd y = K * du;
+  const Eigen::MatrixXd Ct = C.transpose();
+  const Eigen::VectorXd in_rows = Ct * Ct.completeOrthogonalDecomposition().solve(y);
+  return (y - in_rows).norm() / (K.norm() * du.norm());
+}
+
+/// The entries joining two bodies left out (`groups`: each body's own block only).
+std::vector<StiffnessEntry> within_bodies(std::vector<StiffnessEntry> k) {
+  std::erase_if(k, [](const StiffnessEntry& e) { return e.body_i != e.body_j; });
+  return k;
+}
+}  // namespace
+
+// Why `contact_tangent: full` repeats `none` on a sticking pass to round-off (issue 12): a sticking point's rows hold
+// every direction of its relative motion, and its term (the symmetric part of λ ∂C/∂u) maps a motion that keeps the
+// rows into range(Cᵀ): it only shifts λ. A slave–master part left out (`groups`) breaks that; a sliding point's
+// term (its tangential motion free) is not of that form.
+TEST_P(ContactStiffnessDim, StickingPointsTermOnlyShiftsTheMultipliersUnlessCut) {
+  const Fixture stick = deformed_state(GetParam(), "sticking");
+  const std::vector<StiffnessEntry> k =
+      contact_geometric_stiffness(stick.model, stick.pairs, stick.rows, stick.kept, stick.lambda, stick.u);
+  ASSERT_FALSE(k.empty());
+  EXPECT_LT(outside_rows(stick, k), 1e-12);
+  EXPECT_GT(outside_rows(stick, within_bodies(k)), 1e-3);
+  const Fixture slide = deformed_state(GetParam(), "frictionless");
+  EXPECT_GT(outside_rows(slide, contact_geometric_stiffness(slide.model, slide.pairs, slide.rows, slide.kept,
+                                                            slide.lambda, slide.u)),
+            1e-3);
+}
