@@ -5,7 +5,8 @@
 # and docs/BENCHMARKS-ROLLING.md ("Why `always` failed"). Counts, not times: each row is one run; status, where the run ended, steps, cut-backs, Newton iterations,
 # factorizations and tangent evaluations per group (summary.json's order) and the contact force.
 #
-# Usage: tests/bench/run_contact_tangent_benchmarks.sh [sliding|cylinder|rolling|rigid|sliding3d|cylinder3d|rolling3d]
+# Usage: tests/bench/run_contact_tangent_benchmarks.sh [sliding|cylinder|rolling|rolling36|rigid|sliding3d|cylinder3d|
+#        rolling3d]
 #        [--rollsim BIN]
 # This script builds nothing. It fails only if a run cannot start.
 set -euo pipefail
@@ -17,7 +18,7 @@ PART=${1:-sliding}
 while (($#)); do
   case $1 in
     --rollsim) ROLLSIM=$2; shift 2 ;;
-    -h|--help) sed -n 2,10p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,11p "$0"; exit 0 ;;
     *) echo "run_contact_tangent_benchmarks: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -136,6 +137,35 @@ rolling() {
   done
 }
 
+# the sample's 36 x 6 pass searched at every iteration, sticking and Coulomb μ 0.3, to TRAVEL mm (default the whole
+# 120), one thread; the last column is the run's CPU seconds (user + system)
+rolling36() {
+  local travel=${TRAVEL:-120}
+  echo "| friction | contact_tangent | status | reached | steps | cut-backs | Newton iterations | factorizations per group | contact force | CPU s |"
+  echo "|---|---|---|---|---|---|---|---|---|---|"
+  for friction in sticking coulomb; do
+    for t in none groups full; do
+      local project=$WORK/r36-$friction-$t.json out=$WORK/out-$RANDOM
+      edit "$ROOT/samples/rolling-2d-36x6.json" "$project" process.travel="$travel" process.friction=$friction \
+        process.friction_coefficient=0.3 process.sliding=large_every_iteration analysis.contact_tangent=$t
+      OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time" "$ROLLSIM" run "$project" \
+        --quiet --out "$out" --solver direct --update always >/dev/null 2>&1 || true
+      python3 - "$out" "$friction" "$t" "$travel" "$WORK/time" <<'PY'
+import json, sys
+out, friction, t, travel, time = sys.argv[1:]
+d = json.load(open(out + "/summary.json"))
+inc = d["increments"]
+cpu = sum(float(x) for x in open(time).read().split()[-2:])
+f = d["solver"].get("factorizations", {})
+force = ", ".join(f"{v['normal_force']:.4f}" for v in d.get("results", {}).get("contact", {}).values())
+print(f"| {friction} | {t} | {d['status']} | {inc[-1]['load_factor'] * float(travel) if inc else 0:g} | {len(inc)} | "
+      f"{sum(i['cutbacks'] for i in inc)} | {d['solver']['newton_iterations']} | "
+      f"{' / '.join(str(v) for v in f.values())} | {force} | {cpu:.1f} |")
+PY
+    done
+  done
+}
+
 # the 36 x 6 pass with a rigid roll and a perfectly plastic slab, and Coulomb μ 0.25 (0.5 mm steps, 120 mm)
 rigid() {
   header
@@ -210,10 +240,11 @@ case $PART in
   sliding) sliding ;;
   cylinder) cylinder ;;
   rolling) rolling ;;
+  rolling36) rolling36 ;;
   rigid) rigid ;;
   sliding3d) sliding3d ;;
   cylinder3d) cylinder3d ;;
   rolling3d) rolling3d ;;
-  *) echo "run_contact_tangent_benchmarks: unknown part $PART (sliding, cylinder, rolling, rigid, sliding3d," \
+  *) echo "run_contact_tangent_benchmarks: unknown part $PART (sliding, cylinder, rolling, rolling36, rigid, sliding3d," \
        "cylinder3d or rolling3d)" >&2; exit 2 ;;
 esac
