@@ -20,6 +20,9 @@ void CholeskyOrLU::factorize(const SparseMatrix& A) {
       return;
     } catch (const NotPositiveDefinite&) {  // indefinite (or singular): LU from now on
       lu_ = std::make_unique<UmfpackFactorization>();
+      // no iterative refinement: the group's solves run inside the interface Krylov method, and UMFPACK's default
+      // steps (one in nearly every solve) cost 35 % of Example 5's CPU under feti 1x2x1 (BENCHMARKS-NONLINEAR)
+      lu_->set_refinement_steps(0);
       lu_->analyze(A);
     }
   }

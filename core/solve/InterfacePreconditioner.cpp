@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "solve/CholeskyOrLU.h"
 #include "solve/Factorization.h"
 #include "solve/Parallel.h"
 #include "solve/SolverStrategy.h"
@@ -125,7 +126,7 @@ class BlockPreconditioner final : public InterfacePreconditioner {
     if (interior.empty()) return;
     b.Kib = select(g.K, interior, b.boundary);
     const SparseMatrix Kii = select(g.K, interior, interior);
-    b.Kii = make_factorization("cholmod");
+    b.Kii = std::make_unique<CholeskyOrLU>();  // an indefinite K_ii (a body's tangent past a limit point) goes to LU
     b.Kii->analyze(Kii);
     b.Kii->factorize(Kii);
   }

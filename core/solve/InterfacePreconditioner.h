@@ -15,7 +15,7 @@ namespace rollsim {
 class InterfacePreconditioner {
  public:
   virtual ~InterfacePreconditioner() = default;
-  /// Prepares for the groups' current stiffness (factors K_ii for dirichlet).
+  /// Prepares for the groups' current stiffness (factors K_ii for dirichlet, by CholeskyOrLU: LU if indefinite).
   virtual void setup(const BlockSystem& sys) = 0;
   /// z = M⁻¹ w
   virtual Eigen::VectorXd apply(const BlockSystem& sys, const Eigen::VectorXd& w) const = 0;

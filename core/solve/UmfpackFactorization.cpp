@@ -16,6 +16,8 @@ UmfpackFactorization::~UmfpackFactorization() {
   if (symbolic_) umfpack_di_free_symbolic(&symbolic_);
 }
 
+void UmfpackFactorization::set_refinement_steps(int steps) { control_[UMFPACK_IRSTEP] = steps; }
+
 void UmfpackFactorization::free_numeric() {
   if (numeric_) umfpack_di_free_numeric(&numeric_);
   numeric_ = nullptr;
@@ -63,6 +65,7 @@ Eigen::VectorXd UmfpackFactorization::solve(const Eigen::VectorXd& b) {
                                       b.data(), numeric_, control_, info);
   if (status != UMFPACK_OK) throw std::runtime_error("UMFPACK solve failed (status " + std::to_string(status) + ")");
   stats_.solve_s += t.seconds();
+  refinement_steps_ += static_cast<long>(info[UMFPACK_IR_TAKEN]);
   return x;
 }
 

@@ -19,6 +19,11 @@ class UmfpackFactorization final : public Factorization {
   const FactorStats& stats() const override { return stats_; }
   /// UMFPACK's estimate of the reciprocal condition number, min |U_jj| / max |U_jj| of the last factorization
   double rcond() const { return rcond_; }
+  /// At most `steps` steps of iterative refinement per solve (UMFPACK's default: 2). Each step costs about a solve
+  /// and a product with A; a solve inside a Krylov method (a group's K⁺ under `mixed`/`feti`) can do without.
+  void set_refinement_steps(int steps);
+  /// Refinement steps taken over all solves so far.
+  long refinement_steps() const { return refinement_steps_; }
 
  private:
   void free_numeric();
@@ -28,6 +33,7 @@ class UmfpackFactorization final : public Factorization {
   double control_[20]{};
   FactorStats stats_;
   double rcond_ = 0;
+  long refinement_steps_ = 0;
 };
 
 }  // namespace rollsim
