@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "solve/CholeskyOrLU.h"
+#include "solve_error.h"
 
 using namespace rollsim;
 
@@ -19,11 +20,6 @@ SparseMatrix chain(int n, double k, double ground) {
   A.setFromTriplets(t.begin(), t.end());
   return A;
 }
-
-double solve_error(CholeskyOrLU& f, const SparseMatrix& A) {
-  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(A.rows(), 1, 2);
-  return (f.solve(A * x) - x).norm() / x.norm();
-}
 }  // namespace
 
 TEST(CholeskyOrLU, PositiveDefiniteStaysCholesky) {
@@ -32,7 +28,7 @@ TEST(CholeskyOrLU, PositiveDefiniteStaysCholesky) {
   f.analyze(A);
   f.factorize(A);
   EXPECT_FALSE(f.indefinite());
-  EXPECT_LT(solve_error(f, A), 1e-12);
+  EXPECT_LT(rollsim::testing::relative_solve_error(f, A), 1e-12);
   EXPECT_EQ(f.stats().factorizations, 1);
 }
 
@@ -42,11 +38,11 @@ TEST(CholeskyOrLU, IndefiniteGoesToLUAndStaysThere) {
   f.analyze(indefinite);
   f.factorize(indefinite);
   EXPECT_TRUE(f.indefinite());
-  EXPECT_LT(solve_error(f, indefinite), 1e-12);
+  EXPECT_LT(rollsim::testing::relative_solve_error(f, indefinite), 1e-12);
   const SparseMatrix definite = chain(20, 1.0, 1.0);  // later values: the LU, which serves them as well
   f.factorize(definite);
   EXPECT_TRUE(f.indefinite());
-  EXPECT_LT(solve_error(f, definite), 1e-12);
+  EXPECT_LT(rollsim::testing::relative_solve_error(f, definite), 1e-12);
 }
 
 TEST(CholeskyOrLU, SingularIsRefused) {

@@ -4,6 +4,7 @@
 
 #include "grid_matrix.h"
 #include "solve/UmfpackFactorization.h"
+#include "solve_error.h"
 
 using namespace rollsim;
 
@@ -15,11 +16,6 @@ SparseMatrix indefinite_matrix() {
   for (int i = 0; i < A.rows(); ++i) A.coeffRef(i, i) -= shift;
   return A;
 }
-
-double solve_error(UmfpackFactorization& f, const SparseMatrix& A) {
-  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(A.rows(), 1, 2);
-  return (f.solve(A * x) - x).norm() / x.norm();
-}
 }  // namespace
 
 TEST(UmfpackFactorization, RefinementStepsCanBeTurnedOff) {
@@ -27,8 +23,8 @@ TEST(UmfpackFactorization, RefinementStepsCanBeTurnedOff) {
   UmfpackFactorization refined, plain;
   plain.set_refinement_steps(0);
   for (UmfpackFactorization* f : {&refined, &plain}) f->analyze(A), f->factorize(A);
-  EXPECT_LT(solve_error(refined, A), 1e-10);
-  EXPECT_LT(solve_error(plain, A), 1e-10);
+  EXPECT_LT(rollsim::testing::relative_solve_error(refined, A), 1e-10);
+  EXPECT_LT(rollsim::testing::relative_solve_error(plain, A), 1e-10);
   EXPECT_GT(refined.refinement_steps(), 0) << "UMFPACK's default refines";
   EXPECT_EQ(plain.refinement_steps(), 0);
 }
