@@ -1,18 +1,13 @@
 #include "fem/FiniteStrainElement.h"
 
 #include <cmath>
-#include <vector>
+
+#include "material/KirchhoffModulus.h"
 
 namespace rollsim {
 
 namespace {
 using Matrix3 = Eigen::Matrix3d;
-
-Matrix3 tensor(const Voigt6& s) {
-  Matrix3 t;
-  t << s(0), s(3), s(5), s(3), s(1), s(4), s(5), s(4), s(2);
-  return t;
-}
 
 /// F = I + ∂u/∂X (3 × 3; plane strain: F33 = 1) from the reference gradients and the element displacements.
 template <int D>
@@ -51,7 +46,6 @@ bool FiniteStrainElement<D>::tangent_and_force(const typename El::Coords& X, con
   if (!(Jc > 0.0)) return false;
   const typename El::Gradients gc = Fc.topLeftCorner<D, D>().inverse().transpose() * centre0;  // ∂N/∂x at centre
   const int ns = mat.state_size();
-  std::vector<double> scratch(static_cast<size_t>(ns));
   for (int p = 0; p < NGP; ++p) {
     const Matrix3 F = deformation_gradient<D>(dN0[p], ue);
     const double J = F.topLeftCorner<D, D>().determinant();
@@ -59,8 +53,9 @@ bool FiniteStrainElement<D>::tangent_and_force(const typename El::Coords& X, con
     const Matrix3 Fb = fbar ? f_bar<D>(F, Jc) : F;
     const double* c = ns ? committed + p * ns : nullptr;
     Voigt6 tau_v;
-    mat.update_finite(Fb, c, ns ? trial + p * ns : nullptr, tau_v);
-    const Matrix3 tau = tensor(tau_v);
+    FiniteTangent ft;
+    mat.update_finite(Fb, c, ns ? trial + p * ns : nullptr, tau_v, Ke ? &ft : nullptr);
+    const Matrix3 tau = stress_tensor(tau_v);
     // f = ∫ σ(F̄) ∇_x N dv over the current volume (dv = J dV0): the reference-volume stress is (J / J̄) τ(F̄)
     const double ratio = fbar ? J / Jc : 1.0;
     const typename El::Gradients g = F.topLeftCorner<D, D>().inverse().transpose() * dN0[p];  // ∂N/∂x
@@ -69,37 +64,31 @@ bool FiniteStrainElement<D>::tangent_and_force(const typename El::Coords& X, con
     if (stresses)
       for (int k = 0; k < 6; ++k) (*stresses)[p][k] = tau_v(k) / (Fb.topLeftCorner<D, D>().determinant());
     if (!Ke) continue;
-    // A(i,j,m,l) = ∂τ_ij / ∂(∇_x u)_ml by central differences of τ((I + h E_ml) F̄)
-    Eigen::Matrix<double, 9, D * D> A;
-    const double h = 1e-7;
-    for (int m = 0; m < D; ++m)
-      for (int l = 0; l < D; ++l) {
-        Matrix3 E = Matrix3::Zero();
-        E(m, l) = h;
-        Voigt6 tp, tm;
-        mat.update_finite((Matrix3::Identity() + E) * Fb, c, ns ? scratch.data() : nullptr, tp);
-        mat.update_finite((Matrix3::Identity() - E) * Fb, c, ns ? scratch.data() : nullptr, tm);
-        const Matrix3 dtau = (tensor(tp) - tensor(tm)) / (2 * h);
-        A.col(m * D + l) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(dtau.data());
+    const Eigen::Matrix<double, 9, 9> A = kirchhoff_modulus(ft);  // ∂τ_ij / ∂(∇_x u)_ml of τ((I + ∇_x u) F̄)
+    // δτ (column-major) for δu = e_m N_b, in column b·D + m. With F-bar, δF̄ F̄⁻¹ gains (div_c δu − div δu) / D × I
+    // and δ(J / J̄) = (J / J̄)(div δu − div_c δu).
+    Eigen::Matrix<double, 9, NN * D> dtau;
+    Eigen::Matrix<double, 9, 1> q = Eigen::Matrix<double, 9, 1>::Zero();
+    for (int r = 0; r < D; ++r) q += A.col(r * 3 + r);
+    const Eigen::Map<const Eigen::Matrix<double, 9, 1>> tau9(tau.data());
+    for (int b = 0; b < NN; ++b)
+      for (int m = 0; m < D; ++m) {
+        auto column = dtau.col(b * D + m);
+        column.noalias() = A.middleCols<D>(m * 3) * g.col(b);
+        if (fbar) column += (gc(m, b) - g(m, b)) * (q / D - tau9);
       }
-    auto a_of = [&](int i, int j, int m, int l) { return A(j * 3 + i, m * D + l); };  // column-major dτ
+    // K_(ai)(bm) = (J / J̄) ∫ (Σ_j ∂N_a/∂x_j δτ_ij − Σ_j τ_ij ∂N_b/∂x_j ∂N_a/∂x_m) dV0
+    Eigen::Matrix<double, NN * D, 9> gradients = Eigen::Matrix<double, NN * D, 9>::Zero();  // (ai, ij): ∂N_a/∂x_j
+    for (int a = 0; a < NN; ++a)
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) gradients(a * D + i, j * 3 + i) = g(j, a);
+    const double w = ratio * dv0[p];
+    Ke->noalias() += w * (gradients * dtau);
+    const Eigen::Matrix<double, D, NN> tau_g = tau.topLeftCorner<D, D>() * g;
     for (int a = 0; a < NN; ++a)
       for (int i = 0; i < D; ++i)
         for (int b = 0; b < NN; ++b)
-          for (int m = 0; m < D; ++m) {
-            double k = 0;
-            for (int j = 0; j < D; ++j) {
-              double dtau_ij = 0;  // δτ_ij for δu = e_m N_b
-              for (int l = 0; l < D; ++l) dtau_ij += a_of(i, j, m, l) * g(l, b);
-              if (fbar) {  // δF̄ F̄⁻¹ gains (div_c δu − div δu) / D × I; δ(J / J̄) = (J / J̄)(div δu − div_c δu)
-                double q = 0;
-                for (int r = 0; r < D; ++r) q += a_of(i, j, r, r);
-                dtau_ij += q * (gc(m, b) - g(m, b)) / D + tau(i, j) * (g(m, b) - gc(m, b));
-              }
-              k += ratio * (g(j, a) * dtau_ij - tau(i, j) * g(m, a) * g(j, b));
-            }
-            (*Ke)(a * D + i, b * D + m) += k * dv0[p];
-          }
+          for (int m = 0; m < D; ++m) (*Ke)(a * D + i, b * D + m) -= w * g(m, a) * tau_g(i, b);
   }
   return true;
 }

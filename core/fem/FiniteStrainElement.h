@@ -4,8 +4,8 @@
 // finite-strain update (Material::update_finite), and — for the `bbar` formulation — F-bar (de Souza Neto, Perić,
 // Dunavant & Owen 1996): F̄ = (J_0 / J)^{1/d} F with J_0 at the element centre, which keeps isochoric plastic flow
 // from locking. The tangent is the exact linearisation (geometric stiffness and the F-bar term included) with the
-// material's spatial modulus dτ/d(∇_x u) taken by central differences of τ(F̄); it is unsymmetric with F-bar, and
-// the assembler keeps its symmetric part (CHOLMOD factors the bodies).
+// material's spatial modulus dτ/d(∇_x u) in closed form (material/KirchhoffModulus); it is unsymmetric with F-bar,
+// and the assembler keeps its symmetric part (CHOLMOD factors the bodies).
 #include "fem/SolidElement.h"
 
 namespace rollsim {

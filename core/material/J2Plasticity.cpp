@@ -81,15 +81,18 @@ void J2Plasticity::update(const Deformation& d, const double* committed, double*
             6.0 * G_ * G_ * (dg / q - 1.0 / (3.0 * G_ + H)) * (n * n.transpose());
 }
 
-void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau) const {
+void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
+                                 FiniteTangent* tangent) const {
   Eigen::Matrix3d Cp_inv;
   const double* c = committed;
   Cp_inv << 1 + c[0], c[3], c[5], c[3], 1 + c[1], c[4], c[5], c[4], 1 + c[2];
   Deformation d;
-  d.strain = log_strain(F * Cp_inv * F.transpose());  // elastic trial logarithmic strain
+  const Eigen::Matrix3d b = F * Cp_inv * F.transpose();  // elastic trial left Cauchy–Green tensor
+  d.strain = log_strain(b);
   double log_committed[kStateSize] = {0, 0, 0, 0, 0, 0, committed[kAlpha]}, log_trial[kStateSize];
-  Tangent6 unused;
-  update(d, log_committed, log_trial, tau, unused);
+  Tangent6 modulus;
+  update(d, log_committed, log_trial, tau, modulus);
+  if (tangent) *tangent = {modulus, b};
   std::copy(committed, committed + kStateSize, trial);
   trial[kAlpha] = log_trial[kAlpha];
   if (log_trial[kAlpha] == committed[kAlpha]) return;  // elastic: C_p unchanged

@@ -18,7 +18,8 @@ class J2Plasticity final : public Material {
   /// Multiplicative plasticity (Simo 1992): b_e trial = F C_p⁻¹ Fᵀ, the return above on ε_e = ½ ln b_e (Hencky
   /// elasticity, τ Kirchhoff), then C_p⁻¹ = F⁻¹ exp(2 ε_e) F⁻ᵀ. State: C_p⁻¹ − I (xx, yy, zz, xy, yz, zx) in the
   /// plastic-strain slots, α.
-  void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau) const override;
+  void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
+                     FiniteTangent* tangent) const override;
 
   /// σ_y(α) and its slope dσ_y/dα [stress].
   double yield_stress(double alpha) const;

@@ -35,11 +35,20 @@ Eigen::Matrix3d strain_tensor(const Voigt6& e) {
   return E;
 }
 
-void Material::update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau) const {
+Eigen::Matrix3d stress_tensor(const Voigt6& s) {
+  Eigen::Matrix3d t;
+  t << s(0), s(3), s(5), s(3), s(1), s(4), s(5), s(4), s(2);
+  return t;
+}
+
+void Material::update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
+                             FiniteTangent* tangent) const {
   Deformation d;
-  d.strain = log_strain(F * F.transpose());
-  Tangent6 unused;
-  update(d, committed, trial, tau, unused);
+  const Eigen::Matrix3d b = F * F.transpose();
+  d.strain = log_strain(b);
+  Tangent6 modulus;
+  update(d, committed, trial, tau, modulus);
+  if (tangent) *tangent = {modulus, b};
 }
 
 std::unique_ptr<Material> make_material(const MaterialData& data) {

@@ -18,6 +18,13 @@ struct Deformation {
   Voigt6 strain = Voigt6::Zero();
 };
 
+/// What a finite-strain update's spatial tangent is made of (material/KirchhoffModulus): the algorithmic modulus
+/// dτ/dε of its return (ε = ½ ln b, engineering shears) and the elastic trial left Cauchy–Green tensor b.
+struct FiniteTangent {
+  Tangent6 modulus;
+  Eigen::Matrix3d b;
+};
+
 class Material {
  public:
   virtual ~Material() = default;
@@ -32,9 +39,11 @@ class Material {
                       Tangent6& tangent) const = 0;
   /// Finite strain (isotropic, logarithmic elastic strains — Simo 1992): the Kirchhoff stress τ (Voigt, tensor
   /// components) from the deformation gradient F and the committed state, the trial state written (both null
-  /// without state). This default, for materials without state, is Hencky's hyperelastic law: τ = update(ln V),
-  /// V² = F Fᵀ. Plastic materials override it with the exponential map around their return.
-  virtual void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau) const;
+  /// without state), and what its tangent needs when `tangent` is not null. This default, for materials without
+  /// state, is Hencky's hyperelastic law: τ = update(ln V), V² = F Fᵀ. Plastic materials override it with the
+  /// exponential map around their return.
+  virtual void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
+                             FiniteTangent* tangent) const;
   /// The tangent at zero deformation and the initial state: the stiffness of a linear analysis.
   Tangent6 initial_tangent() const;
 };
@@ -44,8 +53,10 @@ std::unique_ptr<Material> make_material(const MaterialData& data);
 
 /// ½ ln(b) of a symmetric positive definite b, as a Voigt strain (engineering shears).
 Voigt6 log_strain(const Eigen::Matrix3d& b);
-/// The symmetric tensor of a Voigt strain (engineering shears halved), and back.
+/// The symmetric tensor of a Voigt strain (engineering shears halved).
 Eigen::Matrix3d strain_tensor(const Voigt6& e);
+/// The symmetric tensor of a Voigt stress (tensor shears).
+Eigen::Matrix3d stress_tensor(const Voigt6& s);
 
 /// Von Mises equivalent stress of a 6-component stress (xx, yy, zz, xy, yz, zx).
 double von_mises(const double* s6);
