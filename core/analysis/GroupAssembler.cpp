@@ -53,7 +53,8 @@ InvertedElement GroupAssembler::assemble_newton(const std::vector<size_t>& which
         assembler(g).assemble(u, assembled_here(g) ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
     if (bad >= 0) return InvertedElement{static_cast<int>(g), bad};
     group.f = src.dofs->restrict_to_free(at.load * src.nodal_load) - f_int;
-    if (with_tangent[g] && group.R.cols() && src.body->kinematics == Kinematics::Finite) follow_kernel(group, src, u);
+    if (with_tangent[g] && group.R.cols() && src.body->kinematics == Kinematics::Finite)
+      follow_kernel(group, src, u, assembled_here(g));
     evaluations_[g] += with_tangent[g];
   }
   return {};
@@ -70,9 +71,10 @@ void GroupAssembler::set_local(const std::vector<size_t>& groups) {
   for (size_t g : groups) local_.at(g) = 1;
 }
 
-void GroupAssembler::follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u) {
-  Eigen::MatrixXd R = kernel_basis(src.body->mesh, *src.dofs, &u);
-  if (R.cols() == group.R.cols()) group.R = std::move(R);
+void GroupAssembler::follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u, bool tangent_here) {
+  Eigen::MatrixXd R = kernel_basis(src.body->mesh, *src.dofs, &u);  // the geometric modes, turned with the body
+  if (R.cols() < group.R.cols()) return;
+  group.R = tangent_here ? stiffness_kernel(group.K, R) : std::move(R);  // a stressed body: translations only
 }
 
 void GroupAssembler::commit() {

@@ -76,7 +76,9 @@ class GroupAssembler {
   const std::vector<long>& tangent_evaluations() const { return evaluations_; }
 
  private:
-  static void follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u);
+  /// A finite-strain group's kernel after a tangent: the geometric modes of the displaced body, cut to those its
+  /// tangent maps to zero when that tangent was assembled here (model/RigidModes' stiffness_kernel).
+  static void follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u, bool tangent_here);
   /// Group g's Assembler (sparsity pattern and scatter map), built on first use and kept: a Newton iteration then
   /// writes values only (the pattern was a third of an assembly of the 16³ cube, rebuilt at every iteration).
   const Assembler& assembler(size_t g) const;

@@ -101,6 +101,20 @@ Eigen::MatrixXd kernel_basis(const Mesh& mesh, const DofMap& dofs, const Eigen::
   return qr.householderQ() * Eigen::MatrixXd::Identity(Rf.rows(), Rf.cols());
 }
 
+Eigen::MatrixXd stiffness_kernel(const SparseMatrix& K, const Eigen::MatrixXd& R, double tolerance) {
+  if (R.cols() == 0 || K.rows() != R.rows()) return R;
+  const Eigen::MatrixXd KR = K * R;
+  const double scale = K.diagonal().cwiseAbs().maxCoeff();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(KR, Eigen::ComputeThinV);
+  std::vector<Eigen::Index> null;
+  for (Eigen::Index k = 0; k < svd.singularValues().size(); ++k)
+    if (svd.singularValues()[k] <= tolerance * scale) null.push_back(k);
+  if (static_cast<Eigen::Index>(null.size()) == R.cols()) return R;
+  Eigen::MatrixXd V(R.cols(), static_cast<Eigen::Index>(null.size()));
+  for (size_t k = 0; k < null.size(); ++k) V.col(static_cast<Eigen::Index>(k)) = svd.matrixV().col(null[k]);
+  return R * V;
+}
+
 std::vector<std::string> free_rigid_modes(const Model& model, int b) {
   const Body& body = model.bodies[b];
   const DofMap dofs(body, b, model.displacements);

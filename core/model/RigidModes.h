@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "model/Model.h"
+#include "model/SparseMatrix.h"
 
 namespace rollsim {
 
@@ -33,6 +34,11 @@ class DofMap;
 /// exact for a connected body of solid elements — no numerical rank decision on K). 0 columns when held.
 /// With `u`: in the displaced configuration, as rigid_modes.
 Eigen::MatrixXd kernel_basis(const Mesh& mesh, const DofMap& dofs, const Eigen::VectorXd* u = nullptr);
+/// The combinations of R's orthonormal columns that K maps to zero: |K R c| ≤ `tolerance` × K's largest diagonal
+/// entry. A stressed body's finite-strain tangent turns its internal forces with a rotation (K R_rot ≠ 0): its
+/// kernel among the geometric modes is the translations only, and treating the rotations as kernel would invert a
+/// different tangent. An unstressed one keeps all of R. Orthonormal columns; R itself when K is not R's size.
+Eigen::MatrixXd stiffness_kernel(const SparseMatrix& K, const Eigen::MatrixXd& R, double tolerance = 1e-8);
 
 /// Names of the rigid-body motions the displacement conditions of body `b` do not prevent,
 /// e.g. {"translation along y", "rotation about z"}; empty when the body is held.

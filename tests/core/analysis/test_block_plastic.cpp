@@ -40,3 +40,18 @@ TEST(BlockPlastic, DirectAndDdTwoAgreeAndDdTwoKeepsFactors) {
   const long iterations = static_cast<long>(dd2.newton.size()), subdomains = 2;
   EXPECT_LT(base_factorizations(dd2), subdomains * iterations) << "DD-II keeps some subdomain's factor";
 }
+
+// The base torn across its height (1x1x2) leaves its top layer floating. Stressed, that subdomain's tangent has only
+// the translations as kernel; with its rotations taken as kernel too, each FETI solve inverted a different tangent
+// and Newton converged linearly (twice `direct`'s iterations on the full Example 5). Now the same iterations.
+TEST(BlockPlastic, AFloatingSubdomainTakesDirectsNewtonIterations) {
+  const Results direct = run_with("direct", "always");
+  const Results dd1 = run_with("feti", "always", "1x1x2");
+  ASSERT_EQ(direct.status.status, Status::converged) << direct.status.message;
+  ASSERT_EQ(dd1.status.status, Status::converged) << dd1.status.message;
+  const double force = direct.contacts.at(0).normal_force;
+  EXPECT_NEAR(dd1.contacts.at(0).normal_force, force, 1e-6 * force);
+  const long increments = static_cast<long>(direct.increments.size());
+  EXPECT_LE(std::labs(static_cast<long>(dd1.newton.size()) - static_cast<long>(direct.newton.size())), increments)
+      << "direct " << direct.newton.size() << ", feti 1x1x2 " << dd1.newton.size() << " Newton iterations";
+}

@@ -78,3 +78,38 @@ TEST(KernelBasis, ModeRowsAtChosenDofsAreTheBodysModes) {
       EXPECT_LT((rows.row(static_cast<long>(i)) - R.row(dofs[i])).norm(), 1e-15) << "dof " << dofs[i];
   }
 }
+
+// stiffness_kernel: of a floating block's finite-strain tangent, all six geometric modes while it is unstressed,
+// the three translations once it is stretched (its rotations turn the internal forces: K R_rot ≠ 0).
+TEST(KernelBasis, AStressedFiniteStrainTangentKeepsOnlyTheTranslations) {
+  BlockSpec spec;
+  spec.dim = 3;
+  spec.n = {2, 2, 2};
+  Body body;
+  body.mesh = make_block(spec);
+  body.material = {1000.0, 0.3};
+  body.kinematics = Kinematics::Finite;
+  const DofMap dofs(body, 0, {});
+  const Assembler assembler(body, dofs);
+  auto kernel_at = [&](double stretch) {
+    Eigen::VectorXd u(body.mesh.num_nodes() * 3);
+    for (int n = 0; n < body.mesh.num_nodes(); ++n)
+      for (int c = 0; c < 3; ++c) u[n * 3 + c] = stretch * (c + 1) * body.mesh.nodes[n][c];  // unequal stretches
+    IntegrationState state = IntegrationState::initial(body);
+    SparseMatrix K;
+    Eigen::VectorXd f;
+    EXPECT_LT(assembler.assemble(u, &K, f, state), 0);
+    const Eigen::MatrixXd R = stiffness_kernel(K, kernel_basis(body.mesh, dofs, &u));
+    EXPECT_LT((K * R).cwiseAbs().maxCoeff(), 1e-10 * K.coeffs().cwiseAbs().maxCoeff());
+    EXPECT_LT((R.transpose() * R - Eigen::MatrixXd::Identity(R.cols(), R.cols())).norm(), 1e-12);
+    return R;
+  };
+  EXPECT_EQ(kernel_at(0.0).cols(), 6);
+  const Eigen::MatrixXd R = kernel_at(0.05);
+  ASSERT_EQ(R.cols(), 3);
+  for (int c = 0; c < 3; ++c) {  // each translation lies in span R
+    Eigen::VectorXd t = Eigen::VectorXd::Zero(R.rows());
+    for (Eigen::Index i = c; i < t.size(); i += 3) t[i] = 1.0;
+    EXPECT_LT((t - R * (R.transpose() * t)).norm(), 1e-10 * t.norm()) << "translation " << c;
+  }
+}
