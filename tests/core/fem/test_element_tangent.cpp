@@ -5,21 +5,13 @@
 
 #include <random>
 
+#include "../../common/SaturatingSteel.h"
 #include "fem/SolidElement.h"
 
 using namespace rollsim;
 
 namespace {
-MaterialData plastic() {
-  MaterialData m;
-  m.E = 200e3;
-  m.nu = 0.3;
-  m.yield_stress = 250;
-  m.hardening_modulus = 2000;
-  m.saturation_stress = 400;
-  m.saturation_exponent = 10;
-  return m;
-}
+MaterialData plastic() { return rollsim::testing::saturating_steel(); }
 
 template <int D>
 typename SolidElement<D>::Coords distorted() {
