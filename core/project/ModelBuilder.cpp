@@ -487,6 +487,7 @@ SolverOptions solver_options(const Project& project) {
   o.multipliers = s.at("multipliers").get<std::string>();
   o.projector = s.at("projector").get<std::string>();
   o.interface_start = s.at("interface_start").get<std::string>();
+  o.interface_solver = s.at("interface_solver").get<std::string>();
   o.petsc_method = s.at("petsc_method").get<std::string>();
   o.petsc_options = s.at("petsc_options").get<std::string>();
   return o;

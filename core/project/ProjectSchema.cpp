@@ -402,6 +402,12 @@ const ObjectSchema& solver_schema() {
               "λ with Gᵀλ = e, the paper's) or previous (the last iteration's multipliers of the rows that stay, its "
               "tolerance still relative to the zero start's residual: 27–30 % fewer CG iterations on the 3D pass, "
               "the roll force within 5e-6 of zero's, docs/BENCHMARKS-ROLLING.md)"),
+       choice("interface_solver", interface_solver_names(), "krylov",
+              "how `mixed` and `feti` solve their condensed interface problem: krylov (projected CG, or GMRES when "
+              "slipping friction makes it unsymmetric; the paper's, F never formed) or dense (F formed from each "
+              "group's flexibility on the dofs its constraints touch — one block solve per touched dof, kept while "
+              "the group keeps its factor — and factored by dense LU: exact λ, for interfaces of up to a few "
+              "thousand multipliers)"),
        choice("petsc_method", petsc_method_names(), "bddc",
               "method of `petsc`: bddc (PCBDDC preconditioning CG on the whole problem) or fetidp (KSPFETIDP: CG on "
               "the FETI-DP multipliers, the inner BDDC's coarse space)"),

@@ -51,6 +51,12 @@ Eigen::VectorXd CholeskyOrLU::solve(const Eigen::VectorXd& b) {
   return x;
 }
 
+Eigen::MatrixXd CholeskyOrLU::solve_columns(const Eigen::MatrixXd& B) {
+  Eigen::MatrixXd X = lu_ ? lu_->solve_columns(B) : cholesky_.solve_columns(B);
+  stats_.solve_s = cholesky_.stats().solve_s + (lu_ ? lu_->stats().solve_s : 0.0);
+  return X;
+}
+
 void CholeskyOrLU::sum_stats() {
   const FactorStats& c = cholesky_.stats();
   stats_ = c;

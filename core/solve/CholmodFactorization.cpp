@@ -127,13 +127,25 @@ void CholmodFactorization::factorize(const SparseMatrix& A) {
   }
 }
 
-Eigen::VectorXd CholmodFactorization::solve(const Eigen::VectorXd& b) {
-  Stopwatch t;
+void CholmodFactorization::check_factored() const {
   if (!factor_ || !factor_->is_super || factor_->minor < factor_->n)
     throw std::runtime_error("CHOLMOD solve before a successful supernodal factorization");
+}
+
+Eigen::VectorXd CholmodFactorization::solve(const Eigen::VectorXd& b) {
+  Stopwatch t;
+  check_factored();
   Eigen::VectorXd x = supernodal_solve(*factor_, b, work_);
   stats_.solve_s += t.seconds();
   return x;
+}
+
+Eigen::MatrixXd CholmodFactorization::solve_columns(const Eigen::MatrixXd& B) {
+  Stopwatch t;
+  check_factored();
+  Eigen::MatrixXd X = supernodal_solve(*factor_, B);
+  stats_.solve_s += t.seconds();
+  return X;
 }
 
 }  // namespace rollsim

@@ -43,9 +43,11 @@ class CholmodFactorization final : public Factorization {
   void analyze(const SparseMatrix& A) override;
   void factorize(const SparseMatrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
+  Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) override;
   const FactorStats& stats() const override { return stats_; }
 
  private:
+  void check_factored() const;
   CholmodSettings settings_;
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;

@@ -40,4 +40,18 @@ ConstraintBasis independent_rows(const SparseMatrix& C) {
   return out;
 }
 
+SparseMatrix stacked_constraints(const BlockSystem& sys) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  long offset = 0;
+  for (const Group& g : sys.groups) {
+    for (int j = 0; j < g.C.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(g.C, j); it; ++it)
+        t.emplace_back(it.row(), static_cast<int>(offset + j), it.value());
+    offset += g.C.cols();
+  }
+  SparseMatrix C(static_cast<int>(sys.num_multipliers()), static_cast<int>(offset));
+  C.setFromTriplets(t.begin(), t.end());
+  return C;
+}
+
 }  // namespace rollsim

@@ -7,7 +7,7 @@
 // it with pivots of that size: λ of 1e40 and a correction that is no solution. `direct` keeps the independent rows.
 #include <vector>
 
-#include "solve/Factorization.h"
+#include "solve/BlockSystem.h"
 
 namespace rollsim {
 
@@ -24,5 +24,8 @@ struct ConstraintBasis {
 /// The rows of C (multipliers × dofs) that are independent to a relative tolerance: a row whose part orthogonal to
 /// the rows kept before it is below 1e-10 of the largest row norm is dependent (rank-revealing sparse QR of Cᵀ).
 ConstraintBasis independent_rows(const SparseMatrix& C);
+
+/// Every group's C side by side: the multipliers × all dofs.
+SparseMatrix stacked_constraints(const BlockSystem& sys);
 
 }  // namespace rollsim

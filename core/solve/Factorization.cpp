@@ -7,6 +7,12 @@
 
 namespace rollsim {
 
+Eigen::MatrixXd Factorization::solve_columns(const Eigen::MatrixXd& B) {
+  Eigen::MatrixXd X(B.rows(), B.cols());
+  for (Eigen::Index j = 0; j < B.cols(); ++j) X.col(j) = solve(B.col(j));
+  return X;
+}
+
 std::unique_ptr<Factorization> make_factorization(const std::string& kind, int trailing) {
   if (kind == "skyline") return std::make_unique<SkylineFactorization>(trailing);
   if (kind == "cholmod" && trailing > 0) return std::make_unique<UmfpackFactorization>();

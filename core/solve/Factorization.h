@@ -32,6 +32,8 @@ class Factorization {
   virtual void analyze(const SparseMatrix& A) = 0;
   virtual void factorize(const SparseMatrix& A) = 0;
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) = 0;
+  /// X = A⁻¹ B for many right-hand sides at once (by default one solve per column).
+  virtual Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B);
   virtual const FactorStats& stats() const = 0;
 };
 

@@ -30,19 +30,6 @@ SparseMatrix select_rows(const SparseMatrix& C, const std::vector<int>& kept) {
   return S * C;
 }
 
-/// Every group's C side by side: the multipliers × all dofs.
-SparseMatrix stacked_constraints(const BlockSystem& sys) {
-  Triplets t;
-  long offset = 0;
-  for (const Group& g : sys.groups) {
-    add_block(t, g.C, 0, offset, false);
-    offset += g.C.cols();
-  }
-  SparseMatrix C(static_cast<int>(sys.num_multipliers()), static_cast<int>(offset));
-  C.setFromTriplets(t.begin(), t.end());
-  return C;
-}
-
 /// Paper eq. (1): the groups' K on the diagonal, C and Cᵀ (C_eqᵀ) in the border, multipliers last — only the
 /// independent rows `kept` of C (a dependent row would make the matrix singular).
 SparseMatrix global_matrix(const BlockSystem& sys, const std::vector<int>& kept) {

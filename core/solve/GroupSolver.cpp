@@ -86,4 +86,14 @@ Eigen::VectorXd GroupSolver::apply(const Eigen::VectorXd& b) {
   return x;
 }
 
+Eigen::MatrixXd GroupSolver::apply_columns(const Eigen::MatrixXd& B) {
+  if (fixed_.empty()) return factor_->solve_columns(B);
+  Eigen::MatrixXd Bp(static_cast<Eigen::Index>(kept_.size()), B.cols());
+  for (size_t i = 0; i < kept_.size(); ++i) Bp.row(static_cast<Eigen::Index>(i)) = B.row(kept_[i]);
+  const Eigen::MatrixXd Xp = factor_->solve_columns(Bp);
+  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(B.rows(), B.cols());
+  for (size_t i = 0; i < kept_.size(); ++i) X.row(kept_[i]) = Xp.row(static_cast<Eigen::Index>(i));
+  return X;
+}
+
 }  // namespace rollsim

@@ -21,6 +21,8 @@ class GroupSolver {
   void factorize(const Group& g);
   /// K⁺ b
   Eigen::VectorXd apply(const Eigen::VectorXd& b);
+  /// K⁺ B for many columns at once (Factorization::solve_columns)
+  Eigen::MatrixXd apply_columns(const Eigen::MatrixXd& B);
   const FactorStats& stats() const { return factor_->stats(); }
   const std::vector<int>& fixed_dofs() const { return fixed_; }
   /// True when the factor is of an indefinite matrix (K⁺ is then indefinite, and so may the interface operator be).

@@ -3,12 +3,17 @@
 #include <algorithm>
 
 #include "solve/Blas.h"
+#include "solve/DenseInterfaceSolve.h"
 #include "solve/Parallel.h"
 #include "solve/ProjectedGMRES.h"
 #include "solve/SparseCompare.h"
 #include "solve/Stopwatch.h"
 
 namespace rollsim {
+
+namespace {
+constexpr int kMaxInterfaceIterations = 10000;
+}  // namespace
 
 MixedStrategy::MixedStrategy(SolverOptions options, bool subdomains, std::string factorization)
     : options_(std::move(options)),
@@ -33,6 +38,7 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
   if (groups_.size() != sys.groups.size()) {
     groups_.clear();
     for (size_t g = 0; g < sys.groups.size(); ++g) groups_.emplace_back(kind_);
+    flexibility_.assign(sys.groups.size(), InterfaceFlexibility());
     factored_version_.assign(sys.groups.size(), -1);
   }
   std::vector<size_t> todo;
@@ -115,11 +121,48 @@ bool MixedStrategy::any_indefinite() const {
   return std::any_of(groups_.begin(), groups_.end(), [](const GroupSolver& g) { return g.indefinite(); });
 }
 
-bool MixedStrategy::same_constraints(const BlockSystem& sys) const {
-  if (preconditioned_C_.size() != sys.groups.size()) return false;
+bool MixedStrategy::same_constraints(const BlockSystem& sys, const std::vector<SparseMatrix>& C) {
+  if (C.size() != sys.groups.size()) return false;
   for (size_t g = 0; g < sys.groups.size(); ++g)
-    if (!same_matrix(preconditioned_C_[g], sys.groups[g].C)) return false;
+    if (!same_matrix(C[g], sys.groups[g].C)) return false;
   return true;
+}
+
+Eigen::MatrixXd MixedStrategy::formed_interface(const BlockSystem& sys) {
+  const size_t n = sys.groups.size();
+  std::vector<Eigen::MatrixXd> parts(n);
+  for_each_group(n, options_.threads, [&](size_t g) {
+    if (sys.groups[g].C.nonZeros()) parts[g] = flexibility_[g].interface_block(sys.groups[g], groups_[g]);
+  });
+  const auto m = static_cast<Eigen::Index>(sys.num_multipliers());
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(m, m);
+  for (const Eigen::MatrixXd& p : parts)  // in group order: the same sum for any thread count
+    if (p.size()) F += p;
+  return F;
+}
+
+ProjectedCGResult MixedStrategy::solve_interface(const BlockSystem& sys, InterfaceProblem& problem,
+                                                 bool new_preconditioner, int solve, AnalysisObserver* observer) {
+  if (options_.interface_solver == "dense") {
+    if (!same_constraints(sys, basis_C_)) {  // the independent rows, found again when a constraint block changed
+      basis_ = independent_rows(stacked_constraints(sys));
+      basis_C_.clear();
+      for (const Group& g : sys.groups) basis_C_.push_back(g.C);
+    }
+    ProjectedCGResult r = dense_interface_solve(formed_interface(sys), problem, basis_.kept);
+    r.lambda = basis_.minimum_norm(r.lambda);  // a dependent row's share spread as the Krylov solvers spread it
+    return r;
+  }
+  if (options_.interface_start == "previous") problem.start = sys.lambda_start;
+  // an indefinite group factor (CholeskyOrLU) makes F symmetric but possibly indefinite on ker Gᵀ, where CG may
+  // break down: GMRES then, as for an unsymmetric F; positive definite groups keep CG
+  const bool krylov_gmres = problem.unsymmetric || any_indefinite();
+  if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols() && !krylov_gmres)
+    problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
+  ProjectedCGOptions cg{options_.cg_tolerance, kMaxInterfaceIterations, {}, solve};
+  if (preconditioner_) cg.preconditioner = [&](const Eigen::VectorXd& w) { return preconditioner_->apply(sys, w); };
+  gmres_solves_ += krylov_gmres;
+  return krylov_gmres ? projected_gmres(problem, cg, observer) : projected_cg(problem, cg, observer);
 }
 
 BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
@@ -135,7 +178,7 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   }();
   factorize_changed(sys, observer);
   Stopwatch t;
-  const bool new_preconditioner = preconditioner_ && (refactor || !same_constraints(sys));
+  const bool new_preconditioner = preconditioner_ && (refactor || !same_constraints(sys, preconditioned_C_));
   if (new_preconditioner) {
     preconditioner_->setup(sys);
     preconditioned_C_.clear();
@@ -144,22 +187,13 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   std::vector<Eigen::VectorXd> Kf(sys.groups.size());
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) { Kf[g] = groups_[g].apply(sys.groups[g].f); });
   InterfaceProblem problem = interface_problem(sys, Kf);
-  if (options_.interface_start == "previous") problem.start = sys.lambda_start;
-  // an indefinite group factor (CholeskyOrLU) makes F symmetric but possibly indefinite on ker Gᵀ, where CG may
-  // break down: GMRES then, as for an unsymmetric F; positive definite groups keep CG
-  const bool krylov_gmres = problem.unsymmetric || any_indefinite();
-  if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols() && !krylov_gmres)
-    problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
-  ProjectedCGOptions cg{options_.cg_tolerance, 10000, {}, solve};
-  if (preconditioner_) cg.preconditioner = [&](const Eigen::VectorXd& w) { return preconditioner_->apply(sys, w); };
-  last_ = krylov_gmres ? projected_gmres(problem, cg, observer) : projected_cg(problem, cg, observer);
-  gmres_solves_ += krylov_gmres;
+  last_ = solve_interface(sys, problem, new_preconditioner, solve, observer);
   stats_.cg_iterations += last_.iterations;
   stats_.cg_lambda_min = last_.lambda_min;
   stats_.cg_lambda_max = last_.lambda_max;
   BlockSolution out;
   out.lambda = last_.lambda;
-  out.status = cg_status(last_, cg);
+  out.status = cg_status(last_, ProjectedCGOptions{options_.cg_tolerance, kMaxInterfaceIterations, {}, solve});
   std::vector<long> first_mode(sys.groups.size(), 0);  // column of group g's modes in α
   for (size_t g = 1; g < sys.groups.size(); ++g) first_mode[g] = first_mode[g - 1] + sys.groups[g - 1].R.cols();
   out.u.resize(sys.groups.size());

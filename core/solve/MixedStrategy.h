@@ -5,7 +5,9 @@
 // u_g = K_g⁺(f_g − C_gᵀλ) + R_g α_g. A group is refactored only when its stiffness changed (Group::version).
 #include <functional>
 
+#include "solve/ConstraintBasis.h"
 #include "solve/GroupSolver.h"
+#include "solve/InterfaceFlexibility.h"
 #include "solve/InterfacePreconditioner.h"
 #include "solve/ProjectedCG.h"
 #include "solve/SolverStrategy.h"
@@ -22,8 +24,10 @@ class MixedStrategy final : public SolverStrategy {
   const SolverOptions& options() const override { return options_; }
   /// A group with C_eq (slipping Coulomb friction) makes the interface unsymmetric: projected GMRES solves it.
   bool solves_unsymmetric() const override { return true; }
-  /// λ is as accurate as the interface CG's relative tolerance
-  double multiplier_tolerance() const override { return options_.cg_tolerance; }
+  /// λ is as accurate as the interface CG's relative tolerance (dense: exact, as `direct`'s)
+  double multiplier_tolerance() const override {
+    return options_.interface_solver == "dense" ? SolverStrategy::multiplier_tolerance() : options_.cg_tolerance;
+  }
   /// The last interface solve (residual history, constraint error), for tests and reports.
   const ProjectedCGResult& last_interface_solve() const { return last_; }
   /// Interface solves done by projected GMRES: an unsymmetric F (friction), or an indefinite group factor.
@@ -32,6 +36,11 @@ class MixedStrategy final : public SolverStrategy {
  private:
   void factorize_changed(const BlockSystem& sys, AnalysisObserver* observer);
   InterfaceProblem interface_problem(const BlockSystem& sys, const std::vector<Eigen::VectorXd>& Kf);
+  /// F = Σ_g C_g K_g⁺ C_eq,gᵀ formed (the `dense` interface solver), each group's part concurrently
+  Eigen::MatrixXd formed_interface(const BlockSystem& sys);
+  /// The interface solve: dense, or projected CG / GMRES (with the preconditioner, when there is one)
+  ProjectedCGResult solve_interface(const BlockSystem& sys, InterfaceProblem& problem, bool new_preconditioner,
+                                    int solve, AnalysisObserver* observer);
 
   /// y = Σ_g C_g op(g) over the groups with constraints: op(g) (a vector on group g's free dofs) concurrently on
   /// options_.threads threads, the products with the sparse C_g added in group order, so the result is
@@ -39,9 +48,9 @@ class MixedStrategy final : public SolverStrategy {
   Eigen::VectorXd sum_over_groups(const BlockSystem& sys, const std::function<Eigen::VectorXd(size_t)>& op) const;
   /// Q G = M⁻¹ G for the weighted projector, kept while neither the preconditioner nor G changes (Newton
   /// iterations and active-set passes that refactor nothing reuse it).
-  /// True when every group's constraint block is the one the preconditioner was set up with (an active set that
-  /// swaps rows while keeping their count is a change).
-  bool same_constraints(const BlockSystem& sys) const;
+  /// True when every group's constraint block is the one in `C` (an active set that swaps rows while keeping their
+  /// count is a change): the preconditioner's, or the dense solver's independent rows'.
+  static bool same_constraints(const BlockSystem& sys, const std::vector<SparseMatrix>& C);
   /// Some group's factor is of an indefinite tangent (GroupSolver::indefinite): the interface is solved by GMRES.
   bool any_indefinite() const;
   const SparseMatrix& weighted_modes(const BlockSystem& sys, const SparseMatrix& G, bool preconditioner_changed);
@@ -53,6 +62,9 @@ class MixedStrategy final : public SolverStrategy {
   SparseMatrix QG_, QG_of_;                     // weighted_modes() and the G it was computed for
   std::string kind_;
   std::vector<GroupSolver> groups_;
+  std::vector<InterfaceFlexibility> flexibility_;  // per group, for the dense interface solver
+  ConstraintBasis basis_;                          // dense: the independent constraint rows …
+  std::vector<SparseMatrix> basis_C_;              // … of these constraint blocks
   std::vector<long> factored_version_;
   ProjectedCGResult last_;
   long gmres_solves_ = 0;

@@ -52,6 +52,11 @@ const std::vector<std::string>& interface_start_names() {
   return names;
 }
 
+const std::vector<std::string>& interface_solver_names() {
+  static const std::vector<std::string> names{"krylov", "dense"};
+  return names;
+}
+
 const std::vector<std::string>& petsc_method_names() {
   static const std::vector<std::string> names{"bddc", "fetidp"};
   return names;

@@ -22,6 +22,8 @@ struct SolverOptions {
                                              // identity (Q = I, the paper's) or preconditioner (Q = M⁻¹)
   std::string interface_start = "zero";      // mixed / feti: the interface CG starts from BlockSystem::lambda_start
                                              // (previous) or from the least-norm feasible λ (zero, the paper's)
+  std::string interface_solver = "krylov";   // mixed / feti: projected CG / GMRES (krylov, the paper's) or F formed
+                                             // and factored (dense: InterfaceFlexibility, DenseInterfaceSolve)
   std::string petsc_method = "bddc";         // petsc: bddc (PCBDDC in CG) or fetidp (KSPFETIDP)
   std::string petsc_options;                 // petsc: options passed through to PETSc, e.g. "-ksp_monitor"
 };
@@ -62,11 +64,12 @@ struct StrategyInfo {
 };
 
 /// The words of each solver option, named once: the schema, the CLI's checks and help, and the strategies read them.
-const std::vector<std::string>& preconditioner_names();   // none, lumped, dirichlet
-const std::vector<std::string>& multiplier_names();       // nonredundant, redundant
-const std::vector<std::string>& projector_names();        // identity (Q = I), preconditioner (Q = M⁻¹)
-const std::vector<std::string>& petsc_method_names();     // bddc, fetidp
-const std::vector<std::string>& interface_start_names();  // zero, previous (the last Newton iteration's λ)
+const std::vector<std::string>& preconditioner_names();    // none, lumped, dirichlet
+const std::vector<std::string>& multiplier_names();        // nonredundant, redundant
+const std::vector<std::string>& projector_names();         // identity (Q = I), preconditioner (Q = M⁻¹)
+const std::vector<std::string>& petsc_method_names();      // bddc, fetidp
+const std::vector<std::string>& interface_start_names();   // zero, previous (the last Newton iteration's λ)
+const std::vector<std::string>& interface_solver_names();  // krylov, dense
 /// "a, b or c": for messages that list the valid words.
 std::string one_of(const std::vector<std::string>& words);
 

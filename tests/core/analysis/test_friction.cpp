@@ -16,6 +16,7 @@ using json = nlohmann::json;
 namespace {
 const double mu = 0.3;
 
+/// `mode`: a solver mode, or "mixed+dense" (mixed with its interface formed and factored, unsymmetric when slipping)
 json drag(double distance, const std::string& type, const std::string& mode) {
   auto block = [](const std::string& name, json mesh) {
     return json{{"name", name}, {"material", name}, {"kinematics", "finite"}, {"mesh", mesh}};
@@ -36,7 +37,10 @@ json drag(double distance, const std::string& type, const std::string& mode) {
        {{{"type", "displacement"}, {"body", "plane"}, {"set", "ymin"}, {"ux", 0.0}, {"uy", 0.0}},
         {{"type", "displacement"}, {"body", "block"}, {"set", "ymax"}, {"ux", distance}, {"uy", -0.01}}}},
       {"analysis", {{"type", "newton"}, {"increments", 10}, {"tolerance", 1e-9}, {"max_iterations", 60}}},
-      {"solver", {{"mode", mode}, {"cg_tolerance", 1e-10}}}};
+      {"solver",
+       {{"mode", mode == "mixed+dense" ? "mixed" : mode},
+        {"interface_solver", mode == "mixed+dense" ? "dense" : "krylov"},
+        {"cg_tolerance", 1e-10}}}};
 }
 
 /// The force that drags and presses the block: the reaction of its top (uy = −0.01), component k.
@@ -105,7 +109,8 @@ TEST_P(Friction, AShearLimitCapsTheFrictionStressAtItsValueTimesTheContactLength
               1e-9);  // ...so the cap rules the Coulomb pair too
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, Friction, ::testing::Values("direct", "mixed"));
+INSTANTIATE_TEST_SUITE_P(Modes, Friction, ::testing::Values("direct", "mixed", "mixed+dense"),
+                         [](const auto& info) { return info.param == "mixed+dense" ? "mixed_dense" : info.param; });
 
 class FrictionTangent : public ::testing::TestWithParam<std::string> {};
 

@@ -103,7 +103,7 @@ TEST(RollingPass, FrictionBelowTheBiteAngleIsNoBite) {
 // The same pass gives the same roll force and torque whichever way its linear systems are solved: one global matrix
 // (direct), each body factored on its own with CG on the contact interface (mixed), or the slab torn into subdomains
 // along its length with the roll one more (feti) — all with the selective update, which keeps the same tangents in
-// each (the paper's Mixed II / DD-II), and a tight interface CG.
+// each (the paper's Mixed II / DD-II), and a tight interface CG — or the interface formed and factored (`dense`).
 TEST(RollingPass, EverySolverModeGivesTheSameRollForce) {
   nlohmann::json pass = testing_support::paper_pass_2d(3.0, 1.0);
   pass["solver"] = {{"mode", "direct"}, {"update", "selective"}, {"cg_tolerance", 1e-12}};
@@ -112,10 +112,14 @@ TEST(RollingPass, EverySolverModeGivesTheSameRollForce) {
   const RollingIncrement& ref = direct.rolling->increments.back();
   pass["solver"]["mode"] = "mixed";
   const Results mixed = testing_support::run_json(pass);
+  pass["solver"]["interface_solver"] = "dense";
+  const Results mixed_dense = testing_support::run_json(pass);
   pass["solver"]["mode"] = "feti";
   pass["process"]["slab_partition"] = "3x1";
+  const Results feti_dense = testing_support::run_json(pass);
+  pass["solver"]["interface_solver"] = "krylov";
   const Results feti = testing_support::run_json(pass);
-  for (const Results* r : {&mixed, &feti}) {
+  for (const Results* r : {&mixed, &mixed_dense, &feti, &feti_dense}) {
     ASSERT_TRUE(r->status.ok()) << r->status.message;
     const RollingIncrement& last = r->rolling->increments.back();
     EXPECT_EQ(last.travel, ref.travel);

@@ -50,3 +50,15 @@ TEST(GlobalDirectUnsymmetric, SolvesTheBorderedSystemWithCeqInTheEquations) {
   }
   EXPECT_EQ(direct->stats().factorizations.at("body"), 2);
 }
+
+// `mixed` with the `dense` interface solver forms F = C K⁻¹ C_eqᵀ, unsymmetric, and gives the same solution.
+TEST(GlobalDirectUnsymmetric, MixedWithTheDenseInterfaceGivesTheSameSolution) {
+  SolverOptions o;
+  o.interface_solver = "dense";
+  const BlockSystem sys = system_with(Eigen::RowVector3d(1, 0.3, -1));
+  const BlockSolution s = make_solver("mixed", o)->solve(sys);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  const Eigen::VectorXd x = dense_solve(sys);
+  EXPECT_LT((s.u[0] - x.head(3)).norm(), 1e-12);
+  EXPECT_NEAR(s.lambda[0], x[3], 1e-12);
+}

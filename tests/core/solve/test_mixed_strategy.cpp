@@ -162,3 +162,22 @@ TEST(MixedStrategy, PreconditionersCutGMRESIterationsOnAnIndefiniteSubdomain) {
   EXPECT_LT(iterations["lumped"], iterations["none"]);
   EXPECT_LT(4 * iterations["dirichlet"], 3 * iterations["none"]);
 }
+
+// The `dense` interface solver (F formed from the groups' flexibilities, factored by LU) gives direct's answer where
+// the Krylov solvers do: an indefinite floating subdomain (GMRES's case) and a positive definite one, with no
+// interface iterations; a second solve with the same factors forms nothing again.
+TEST(MixedStrategy, DenseInterfaceSolverGivesDirectsAnswer) {
+  SolverOptions o;
+  o.interface_solver = "dense";
+  for (const BlockSystem& sys : {torn_chain(1.5, -0.5), torn_chain(0.5, 0.5), torn_lattice(8, 32, -0.01)}) {
+    const BlockSolution direct = make_solver("direct", {})->solve(sys);
+    MixedStrategy feti(o, /*subdomains=*/true);
+    const BlockSolution s = feti.solve(sys);
+    ASSERT_TRUE(s.status.ok()) << s.status.message;
+    for (size_t g = 0; g < 2; ++g) EXPECT_LT((s.u[g] - direct.u[g]).norm(), 1e-10 * direct.u[g].norm());
+    EXPECT_LT((s.lambda - direct.lambda).norm(), 1e-10 * direct.lambda.norm());
+    EXPECT_EQ(feti.stats().cg_iterations, 0);
+    EXPECT_EQ(feti.gmres_solves(), 0);
+    EXPECT_LT(feti.last_interface_solve().residuals.back(), 1e-12);
+  }
+}

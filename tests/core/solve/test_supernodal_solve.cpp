@@ -1,6 +1,7 @@
 // Tests of supernodal_solve (our triangular solves with a CHOLMOD supernodal factor) against CHOLMOD's own
 // cholmod_solve and a dense Cholesky: 2D grids (small supernodes) and a 3D brick (large ones with rows below the
-// diagonal block, the gemv / gather path), a 1×1 matrix, many right-hand sides through one scratch vector.
+// diagonal block, the gemv / gather path), a 1×1 matrix, many right-hand sides through one scratch vector, and many
+// right-hand sides as one block (solve_columns).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -81,6 +82,19 @@ TEST(SupernodalSolve, TwoDimensionalGridWithSmallSupernodes) {
 
 TEST(SupernodalSolve, ThreeDimensionalBrickWithLargeSupernodes) {
   expect_equal_to_cholmod_and_dense(grid_matrix(7, 3, 3, 2), "3D 7×7×7, 3 dofs per node");
+}
+
+TEST(SupernodalSolve, ManyColumnsAtOnceEqualOneAtATime) {
+  const SparseMatrix A = grid_matrix(6, 3, 3, 4);
+  CholmodFactorization chol;
+  chol.factorize(A);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 7);
+  const Eigen::MatrixXd X = chol.solve_columns(B);
+  ASSERT_EQ(X.rows(), A.rows());
+  ASSERT_EQ(X.cols(), 7);
+  for (Eigen::Index j = 0; j < B.cols(); ++j)
+    EXPECT_LT((X.col(j) - chol.solve(B.col(j))).norm() / X.col(j).norm(), 1e-13) << "column " << j;
+  EXPECT_LT((A * X - B).norm() / B.norm(), 1e-12);
 }
 
 TEST(SupernodalSolve, CholmodFactorizationSolvesWithIt) {

@@ -1,0 +1,79 @@
+#include "solve/InterfaceFlexibility.h"
+
+#include <algorithm>
+
+namespace rollsim {
+
+namespace {
+/// The columns of A that hold an entry, in increasing order.
+std::vector<int> touched_columns(const SparseMatrix& A) {
+  std::vector<int> cols;
+  for (int j = 0; j < A.outerSize(); ++j)
+    if (A.outerIndexPtr()[j + 1] > A.outerIndexPtr()[j]) cols.push_back(j);
+  return cols;
+}
+
+/// Columns solved together: enough for level-3 speed, few enough that n × kChunk doubles stay small.
+constexpr Eigen::Index kChunk = 256;
+}  // namespace
+
+Eigen::MatrixXd InterfaceFlexibility::interface_block(const Group& g, GroupSolver& solver) {
+  const Eigen::Index n = g.K.rows();
+  // a new factor, or Φ grown to several times what the constraints touch now (the arc moved far on): start again
+  std::vector<int> dofs = touched_columns(g.C);
+  const SparseMatrix& Ceq = g.equation_C();
+  if (&Ceq != &g.C) {
+    const std::vector<int> more = touched_columns(Ceq);
+    std::vector<int> all;
+    std::set_union(dofs.begin(), dofs.end(), more.begin(), more.end(), std::back_inserter(all));
+    dofs = std::move(all);
+  }
+  if (version_ != g.version || static_cast<Eigen::Index>(position_.size()) != n ||
+      dofs_.size() > 4 * dofs.size() + 64) {
+    version_ = g.version;
+    dofs_.clear();
+    position_.assign(static_cast<size_t>(n), -1);
+    phi_.resize(0, 0);
+  }
+  extend(dofs, solver, n);
+  const SparseMatrix C = on_held_dofs(g.C), CeqT = SparseMatrix(on_held_dofs(Ceq).transpose());
+  const Eigen::MatrixXd CPhi = C * phi_;
+  return Eigen::MatrixXd(CPhi * CeqT);
+}
+
+void InterfaceFlexibility::extend(const std::vector<int>& dofs, GroupSolver& solver, Eigen::Index n) {
+  std::vector<int> fresh;
+  for (int d : dofs)
+    if (position_[static_cast<size_t>(d)] < 0) fresh.push_back(d);
+  if (fresh.empty()) return;
+  const auto old = static_cast<Eigen::Index>(dofs_.size());
+  const auto grown = old + static_cast<Eigen::Index>(fresh.size());
+  for (int d : fresh) {
+    position_[static_cast<size_t>(d)] = static_cast<int>(dofs_.size());
+    dofs_.push_back(d);
+  }
+  phi_.conservativeResize(grown, grown);
+  for (Eigen::Index first = 0; first < static_cast<Eigen::Index>(fresh.size()); first += kChunk) {
+    const Eigen::Index count = std::min<Eigen::Index>(kChunk, static_cast<Eigen::Index>(fresh.size()) - first);
+    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, count);
+    for (Eigen::Index k = 0; k < count; ++k) E(fresh[static_cast<size_t>(first + k)], k) = 1.0;
+    const Eigen::MatrixXd X = solver.apply_columns(E);  // K⁺'s columns at the fresh dofs
+    for (Eigen::Index r = 0; r < grown; ++r) phi_.row(r).segment(old + first, count) = X.row(dofs_[r]);
+    // K⁺ is symmetric (the assembler keeps a symmetric tangent): the old rows' new columns are the new rows' old ones
+    phi_.block(old + first, 0, count, old) = phi_.block(0, old + first, old, count).transpose();
+    solved_ += count;
+  }
+}
+
+SparseMatrix InterfaceFlexibility::on_held_dofs(const SparseMatrix& C) const {
+  std::vector<Eigen::Triplet<double, int>> t;
+  t.reserve(static_cast<size_t>(C.nonZeros()));
+  for (int j = 0; j < C.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(C, j); it; ++it)
+      t.emplace_back(it.row(), position_[static_cast<size_t>(j)], it.value());
+  SparseMatrix out(C.rows(), static_cast<int>(dofs_.size()));
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+}  // namespace rollsim
