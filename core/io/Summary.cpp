@@ -177,6 +177,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
       {"preconditioner", run.preconditioner},
       {"multipliers", run.multipliers},
       {"projector", run.projector},
+      {"interface_solver", run.interface_solver},
       {"blas", run.blas},
       {"ordering", st.factor.ordering},
       {"factor_nnz", st.factor.nnz_factor},
@@ -197,6 +198,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
                            {"reason", r.auto_choice->reason},
                            {"choice_s", r.auto_choice->seconds}};
   }
+  if (st.interface_columns > 0) s["solver"]["interface_columns"] = st.interface_columns;
   if (st.factor.min_pivot_ratio > 0) s["solver"]["min_pivot_ratio"] = st.factor.min_pivot_ratio;
   s["analysis"] = r.update_policy.empty() ? "linear" : "newton";
   if (!r.update_policy.empty()) {

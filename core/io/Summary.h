@@ -17,7 +17,8 @@ struct RunInfo {
   std::string preconditioner = "none";  // feti
   std::string multipliers = "nonredundant";
   std::string projector = "identity";
-  std::string blas;  // the BLAS library found at run time
+  std::string interface_solver = "krylov";  // mixed / feti
+  std::string blas;                         // the BLAS library found at run time
   // DGEMM's rate on this machine with the factorizations' thread count (solve/DgemmPeak.h; 0: not measured) and
   // what measuring it cost
   double dgemm_peak_gflops = 0, peak_probe_s = 0;

@@ -51,7 +51,8 @@ class CholmodFactorization final : public Factorization {
   CholmodSettings settings_;
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;
-  Eigen::VectorXd work_;  // supernodal_solve's scratch
+  Eigen::VectorXd work_;                                      // supernodal_solve's scratch
+  cholmod_dense *X_ = nullptr, *Y_ = nullptr, *E_ = nullptr;  // solve_columns' result and workspace (cholmod_solve2)
   FactorStats stats_;
 };
 

@@ -86,14 +86,23 @@ Eigen::VectorXd GroupSolver::apply(const Eigen::VectorXd& b) {
   return x;
 }
 
-Eigen::MatrixXd GroupSolver::apply_columns(const Eigen::MatrixXd& B) {
-  if (fixed_.empty()) return factor_->solve_columns(B);
-  Eigen::MatrixXd Bp(static_cast<Eigen::Index>(kept_.size()), B.cols());
-  for (size_t i = 0; i < kept_.size(); ++i) Bp.row(static_cast<Eigen::Index>(i)) = B.row(kept_[i]);
-  const Eigen::MatrixXd Xp = factor_->solve_columns(Bp);
-  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(B.rows(), B.cols());
-  for (size_t i = 0; i < kept_.size(); ++i) X.row(kept_[i]) = Xp.row(static_cast<Eigen::Index>(i));
-  return X;
+Eigen::MatrixXd GroupSolver::inverse_block(const std::vector<int>& rows, const std::vector<int>& cols) {
+  auto factored = [&](int dof) -> Eigen::Index {  // the dof's row in the factored matrix, −1 when fixed
+    if (fixed_.empty()) return dof;
+    const auto it = std::lower_bound(kept_.begin(), kept_.end(), dof);
+    return it != kept_.end() && *it == dof ? it - kept_.begin() : -1;
+  };
+  const auto n = static_cast<Eigen::Index>(fixed_.empty() ? size_ : static_cast<long>(kept_.size()));
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(cols.size()));
+  for (size_t j = 0; j < cols.size(); ++j)
+    if (const Eigen::Index p = factored(cols[j]); p >= 0) E(p, static_cast<Eigen::Index>(j)) = 1.0;
+  const Eigen::MatrixXd X = factor_->solve_columns(E);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()), E.cols());
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (const Eigen::Index p = factored(rows[i]); p >= 0) out.row(static_cast<Eigen::Index>(i)) = X.row(p);
+  for (size_t j = 0; j < cols.size(); ++j)  // a fixed dof's column: zero, as K⁺ has it
+    if (factored(cols[j]) < 0) out.col(static_cast<Eigen::Index>(j)).setZero();
+  return out;
 }
 
 }  // namespace rollsim

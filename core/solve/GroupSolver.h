@@ -21,8 +21,9 @@ class GroupSolver {
   void factorize(const Group& g);
   /// K⁺ b
   Eigen::VectorXd apply(const Eigen::VectorXd& b);
-  /// K⁺ B for many columns at once (Factorization::solve_columns)
-  Eigen::MatrixXd apply_columns(const Eigen::MatrixXd& B);
+  /// K⁺(rows, cols): K⁺'s columns at the dofs `cols`, solved for together (Factorization::solve_columns), at the
+  /// dofs `rows` (a fixed dof's row and column are zero)
+  Eigen::MatrixXd inverse_block(const std::vector<int>& rows, const std::vector<int>& cols);
   const FactorStats& stats() const { return factor_->stats(); }
   const std::vector<int>& fixed_dofs() const { return fixed_; }
   /// True when the factor is of an indefinite matrix (K⁺ is then indefinite, and so may the interface operator be).

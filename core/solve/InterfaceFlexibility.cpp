@@ -13,8 +13,8 @@ std::vector<int> touched_columns(const SparseMatrix& A) {
   return cols;
 }
 
-/// Columns solved together: enough for level-3 speed, few enough that n × kChunk doubles stay small.
-constexpr Eigen::Index kChunk = 256;
+/// Columns solved together: enough for level-3 speed, few enough that the n × kChunk blocks stay small.
+constexpr Eigen::Index kChunk = 512;
 }  // namespace
 
 Eigen::MatrixXd InterfaceFlexibility::interface_block(const Group& g, GroupSolver& solver) {
@@ -35,13 +35,13 @@ Eigen::MatrixXd InterfaceFlexibility::interface_block(const Group& g, GroupSolve
     position_.assign(static_cast<size_t>(n), -1);
     phi_.resize(0, 0);
   }
-  extend(dofs, solver, n);
+  extend(dofs, solver);
   const SparseMatrix C = on_held_dofs(g.C), CeqT = SparseMatrix(on_held_dofs(Ceq).transpose());
   const Eigen::MatrixXd CPhi = C * phi_;
   return Eigen::MatrixXd(CPhi * CeqT);
 }
 
-void InterfaceFlexibility::extend(const std::vector<int>& dofs, GroupSolver& solver, Eigen::Index n) {
+void InterfaceFlexibility::extend(const std::vector<int>& dofs, GroupSolver& solver) {
   std::vector<int> fresh;
   for (int d : dofs)
     if (position_[static_cast<size_t>(d)] < 0) fresh.push_back(d);
@@ -55,10 +55,8 @@ void InterfaceFlexibility::extend(const std::vector<int>& dofs, GroupSolver& sol
   phi_.conservativeResize(grown, grown);
   for (Eigen::Index first = 0; first < static_cast<Eigen::Index>(fresh.size()); first += kChunk) {
     const Eigen::Index count = std::min<Eigen::Index>(kChunk, static_cast<Eigen::Index>(fresh.size()) - first);
-    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, count);
-    for (Eigen::Index k = 0; k < count; ++k) E(fresh[static_cast<size_t>(first + k)], k) = 1.0;
-    const Eigen::MatrixXd X = solver.apply_columns(E);  // K⁺'s columns at the fresh dofs
-    for (Eigen::Index r = 0; r < grown; ++r) phi_.row(r).segment(old + first, count) = X.row(dofs_[r]);
+    const std::vector<int> cols(fresh.begin() + first, fresh.begin() + first + count);
+    phi_.middleCols(old + first, count) = solver.inverse_block(dofs_, cols);  // every held row, the fresh columns
     // K⁺ is symmetric (the assembler keeps a symmetric tangent): the old rows' new columns are the new rows' old ones
     phi_.block(old + first, 0, count, old) = phi_.block(0, old + first, old, count).transpose();
     solved_ += count;

@@ -20,7 +20,7 @@ class InterfaceFlexibility {
 
  private:
   /// Solves for the dofs of `dofs` that Φ does not hold yet, and appends them to Φ.
-  void extend(const std::vector<int>& dofs, GroupSolver& solver, Eigen::Index n);
+  void extend(const std::vector<int>& dofs, GroupSolver& solver);
   /// C's columns renumbered to Φ's rows (every column of C must be held)
   SparseMatrix on_held_dofs(const SparseMatrix& C) const;
 

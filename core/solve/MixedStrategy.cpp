@@ -134,6 +134,8 @@ Eigen::MatrixXd MixedStrategy::formed_interface(const BlockSystem& sys) {
   for_each_group(n, options_.threads, [&](size_t g) {
     if (sys.groups[g].C.nonZeros()) parts[g] = flexibility_[g].interface_block(sys.groups[g], groups_[g]);
   });
+  stats_.interface_columns = 0;
+  for (const InterfaceFlexibility& f : flexibility_) stats_.interface_columns += f.columns_solved();
   const auto m = static_cast<Eigen::Index>(sys.num_multipliers());
   Eigen::MatrixXd F = Eigen::MatrixXd::Zero(m, m);
   for (const Eigen::MatrixXd& p : parts)  // in group order: the same sum for any thread count

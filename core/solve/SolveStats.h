@@ -22,6 +22,9 @@ struct FactorStats {
 struct SolveStats {
   std::map<std::string, long> factorizations;  // per group name
   long cg_iterations = 0;
+  /// The dense interface solver's columns of K⁺ solved for (InterfaceFlexibility), over all groups and solves:
+  /// each about one forward and back substitution's work, done many at a time.
+  long interface_columns = 0;
   int solves = 0;      // linear solves so far (the number the observer's calls carry)
   FactorStats factor;  // of the global factor (direct strategies)
   double analyze_s = 0, factorize_s = 0, solve_s = 0;

@@ -20,31 +20,6 @@ struct Supernode {
   int nrows;
   Block block;
 };
-
-/// L Lᵀ Y = B in place on Y = P B (its rows permuted): one column of B (a vector) or many (a row-major matrix,
-/// whose rows are contiguous for the scatter and gather of each supernode's rows below its diagonal block)
-template <class Dense>
-void solve_permuted(const cholmod_factor& L, Dense& y, Dense& work) {
-  for (size_t s = 0; s < L.nsuper; ++s) {  // L y = P b, column blocks left to right
-    const Supernode sn(L, s);
-    auto x1 = y.middleRows(sn.first, sn.cols);
-    sn.block.topRows(sn.cols).template triangularView<Eigen::Lower>().solveInPlace(x1);
-    if (sn.below() == 0) continue;
-    auto t = work.topRows(sn.below());
-    t.noalias() = sn.block.bottomRows(sn.below()) * x1;
-    for (int i = 0; i < sn.below(); ++i) y.row(sn.rows[sn.cols + i]) -= t.row(i);
-  }
-  for (size_t s = L.nsuper; s-- > 0;) {  // Lᵀ z = y, right to left
-    const Supernode sn(L, s);
-    auto x1 = y.middleRows(sn.first, sn.cols);
-    if (sn.below() > 0) {
-      auto t = work.topRows(sn.below());
-      for (int i = 0; i < sn.below(); ++i) t.row(i) = y.row(sn.rows[sn.cols + i]);
-      x1.noalias() -= sn.block.bottomRows(sn.below()).transpose() * t;
-    }
-    sn.block.topRows(sn.cols).template triangularView<Eigen::Lower>().transpose().solveInPlace(x1);
-  }
-}
 }  // namespace
 
 Eigen::VectorXd supernodal_solve(const cholmod_factor& L, const Eigen::VectorXd& b, Eigen::VectorXd& work) {
@@ -53,23 +28,28 @@ Eigen::VectorXd supernodal_solve(const cholmod_factor& L, const Eigen::VectorXd&
   Eigen::VectorXd y(n);
   for (Eigen::Index i = 0; i < n; ++i) y[i] = b[perm ? perm[i] : i];
   if (work.size() < static_cast<Eigen::Index>(L.maxesize)) work.resize(static_cast<Eigen::Index>(L.maxesize));
-  solve_permuted(L, y, work);
+  for (size_t s = 0; s < L.nsuper; ++s) {  // L y = P b, column blocks left to right
+    const Supernode sn(L, s);
+    auto x1 = y.segment(sn.first, sn.cols);
+    sn.block.topRows(sn.cols).triangularView<Eigen::Lower>().solveInPlace(x1);
+    if (sn.below() == 0) continue;
+    auto t = work.head(sn.below());
+    t.noalias() = sn.block.bottomRows(sn.below()) * x1;
+    for (int i = 0; i < sn.below(); ++i) y[sn.rows[sn.cols + i]] -= t[i];
+  }
+  for (size_t s = L.nsuper; s-- > 0;) {  // Lᵀ z = y, right to left
+    const Supernode sn(L, s);
+    auto x1 = y.segment(sn.first, sn.cols);
+    if (sn.below() > 0) {
+      auto t = work.head(sn.below());
+      for (int i = 0; i < sn.below(); ++i) t[i] = y[sn.rows[sn.cols + i]];
+      x1.noalias() -= sn.block.bottomRows(sn.below()).transpose() * t;
+    }
+    sn.block.topRows(sn.cols).triangularView<Eigen::Lower>().transpose().solveInPlace(x1);
+  }
   Eigen::VectorXd x(n);
   for (Eigen::Index i = 0; i < n; ++i) x[perm ? perm[i] : i] = y[i];
   return x;
-}
-
-Eigen::MatrixXd supernodal_solve(const cholmod_factor& L, const Eigen::MatrixXd& B) {
-  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  const auto n = static_cast<Eigen::Index>(L.n);
-  const int* perm = static_cast<const int*>(L.Perm);
-  RowMajor y(n, B.cols());
-  for (Eigen::Index i = 0; i < n; ++i) y.row(i) = B.row(perm ? perm[i] : i);
-  RowMajor work(static_cast<Eigen::Index>(L.maxesize), B.cols());
-  solve_permuted(L, y, work);
-  Eigen::MatrixXd X(n, B.cols());
-  for (Eigen::Index i = 0; i < n; ++i) X.row(perm ? perm[i] : i) = y.row(i);
-  return X;
 }
 
 }  // namespace rollsim

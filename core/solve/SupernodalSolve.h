@@ -16,8 +16,5 @@ namespace rollsim {
 /// `L` is a numeric supernodal LLᵀ factor with int indices (cholmod_factorize with CHOLMOD_SUPERNODAL);
 /// `work` is resized as needed and may be reused between calls (one per thread).
 Eigen::VectorXd supernodal_solve(const cholmod_factor& L, const Eigen::VectorXd& b, Eigen::VectorXd& work);
-/// X = A⁻¹ B for many right-hand sides at once: each supernode's triangular solve and update become matrix
-/// products over all the columns (level-3 work), several times cheaper per column than one solve each.
-Eigen::MatrixXd supernodal_solve(const cholmod_factor& L, const Eigen::MatrixXd& B);
 
 }  // namespace rollsim

@@ -1,7 +1,7 @@
 // Tests of supernodal_solve (our triangular solves with a CHOLMOD supernodal factor) against CHOLMOD's own
 // cholmod_solve and a dense Cholesky: 2D grids (small supernodes) and a 3D brick (large ones with rows below the
-// diagonal block, the gemv / gather path), a 1×1 matrix, many right-hand sides through one scratch vector, and many
-// right-hand sides as one block (solve_columns).
+// diagonal block, the gemv / gather path), a 1×1 matrix, many right-hand sides through one scratch vector; and
+// CholmodFactorization's block of right-hand sides (solve_columns, through cholmod_solve) against its vector solves.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
