@@ -57,6 +57,12 @@ Eigen::MatrixXd CholeskyOrLU::solve_columns(const Eigen::MatrixXd& B) {
   return X;
 }
 
+Eigen::MatrixXd CholeskyOrLU::inverse_quadratic(const Eigen::MatrixXd& E) {
+  Eigen::MatrixXd X = lu_ ? lu_->inverse_quadratic(E) : cholesky_.inverse_quadratic(E);
+  stats_.solve_s = cholesky_.stats().solve_s + (lu_ ? lu_->stats().solve_s : 0.0);
+  return X;
+}
+
 void CholeskyOrLU::sum_stats() {
   const FactorStats& c = cholesky_.stats();
   stats_ = c;

@@ -18,6 +18,7 @@ class CholeskyOrLU final : public Factorization {
   void factorize(const SparseMatrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
   Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) override;
+  Eigen::MatrixXd inverse_quadratic(const Eigen::MatrixXd& E) override;
   const FactorStats& stats() const override { return stats_; }
   /// True once a factorization met a negative pivot: the LU holds the factor (and keeps it for the later values).
   bool indefinite() const { return lu_ != nullptr; }

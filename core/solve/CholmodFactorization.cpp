@@ -142,8 +142,7 @@ Eigen::VectorXd CholmodFactorization::solve(const Eigen::VectorXd& b) {
   return x;
 }
 
-Eigen::MatrixXd CholmodFactorization::solve_columns(const Eigen::MatrixXd& B) {
-  Stopwatch t;
+const double* CholmodFactorization::solve_block(int system, const Eigen::MatrixXd& B) {
   check_factored();
   // cholmod_solve2: level-3 BLAS per supernode over all the columns (faster per column than SupernodalSolve's
   // kernels once there are tens of them), its result and workspace kept for the next call
@@ -154,11 +153,30 @@ Eigen::MatrixXd CholmodFactorization::solve_columns(const Eigen::MatrixXd& B) {
   rhs.x = const_cast<double*>(B.data());
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
-  if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &X_, nullptr, &Y_, &E_, &common_))
+  if (!cholmod_solve2(system, factor_, &rhs, nullptr, &X_, nullptr, &Y_, &E_, &common_))
     throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(common_.status) + ")");
-  Eigen::MatrixXd X = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(X_->x), B.rows(), B.cols());
+  return static_cast<const double*>(X_->x);
+}
+
+Eigen::MatrixXd CholmodFactorization::solve_columns(const Eigen::MatrixXd& B) {
+  Stopwatch t;
+  Eigen::MatrixXd X = Eigen::Map<const Eigen::MatrixXd>(solve_block(CHOLMOD_A, B), B.rows(), B.cols());
   stats_.solve_s += t.seconds();
   return X;
+}
+
+Eigen::MatrixXd CholmodFactorization::inverse_quadratic(const Eigen::MatrixXd& E) {
+  Stopwatch t;
+  check_factored();
+  const int* perm = static_cast<const int*>(factor_->Perm);
+  Eigen::MatrixXd PE(E.rows(), E.cols());  // P A Pᵀ = L Lᵀ: A⁻¹ = Pᵀ L⁻ᵀ L⁻¹ P
+  for (Eigen::Index i = 0; i < E.rows(); ++i) PE.row(i) = E.row(perm ? perm[i] : i);
+  const Eigen::Map<const Eigen::MatrixXd> W(solve_block(CHOLMOD_L, PE), E.rows(), E.cols());  // L⁻¹ P E
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(E.cols(), E.cols());
+  out.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
+  out.triangularView<Eigen::StrictlyUpper>() = out.transpose();
+  stats_.solve_s += t.seconds();
+  return out;
 }
 
 }  // namespace rollsim

@@ -44,10 +44,14 @@ class CholmodFactorization final : public Factorization {
   void factorize(const SparseMatrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
   Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) override;
+  /// Eᵀ A⁻¹ E = WᵀW with W = L⁻¹ P E: a forward substitution and a rank-k update, no back substitution.
+  Eigen::MatrixXd inverse_quadratic(const Eigen::MatrixXd& E) override;
   const FactorStats& stats() const override { return stats_; }
 
  private:
   void check_factored() const;
+  /// cholmod_solve2 of `system` (CHOLMOD_A, CHOLMOD_L, …) with the columns of B: the result, in X_
+  const double* solve_block(int system, const Eigen::MatrixXd& B);
   CholmodSettings settings_;
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;

@@ -13,6 +13,8 @@ Eigen::MatrixXd Factorization::solve_columns(const Eigen::MatrixXd& B) {
   return X;
 }
 
+Eigen::MatrixXd Factorization::inverse_quadratic(const Eigen::MatrixXd& E) { return E.transpose() * solve_columns(E); }
+
 std::unique_ptr<Factorization> make_factorization(const std::string& kind, int trailing) {
   if (kind == "skyline") return std::make_unique<SkylineFactorization>(trailing);
   if (kind == "cholmod" && trailing > 0) return std::make_unique<UmfpackFactorization>();

@@ -34,6 +34,8 @@ class Factorization {
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) = 0;
   /// X = A⁻¹ B for many right-hand sides at once (by default one solve per column).
   virtual Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B);
+  /// Eᵀ A⁻¹ E (by default Eᵀ solve_columns(E); a Cholesky factor does it with half the triangular solves).
+  virtual Eigen::MatrixXd inverse_quadratic(const Eigen::MatrixXd& E);
   virtual const FactorStats& stats() const = 0;
 };
 

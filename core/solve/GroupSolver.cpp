@@ -96,6 +96,10 @@ Eigen::MatrixXd GroupSolver::inverse_block(const std::vector<int>& rows, const s
   Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(cols.size()));
   for (size_t j = 0; j < cols.size(); ++j)
     if (const Eigen::Index p = factored(cols[j]); p >= 0) E(p, static_cast<Eigen::Index>(j)) = 1.0;
+  if (rows == cols) {  // K⁺(cols, cols) = Eᵀ K⁺ E: half the triangular work with a Cholesky factor
+    Eigen::MatrixXd out = factor_->inverse_quadratic(E);
+    return out;
+  }
   const Eigen::MatrixXd X = factor_->solve_columns(E);
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()), E.cols());
   for (size_t i = 0; i < rows.size(); ++i)

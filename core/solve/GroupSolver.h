@@ -22,7 +22,8 @@ class GroupSolver {
   /// K⁺ b
   Eigen::VectorXd apply(const Eigen::VectorXd& b);
   /// K⁺(rows, cols): K⁺'s columns at the dofs `cols`, solved for together (Factorization::solve_columns), at the
-  /// dofs `rows` (a fixed dof's row and column are zero)
+  /// dofs `rows` (a fixed dof's row and column are zero); rows == cols asks for Eᵀ K⁺ E
+  /// (Factorization::inverse_quadratic: with a Cholesky factor, no back substitution)
   Eigen::MatrixXd inverse_block(const std::vector<int>& rows, const std::vector<int>& cols);
   const FactorStats& stats() const { return factor_->stats(); }
   const std::vector<int>& fixed_dofs() const { return fixed_; }

@@ -52,6 +52,11 @@ void InterfaceFlexibility::extend(const std::vector<int>& dofs, GroupSolver& sol
     position_[static_cast<size_t>(d)] = static_cast<int>(dofs_.size());
     dofs_.push_back(d);
   }
+  if (old == 0 && grown <= kChunk) {  // a new factor: Φ in one block, Eᵀ K⁺ E
+    phi_ = solver.inverse_block(dofs_, dofs_);
+    solved_ += grown;
+    return;
+  }
   phi_.conservativeResize(grown, grown);
   for (Eigen::Index first = 0; first < static_cast<Eigen::Index>(fresh.size()); first += kChunk) {
     const Eigen::Index count = std::min<Eigen::Index>(kChunk, static_cast<Eigen::Index>(fresh.size()) - first);
