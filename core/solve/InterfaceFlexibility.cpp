@@ -19,7 +19,6 @@ constexpr Eigen::Index kChunk = 512;
 
 Eigen::MatrixXd InterfaceFlexibility::interface_block(const Group& g, GroupSolver& solver) {
   const Eigen::Index n = g.K.rows();
-  // a new factor, or Φ grown to several times what the constraints touch now (the arc moved far on): start again
   std::vector<int> dofs = touched_columns(g.C);
   const SparseMatrix& Ceq = g.equation_C();
   if (&Ceq != &g.C) {
@@ -28,6 +27,7 @@ Eigen::MatrixXd InterfaceFlexibility::interface_block(const Group& g, GroupSolve
     std::set_union(dofs.begin(), dofs.end(), more.begin(), more.end(), std::back_inserter(all));
     dofs = std::move(all);
   }
+  // a new factor, or Φ grown to several times what the constraints touch now (the arc moved far on): start again
   if (version_ != g.version || static_cast<Eigen::Index>(position_.size()) != n ||
       dofs_.size() > 4 * dofs.size() + 64) {
     version_ = g.version;

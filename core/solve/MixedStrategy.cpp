@@ -1,6 +1,7 @@
 #include "solve/MixedStrategy.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "solve/Blas.h"
 #include "solve/DenseInterfaceSolve.h"
@@ -196,6 +197,14 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   BlockSolution out;
   out.lambda = last_.lambda;
   out.status = cg_status(last_, ProjectedCGOptions{options_.cg_tolerance, kMaxInterfaceIterations, {}, solve});
+  if (options_.interface_solver == "dense" && !last_.converged) {
+    char what[300];
+    std::snprintf(what, sizeof what,
+                  "the dense interface solve left a relative residual of %.3g and a constraint error of %.3g (above "
+                  "%.0e): constraints that contradict each other, or an interface singular on its free directions",
+                  last_.residuals.back(), last_.max_constraint_error, kDenseInterfaceResidual);
+    out.status = {Status::not_converged, Reason::breakdown, what};
+  }
   std::vector<long> first_mode(sys.groups.size(), 0);  // column of group g's modes in α
   for (size_t g = 1; g < sys.groups.size(); ++g) first_mode[g] = first_mode[g - 1] + sys.groups[g - 1].R.cols();
   out.u.resize(sys.groups.size());

@@ -181,3 +181,18 @@ TEST(MixedStrategy, DenseInterfaceSolverGivesDirectsAnswer) {
     EXPECT_LT(feti.last_interface_solve().residuals.back(), 1e-12);
   }
 }
+
+// A floating subdomain that no constraint holds (its glue rows cut off) makes the bordered interface singular: the
+// dense solver reports it as a breakdown naming its residual, never NaN as an answer.
+TEST(MixedStrategy, DenseInterfaceSolverReportsASingularInterface) {
+  BlockSystem sys = torn_chain(0.5, 0.5);
+  sys.groups[1].C = SparseMatrix(2, 3);  // B no longer glued: its translation is free, its load unbalanced
+  SolverOptions o;
+  o.interface_solver = "dense";
+  MixedStrategy feti(o, /*subdomains=*/true);
+  const BlockSolution s = feti.solve(sys);
+  EXPECT_FALSE(s.status.ok());
+  EXPECT_EQ(s.status.reason, Reason::breakdown);
+  EXPECT_NE(s.status.message.find("the dense interface solve left a relative residual"), std::string::npos)
+      << s.status.message;
+}
