@@ -12,9 +12,10 @@ struct RunOptions {
   std::optional<std::string> solver;
   std::optional<std::string> out;
   std::optional<int> threads;
-  std::optional<std::string> partition;       // [BODY=]SPEC: overrides that body's (default: the first) partition
-  std::optional<std::string> preconditioner;  // none, lumped, dirichlet
-  std::optional<std::string> projector;       // identity, preconditioner
+  std::optional<std::string> partition;         // [BODY=]SPEC: overrides that body's (default: the first) partition
+  std::optional<std::string> preconditioner;    // none, lumped, dirichlet
+  std::optional<std::string> projector;         // identity, preconditioner
+  std::optional<std::string> interface_solver;  // krylov, dense
   std::optional<double> cg_tolerance;
   std::optional<std::string> update;         // always, selective[:TOL] (Newton)
   std::optional<std::string> petsc_method;   // bddc, fetidp

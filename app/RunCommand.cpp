@@ -83,6 +83,11 @@ std::string apply_overrides(Project& p, const RunOptions& o) {
       return "--projector: must be " + one_of(projector_names()) + ", got '" + *o.projector + "'";
     solver["projector"] = *o.projector;
   }
+  if (o.interface_solver) {
+    if (!is_one_of(*o.interface_solver, interface_solver_names()))
+      return "--interface-solver: must be " + one_of(interface_solver_names()) + ", got '" + *o.interface_solver + "'";
+    solver["interface_solver"] = *o.interface_solver;
+  }
   if (o.cg_tolerance) {
     if (!(*o.cg_tolerance > 0 && *o.cg_tolerance < 1))
       return "--cg-tolerance: must be a number in (0, 1), got " + std::to_string(*o.cg_tolerance);
@@ -263,6 +268,7 @@ int run_command(const RunOptions& o) {
                options.cg_tolerance,   options.threads,
                options.preconditioner, options.multipliers,
                options.projector,      blas_description()};
+  info.interface_solver = options.interface_solver;
   info.fields = project.data.at("output").value("fields", std::vector<std::string>{});
   const auto dir = output_dir(project, o);
   std::error_code ec;

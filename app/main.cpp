@@ -49,6 +49,9 @@ int main(int argc, char** argv) {
   cmd_run->add_option("--projector", run.projector,
                       "feti rigid-mode projector with a preconditioner: identity (Q = I, the paper's), preconditioner "
                       "(Q = M^-1: fewer iterations, costlier set-up)");
+  cmd_run->add_option("--interface-solver", run.interface_solver,
+                      "how mixed and feti solve the contact/glue interface: krylov (projected CG/GMRES, the paper's) "
+                      "or dense (the interface operator formed and factored: for up to a few thousand multipliers)");
   cmd_run->add_option("--cg-tolerance", run.cg_tolerance, "relative tolerance of the interface CG (mixed, feti)");
   cmd_run->add_option("--update", run.update,
                       "Newton update policy: always (every group refactored at every iteration) or selective[:TOL] "
