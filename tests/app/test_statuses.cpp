@@ -3,6 +3,8 @@
 // files; a near-singular stiffness refused naming the body; an output folder holding one run only.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -72,6 +74,28 @@ TEST(RunStatuses, ReachableCgToleranceStillConverges) {
   EXPECT_EQ(r.summary.value("status", ""), "converged");
   EXPECT_FALSE(r.summary.contains("reason"));
   fs::remove_all(r.dir);
+}
+
+// --interface-solver dense: the interface formed and factored takes no CG iterations, gives the CG's contact force
+// and says so in summary.json; a word that is no interface solver is refused with exit 2 and names the option.
+TEST(RunStatuses, DenseInterfaceSolverRunsAndIsRecorded) {
+  const ProjectRun cg = run_project(sample("block-indent-2d-50x30"), {"--solver", "mixed", "--cg-tolerance", "1e-12"});
+  const ProjectRun dense = run_project(sample("block-indent-2d-50x30"),
+                                       {"--solver", "mixed", "--cg-tolerance", "1e-12", "--interface-solver", "dense"});
+  ASSERT_EQ(dense.result.exit_code, 0) << dense.result.err;
+  EXPECT_EQ(dense.summary["solver"].value("interface_solver", ""), "dense");
+  EXPECT_EQ(cg.summary["solver"].value("interface_solver", ""), "krylov");
+  EXPECT_EQ(dense.summary["solver"].value("cg_iterations_total", -1), 0);
+  EXPECT_GT(dense.summary["solver"].value("interface_columns", 0), 0);
+  const double f_cg = cg.summary["results"]["contact"]["block-base"].value("normal_force", 0.0);
+  const double f_dense = dense.summary["results"]["contact"]["block-base"].value("normal_force", 0.0);
+  EXPECT_GT(std::abs(f_cg), 0.0);
+  EXPECT_NEAR(f_dense, f_cg, 1e-8 * std::abs(f_cg));
+  const ProjectRun bad =
+      run_project(sample("block-indent-2d-50x30"), {"--solver", "mixed", "--interface-solver", "lu"});
+  EXPECT_EQ(bad.result.exit_code, 2);
+  EXPECT_TRUE(contains(bad.result.err, "--interface-solver: must be krylov or dense, got 'lu'")) << bad.result.err;
+  for (const ProjectRun* r : {&cg, &dense, &bad}) fs::remove_all(r->dir);
 }
 
 // The reported case: an active set still changing at its limit said "diverged" and exited 0.
