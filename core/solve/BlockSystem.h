@@ -41,6 +41,14 @@ struct Group {
   const SparseMatrix& equation_C() const { return C_eq.rows() > 0 ? C_eq : C; }
 };
 
+/// The dofs a constraint block touches (C's columns that hold an entry), in increasing order: a group's interface.
+inline std::vector<int> touched_dofs(const SparseMatrix& C) {
+  std::vector<int> dofs;
+  for (int j = 0; j < C.outerSize(); ++j)
+    if (C.outerIndexPtr()[j + 1] > C.outerIndexPtr()[j]) dofs.push_back(j);
+  return dofs;
+}
+
 /// What a range of multipliers stands for: contact rows (C_j) or the glue of a body's subdomains (B_i).
 enum class ConstraintKind { Contact, Glue };
 

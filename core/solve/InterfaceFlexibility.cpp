@@ -5,24 +5,16 @@
 namespace rollsim {
 
 namespace {
-/// The columns of A that hold an entry, in increasing order.
-std::vector<int> touched_columns(const SparseMatrix& A) {
-  std::vector<int> cols;
-  for (int j = 0; j < A.outerSize(); ++j)
-    if (A.outerIndexPtr()[j + 1] > A.outerIndexPtr()[j]) cols.push_back(j);
-  return cols;
-}
-
 /// Columns solved together: enough for level-3 speed, few enough that the n × kChunk blocks stay small.
 constexpr Eigen::Index kChunk = 512;
 }  // namespace
 
 Eigen::MatrixXd InterfaceFlexibility::interface_block(const Group& g, GroupSolver& solver) {
   const Eigen::Index n = g.K.rows();
-  std::vector<int> dofs = touched_columns(g.C);
+  std::vector<int> dofs = touched_dofs(g.C);
   const SparseMatrix& Ceq = g.equation_C();
   if (&Ceq != &g.C) {
-    const std::vector<int> more = touched_columns(Ceq);
+    const std::vector<int> more = touched_dofs(Ceq);
     std::vector<int> all;
     std::set_union(dofs.begin(), dofs.end(), more.begin(), more.end(), std::back_inserter(all));
     dofs = std::move(all);

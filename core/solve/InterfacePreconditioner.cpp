@@ -10,14 +10,6 @@
 namespace rollsim {
 
 namespace {
-/// Interface (boundary) dofs of a group: the columns of C_g that hold an entry.
-std::vector<int> boundary_dofs(const SparseMatrix& C) {
-  std::vector<int> b;
-  for (int j = 0; j < C.outerSize(); ++j)
-    if (C.outerIndexPtr()[j + 1] > C.outerIndexPtr()[j]) b.push_back(j);
-  return b;
-}
-
 SparseMatrix select(const SparseMatrix& A, const std::vector<int>& rows, const std::vector<int>& cols) {
   std::vector<int> rpos(static_cast<size_t>(A.rows()), -1), cpos(static_cast<size_t>(A.cols()), -1);
   for (size_t i = 0; i < rows.size(); ++i) rpos[rows[i]] = static_cast<int>(i);
@@ -60,7 +52,7 @@ class BlockPreconditioner final : public InterfacePreconditioner {
     for_each_group(sys.groups.size(), threads_, [&](size_t i) {
       const Group& g = sys.groups[i];
       GroupBlocks& b = blocks_[i];
-      b.boundary = boundary_dofs(g.C);
+      b.boundary = touched_dofs(g.C);
       if (!b.boundary.empty()) {
         std::vector<int> all(static_cast<size_t>(g.C.rows()));
         for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
