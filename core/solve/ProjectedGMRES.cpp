@@ -9,6 +9,9 @@ namespace rollsim {
 
 namespace {
 constexpr int kRestart = 200;
+/// A pivot of the rotated Hessenberg at this share of the cycle's largest is round-off: the new Krylov direction is
+/// a null vector of the projected F, and a triangular solve through it would divide by round-off.
+constexpr double kNullPivot = 1e-12;
 
 /// One GMRES cycle's Hessenberg matrix, reduced to upper triangular by Givens rotations as it grows.
 struct Hessenberg {
@@ -57,6 +60,8 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
   while (!res.converged && !res.breakdown && !res.cancelled && res.iterations < o.max_iterations) {
     const double beta = r.norm();
     Hessenberg h(beta);
+    double largest_pivot = 0;
+    bool null_space = false;
     std::vector<Eigen::VectorXd> V{r / beta}, Z;
     int k = 0;
     for (; k < kRestart && res.iterations < o.max_iterations; ++k) {
@@ -69,6 +74,11 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
       h.H(k + 1, k) = w.norm();
       const double next = h.H(k + 1, k);
       const double rel = h.rotate(k) / r0;
+      largest_pivot = std::max(largest_pivot, std::abs(h.H(k, k)));
+      if (std::abs(h.H(k, k)) <= kNullPivot * largest_pivot) {  // Z_k reached F's null space: the cycle ends before it
+        null_space = true;
+        break;
+      }
       ++res.iterations;
       res.residuals.push_back(rel);
       if (observer) observer->on_cg_iteration(o.solve, res.iterations, rel);
@@ -94,7 +104,9 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
     r = P.direction(raw);
     res.residuals.back() = r.norm() / r0;  // the true residual at the cycle's end
     res.converged = res.residuals.back() <= o.tolerance;
-    if (!res.converged && r.norm() <= floor) res.round_off = true;
+    // below the floor, or F singular on the projected space and the data not quite in its range (a multiplier that
+    // no dof carries, a kernel mode kept at round-off): no iterate gets closer, the best one is the answer
+    if (!res.converged && (r.norm() <= floor || null_space)) res.round_off = true;
     if (res.converged || res.round_off) res.cancelled = false;
     if (res.round_off) break;
   }

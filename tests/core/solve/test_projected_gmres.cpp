@@ -107,3 +107,25 @@ TEST(ProjectedGMRES, StartsFromAGuessWithTheToleranceOfTheLeastNormStart) {
   EXPECT_LT((d.Gt.transpose() * warm.lambda - d.e).norm(), 1e-10);
   EXPECT_LT((warm.lambda - lambda).norm(), 1e-7 * lambda.norm());
 }
+
+TEST(ProjectedGMRES, ACycleEndsWhereItsKrylovSpaceReachesTheNullSpaceOfF) {
+  // F singular on ker G̃ᵀ: the last multiplier acts on no dof (a zero row and column of F), and the data hold a
+  // round-off share of it. Once the Krylov space reaches that null vector, a triangular solve of the cycle's
+  // least-squares problem divides by a round-off pivot (λ off by 5 here, and off its constraint); the cycle must
+  // end before it and report the round-off level of its data.
+  Dense d = problem(40, 0.3, false);
+  const Eigen::Index n = d.F.rows();
+  d.F.row(n - 1).setZero(), d.F.col(n - 1).setZero();
+  d.G.row(n - 1).setZero(), d.Gt.row(n - 1).setZero();
+  d.b[n - 1] = 1e-15;
+  Dense regular = d;  // the same problem with that multiplier held at 0
+  regular.F(n - 1, n - 1) = 1, regular.b[n - 1] = 0;
+  const auto [lambda, alpha] = exact(regular);
+  // a tolerance below the inconsistency: GMRES runs until its Krylov space is exhausted
+  const ProjectedCGResult r = projected_gmres(interface(d), {1e-18, 3 * static_cast<int>(n), {}, 1});
+  EXPECT_TRUE(r.round_off);
+  EXPECT_LT(r.residuals.back(), 1e-10) << "down to the inconsistency's size";
+  EXPECT_LT((d.Gt.transpose() * r.lambda - d.e).norm(), 1e-12) << "still feasible";
+  EXPECT_LT((r.lambda.head(n - 1) - lambda.head(n - 1)).norm(), 1e-9 * lambda.norm());
+  EXPECT_LT(std::abs(r.lambda[n - 1]), 1e-6 * lambda.norm()) << "the free multiplier stays small";
+}
