@@ -46,6 +46,11 @@ class StderrProgress final : public AnalysisObserver {
     if (!quiet_ && count > 1)
       std::fprintf(stderr, "rollsim: [%7.3f s] increment %d of %d\n", clock_.seconds(), increment, count);
   }
+  void on_cutback(int increment, const std::string& cause) override {
+    if (!quiet_)
+      std::fprintf(stderr, "rollsim: [%7.3f s] increment %d cut back (step halved): %s\n", clock_.seconds(), increment,
+                   cause.c_str());
+  }
   bool cancel_requested() const override { return InterruptScope::requested(); }
 
  private:

@@ -64,6 +64,10 @@ class ForwardingObserver final : public AnalysisObserver {
     flush();
     emit w_.activeSetIteration(iteration, changed);
   }
+  void on_cutback(int increment, const std::string& cause) override {
+    flush();
+    emit w_.cutBack(increment, QString::fromStdString(cause));
+  }
   void on_rolling_increment(double travel, double roll_force, double roll_torque) override {
     flush();
     emit w_.rollingIncrement(travel, roll_force, roll_torque);

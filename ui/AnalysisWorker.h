@@ -63,6 +63,8 @@ class AnalysisWorker : public QObject {
   /// Newton iteration `iteration` of `increment` refactors some groups and keeps the others' factors: `choices` says
   /// which and why, e.g. "roll kept (share 0.0031 ≤ 0.01); slab refactored (share 0.43 > 0.01)".
   void tangentsChosen(int increment, int iteration, const QString& choices);
+  /// The attempt at `increment` failed for `cause`; it is retried with half the step (Newton driver).
+  void cutBack(int increment, const QString& cause);
   /// (Projected) CG iterations, in order: the first of each solve at once, then batches at most every kBatchMs, the
   /// rest of a solve before its solveFinished — the solver thread does not wake the GUI thread at every iteration.
   void cgIterations(const QVector<rollsim::ui::CgIteration>& batch);

@@ -117,6 +117,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(worker_, &AnalysisWorker::tangentsChosen, this, [this](int increment, int iteration, const QString& choices) {
     log_->info(tr("increment %1, iteration %2: %3").arg(increment).arg(iteration).arg(choices));
   });
+  connect(worker_, &AnalysisWorker::cutBack, this, [this](int increment, const QString& cause) {
+    log_->info(tr("increment %1 cut back (step halved): %2").arg(increment).arg(cause));
+  });
   connect(worker_, &AnalysisWorker::progress, run_panel_, &RunPanel::set_progress);
   connect(worker_, &AnalysisWorker::finished, this, &MainWindow::run_finished);
 

@@ -161,7 +161,11 @@ void NewtonRun::set_constraints(double lf, bool step_begins) {
   if (couple_slip_) add_coupling(slip_coupling(model_, pairs_, rows_), layout_.body_dofs(), contact_);
   layout_.set_contact(contact_);
   BlockSystem& sys = layout_.system();
-  for (size_t g = 0; g < sys.groups.size(); ++g) sys.d -= sys.groups[g].C * u_[g];  // C du = d − C u
+  sys.d_reference = sys.d.size() ? sys.d.lpNorm<Eigen::Infinity>() : 0.0;
+  for (size_t g = 0; g < sys.groups.size(); ++g) {
+    if (sys.d.size()) sys.d_reference = std::max(sys.d_reference, (sys.groups[g].C * u_[g]).lpNorm<Eigen::Infinity>());
+    sys.d -= sys.groups[g].C * u_[g];  // C du = d − C u
+  }
   // λ stays the multiplier of the same rows while they are those of the same points (their coefficients may move)
   std::vector<std::array<int, 3>> keys;
   for (int r : contact_.kept)
@@ -464,6 +468,7 @@ Results NewtonRun::run() {
                           " cut-backs used (analysis.max_cutbacks: the step halved that often)"};
         break;
       }
+      obs_.on_cutback(increment + 1, a.cause);
       ++depth;
       ++attempt_no;
       step /= 2;

@@ -66,6 +66,9 @@ struct BlockSystem {
   std::vector<Group> groups;
   Eigen::VectorXd d;                    // right-hand side of the constraints, one entry per multiplier
   std::vector<ConstraintBlock> blocks;  // the rows' meaning, in row order (rows in no block: contact, weight 1)
+  // The size of the terms d was computed from, when d is a difference (Newton: d = d_total − C u, the larger of
+  // ‖d_total‖∞ and ‖C u‖∞): its accuracy is relative to this, not to d. 0: d is data (a linear analysis).
+  double d_reference = 0;
   // Stiffness joining two groups (the contact's geometric stiffness between a slave and its master, analysis
   // `contact_tangent: full`): every group's free dofs one after the other; empty (0 × 0) when none. Only strategies
   // that assemble one global matrix (SolverStrategy::assembles_globally) take it; a change refactors that matrix.

@@ -72,18 +72,19 @@ void check_backward_error(const SparseMatrix& A, const Eigen::VectorXd& x, const
   }
 }
 
-/// How far a dependent row may miss, relative to the largest d or u. Not round-off alone: four stick rows on three
-/// roll dofs (the 3D pass's symmetry plane) ask the roll for four anchors' axial positions, which agree only as well
-/// as the iterate that set them — on the pass 48 × 24 × 8, 3.4e-11 mm against a correction of 4e-4 mm (8e-8 of it),
-/// where 1e-8 stopped `direct` at 20 % of its first 4 mm while `mixed` ran on. Contradicting constraints (two rows
-/// asking different things of the same dofs) miss by the order of d itself.
+/// How far a dependent row may miss, relative to the largest d or u or to the terms d was computed from
+/// (BlockSystem::d_reference). Not round-off alone: four stick rows on three roll dofs (the 3D pass's symmetry plane)
+/// ask the roll for four anchors' axial positions, which agree only as well as the iterate that set them — on the
+/// pass 48 × 24 × 8, 3.4e-11 mm, where a slack relative to the Newton correction alone (8e-13 mm late in a step)
+/// cut `direct`'s steps back eight times at 20 % of its first millimetre while `mixed` ran on. Contradicting
+/// constraints (two rows asking different things of the same dofs) miss by the order of d itself.
 constexpr double kDependentRowSlack = 1e-6;
 
 /// The rows left out as dependent hold too: C_j u = d_j to round-off of its terms. Otherwise they contradict the rows
 /// they depend on (two constraints asking different things of the same dofs) and no solution exists.
 void check_dependent_rows(const BlockSystem& sys, const ConstraintBasis& basis, const std::vector<Eigen::VectorXd>& u) {
   Eigen::VectorXd Cu = Eigen::VectorXd::Zero(sys.num_multipliers());
-  double scale = sys.d.size() ? sys.d.lpNorm<Eigen::Infinity>() : 0.0;
+  double scale = std::max(sys.d.size() ? sys.d.lpNorm<Eigen::Infinity>() : 0.0, sys.d_reference);
   for (size_t g = 0; g < sys.groups.size(); ++g) {
     Cu += sys.groups[g].C * u[g];
     scale = std::max(scale, u[g].size() ? u[g].lpNorm<Eigen::Infinity>() : 0.0);

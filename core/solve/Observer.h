@@ -10,6 +10,8 @@
 //     on_cg_iteration(solve, k, residual)    each (projected) CG iteration of linear solve `solve`
 //     on_solve_end(solve, cg_iterations)     a linear solve is complete (0 CG iterations for direct strategies)
 //     on_active_set_iteration(it, changed)   frictionless contact: statuses changed after the increment's solve `it`
+//     on_cutback(i, cause)                   Newton driver only: the attempt at increment i failed; it is retried
+//                                            from the last converged state with half the step
 //   on_increment_end(i, n), on_progress(i / n)  … then increment i + 1 from on_increment_begin
 //   on_stage("recover")
 //
@@ -65,6 +67,10 @@ class AnalysisObserver {
   /// Active-set iteration `iteration` (1-based within the increment; with one increment, its linear solve) changed
   /// `changed` contact statuses (0: settled).
   virtual void on_active_set_iteration(int /*iteration*/, int /*changed*/) {}
+  /// The Newton driver's attempt at increment `increment` failed for `cause` (e.g. "no convergence in 25 iterations
+  /// (residual ratio 0.003, tolerance 1e-08)"): it restores the last converged state and retries with half the step.
+  /// Not called for the failure that ends the run (that one is the result's `diverged` status).
+  virtual void on_cutback(int /*increment*/, const std::string& /*cause*/) {}
   /// An increment of a rolling pass is complete (not the last: its fields come with the results): roll travel so far
   /// [length], roll force [force] and torque [force · length] of the whole slab (2D: per unit width).
   virtual void on_rolling_increment(double /*travel*/, double /*roll_force*/, double /*roll_torque*/) {}

@@ -229,7 +229,11 @@ TEST(NewtonStatic, CutBacksAreNotCountedOverTheRun) {
                     {{"type", "displacement"}, {"body", "beam"}, {"set", "xmax"}, {"uy", -60.0}}}},
                   {"analysis", {{"type", "newton"}, {"increments", 4}, {"max_iterations", 4}, {"max_cutbacks", 1}}},
                   {"solver", {{"mode", "direct"}}}};
-  const Results r = run(j);
+  struct Told : AnalysisObserver {
+    std::vector<std::pair<int, std::string>> cutbacks;
+    void on_cutback(int increment, const std::string& cause) override { cutbacks.emplace_back(increment, cause); }
+  } told;
+  const Results r = run(j, &told);
   ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
   int cutbacks = 0;
   for (const IncrementResults& inc : r.increments) {
@@ -237,6 +241,12 @@ TEST(NewtonStatic, CutBacksAreNotCountedOverTheRun) {
     cutbacks += inc.cutbacks;
   }
   EXPECT_GT(cutbacks, 1) << "the case must need more cut-backs in all than its limit";
+  // each cut-back is told as it happens, with its cause (the progress line of `rollsim run`, the window's log)
+  ASSERT_EQ(told.cutbacks.size(), static_cast<size_t>(cutbacks));
+  for (const auto& [increment, cause] : told.cutbacks) {
+    EXPECT_GE(increment, 1);
+    EXPECT_NE(cause.find("no convergence in 4 iterations"), std::string::npos) << cause;
+  }
 }
 
 TEST(NewtonStatic, StepNeverShrinksBelowItsCutBackLimit) {

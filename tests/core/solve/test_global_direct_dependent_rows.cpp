@@ -71,3 +71,23 @@ TEST(GlobalDirectDependentRows, RowsThatContradictEachOtherAreReported) {
         << e.what();
   }
 }
+
+TEST(GlobalDirectDependentRows, ANewtonCorrectionsRowsMayDisagreeByTheAccuracyOfTheirTerms) {
+  // a late Newton correction (d ~ 1e-9) whose dependent row misses by 1e-12: nothing against d, but the d of a Newton
+  // system is d_total − C u of terms ~1 (d_reference), and against those it is 1e-12 — the accuracy they have
+  BlockSystem sys = dependent_rows(0.0);
+  for (Group& g : sys.groups) g.f *= 1e-9;  // the out-of-balance forces of a nearly converged iterate
+  sys.d[4] = 1e-9;
+  sys.d[3] = 1e-12;
+  EXPECT_THROW(make_solver("direct", {})->solve(sys), SingularMatrix) << "against d alone it contradicts";
+  sys.d_reference = 1.0;
+  const BlockSolution s = make_solver("direct", {})->solve(sys);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  BlockSystem consistent = sys;
+  consistent.d[3] = 0;
+  const BlockSolution c = make_solver("direct", {})->solve(consistent);
+  for (size_t g = 0; g < 2; ++g)  // the miss moves the solution by its order times the rows' 1 / 0.005, no more
+    EXPECT_LT((s.u[g] - c.u[g]).lpNorm<Eigen::Infinity>(), 200 * 1e-12 * 1.5) << sys.groups[g].name;
+  sys.d[3] = 1e-3;  // a miss of the order of its terms is still a contradiction
+  EXPECT_THROW(make_solver("direct", {})->solve(sys), SingularMatrix);
+}
