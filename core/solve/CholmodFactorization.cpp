@@ -168,6 +168,11 @@ Eigen::MatrixXd CholmodFactorization::solve_columns(const Eigen::MatrixXd& B) {
 Eigen::MatrixXd CholmodFactorization::inverse_quadratic(const Eigen::MatrixXd& E) {
   Stopwatch t;
   check_factored();
+  if (factor_->is_super) {  // only the supernodes each column reaches
+    Eigen::MatrixXd out = supernodal_inverse_quadratic(*factor_, E);
+    stats_.solve_s += t.seconds();
+    return out;
+  }
   const int* perm = static_cast<const int*>(factor_->Perm);
   Eigen::MatrixXd PE(E.rows(), E.cols());  // P A Pᵀ = L Lᵀ: A⁻¹ = Pᵀ L⁻ᵀ L⁻¹ P
   for (Eigen::Index i = 0; i < E.rows(); ++i) PE.row(i) = E.row(perm ? perm[i] : i);

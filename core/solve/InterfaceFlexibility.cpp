@@ -7,6 +7,9 @@ namespace rollsim {
 namespace {
 /// Columns solved together: enough for level-3 speed, few enough that the n × kChunk blocks stay small.
 constexpr Eigen::Index kChunk = 512;
+/// A new factor's Φ = WᵀW takes W = L⁻¹PE (n × columns) whole: up to this many entries (512 MiB), then chunks of
+/// full solves (twice the triangular work).
+constexpr double kWholeQuadratic = 64.0 * 1024 * 1024;
 }  // namespace
 
 Eigen::MatrixXd InterfaceFlexibility::interface_block(const Group& g, GroupSolver& solver) {
@@ -44,7 +47,8 @@ void InterfaceFlexibility::extend(const std::vector<int>& dofs, GroupSolver& sol
     position_[static_cast<size_t>(d)] = static_cast<int>(dofs_.size());
     dofs_.push_back(d);
   }
-  if (old == 0 && grown <= kChunk) {  // a new factor: Φ in one block, Eᵀ K⁺ E
+  if (old == 0 && static_cast<double>(grown) * static_cast<double>(position_.size()) <= kWholeQuadratic) {
+    // a new factor: Φ in one block, Eᵀ K⁺ E
     phi_ = solver.inverse_block(dofs_, dofs_);
     solved_ += grown;
     return;

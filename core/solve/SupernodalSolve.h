@@ -17,4 +17,11 @@ namespace rollsim {
 /// `work` is resized as needed and may be reused between calls (one per thread).
 Eigen::VectorXd supernodal_solve(const cholmod_factor& L, const Eigen::VectorXd& b, Eigen::VectorXd& work);
 
+/// Eᵀ A⁻¹ E = WᵀW with W = L⁻¹ P E, for an E of few nonzeros per column (unit columns: a flexibility's dofs). A
+/// column of W is nonzero only on the supernodes above its nonzeros in the supernodal elimination tree, so each
+/// supernode's triangular solve and update take only the columns that reach it, and WᵀW is summed supernode by
+/// supernode over them. The saving is the share of (supernode, column) pairs outside the reaches: near the leaves
+/// of a nested dissection, where surface dofs start.
+Eigen::MatrixXd supernodal_inverse_quadratic(const cholmod_factor& L, const Eigen::MatrixXd& E);
+
 }  // namespace rollsim

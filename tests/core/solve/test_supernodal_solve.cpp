@@ -112,5 +112,24 @@ TEST(SupernodalSolve, CholmodFactorizationSolvesWithIt) {
   EXPECT_DOUBLE_EQ(scalar.solve(Eigen::VectorXd::Constant(1, 2.0))[0], 0.5);
 }
 
+TEST(SupernodalSolve, InverseQuadraticOverTheColumnsReachesEqualsTheDenseOne) {
+  // unit columns on one face of a 3D brick (a flexibility's surface dofs: their reaches start near the leaves of the
+  // nested dissection), a column of several nonzeros in different subtrees, and a zero column (a fixed dof)
+  const SparseMatrix A = grid_matrix(7, 3, 3, 5);
+  CholmodFactorization chol;
+  chol.factorize(A);
+  std::vector<int> face;
+  for (int v = 0; v < 8 * 8; ++v) face.push_back(3 * v + v % 3);  // z = 0: nodes 0..63, one dof each
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(A.rows(), static_cast<Eigen::Index>(face.size()) + 2);
+  for (size_t j = 0; j < face.size(); ++j) E(face[j], static_cast<Eigen::Index>(j)) = 1.0;
+  E(5, static_cast<Eigen::Index>(face.size())) = 0.5, E(A.rows() - 4, static_cast<Eigen::Index>(face.size())) = -2.0;
+  const Eigen::MatrixXd Phi = chol.inverse_quadratic(E);
+  const Eigen::MatrixXd ref = E.transpose() * Eigen::LLT<Eigen::MatrixXd>(Eigen::MatrixXd(A)).solve(E);
+  ASSERT_EQ(Phi.rows(), E.cols());
+  EXPECT_LT((Phi - ref).norm() / ref.norm(), 1e-12);
+  EXPECT_EQ(Phi.col(E.cols() - 1).norm(), 0.0) << "a zero column stays zero";
+  EXPECT_LT((Phi - Phi.transpose()).norm(), 1e-14 * Phi.norm());
+}
+
 }  // namespace
 }  // namespace rollsim
