@@ -1,6 +1,7 @@
 // Runs in the worker thread: stage, increment, progress, CG residual, solve and factorization signals arrive queued
 // on the GUI thread and reach the live plots, the run finishes converged, and a cancel mid-run (before the analysis,
-// between CG iterations) ends it "cancelled" with valid partial results and the worker ready for the next run.
+// between CG iterations) ends it "cancelled" with valid partial results and the worker ready for the next run; a
+// Newton step cut back is signalled with its cause.
 #include <QSignalSpy>
 #include <QThread>
 #include <QtTest>
@@ -217,6 +218,33 @@ class TestAnalysisWorker : public QObject {
     QCOMPARE(outcome.status, QStringLiteral("not_converged"));
     QVERIFY2(outcome.error.contains(QStringLiteral("round-off")), qPrintable(outcome.error));
     QVERIFY(!outcome.results);  // nothing to colour the view with
+  }
+
+  void a_cut_back_is_signalled_with_its_cause() {
+    // a slender finite-strain cantilever bent by its tip in 4 steps, 4 Newton iterations allowed: every full step is
+    // cut back once (as NewtonStatic.CutBacksAreNotCountedOverTheRun), and the window's log hears each with its cause
+    const json mesh = {{"type", "block"}, {"nx", 20}, {"ny", 2}, {"lx", 100.0}, {"ly", 5.0}};
+    const json j = {{"name", "beam"},
+                    {"dimension", 2},
+                    {"materials", {{{"name", "steel"}, {"E", 210000.0}, {"nu", 0.3}}}},
+                    {"bodies", {{{"name", "beam"}, {"material", "steel"}, {"kinematics", "finite"}, {"mesh", mesh}}}},
+                    {"boundary_conditions",
+                     {{{"type", "displacement"}, {"body", "beam"}, {"set", "xmin"}, {"ux", 0.0}, {"uy", 0.0}},
+                      {{"type", "displacement"}, {"body", "beam"}, {"set", "xmax"}, {"uy", -60.0}}}},
+                    {"analysis", {{"type", "newton"}, {"increments", 4}, {"max_iterations", 4}, {"max_cutbacks", 1}}},
+                    {"solver", {{"mode", "direct"}}}};
+    AnalysisWorker worker;
+    QSignalSpy cut(&worker, &AnalysisWorker::cutBack);
+    QSignalSpy finished(&worker, &AnalysisWorker::finished);
+    QVERIFY(worker.start(parse_project(j.dump(), "beam.json")));
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.at(0).at(0).value<RunOutcome>().status, QStringLiteral("converged"));
+    QVERIFY(cut.count() >= 2);
+    for (const auto& args : cut) {
+      QVERIFY(args.at(0).toInt() >= 1);
+      QVERIFY2(args.at(1).toString().contains(QStringLiteral("no convergence in 4 iterations")),
+               qPrintable(args.at(1).toString()));
+    }
   }
 
   void destroying_a_running_worker_cancels_and_joins() {
