@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "../common/BentBeam.h"
 #include "RunBinary.h"
 
 namespace fs = std::filesystem;
@@ -176,19 +177,9 @@ TEST(Statuses, CtrlCCancelsAndWritesWhatTheRunCompleted) {
 }
 
 TEST(Statuses, EachCutBackIsToldOnTheProgressLineWithItsCause) {
-  // a slender finite-strain cantilever bent by its tip in 4 steps, 4 Newton iterations allowed: each full step is cut
-  // back once and then converges, so the run ends converged and only its progress lines say what happened
-  const json mesh = {{"type", "block"}, {"nx", 20}, {"ny", 2}, {"lx", 100.0}, {"ly", 5.0}};
-  const json project = {
-      {"name", "beam"},
-      {"dimension", 2},
-      {"materials", {{{"name", "steel"}, {"E", 210000.0}, {"nu", 0.3}}}},
-      {"bodies", {{{"name", "beam"}, {"material", "steel"}, {"kinematics", "finite"}, {"mesh", mesh}}}},
-      {"boundary_conditions",
-       {{{"type", "displacement"}, {"body", "beam"}, {"set", "xmin"}, {"ux", 0.0}, {"uy", 0.0}},
-        {{"type", "displacement"}, {"body", "beam"}, {"set", "xmax"}, {"uy", -60.0}}}},
-      {"analysis", {{"type", "newton"}, {"increments", 4}, {"max_iterations", 4}, {"max_cutbacks", 1}}},
-      {"solver", {{"mode", "direct"}}}};
+  // the bent beam (tests/common/BentBeam.h): each full step is cut back once and then converges, so the run ends
+  // converged and only its progress lines say what happened
+  const json project = testing_support::bent_beam();
   const std::string dir = make_temp_dir("cutback");
   write_text(dir + "/beam.json", project.dump(1));
   const RunResult r = run_rollsim({"run", dir + "/beam.json", "--out", dir + "/out"});

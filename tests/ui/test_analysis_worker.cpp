@@ -7,6 +7,7 @@
 #include <QtTest>
 #include <cmath>
 
+#include "../common/BentBeam.h"
 #include "AnalysisWorker.h"
 #include "FactorizationPlot.h"
 #include "ProjectDocument.h"
@@ -221,18 +222,9 @@ class TestAnalysisWorker : public QObject {
   }
 
   void a_cut_back_is_signalled_with_its_cause() {
-    // a slender finite-strain cantilever bent by its tip in 4 steps, 4 Newton iterations allowed: every full step is
-    // cut back once (as NewtonStatic.CutBacksAreNotCountedOverTheRun), and the window's log hears each with its cause
-    const json mesh = {{"type", "block"}, {"nx", 20}, {"ny", 2}, {"lx", 100.0}, {"ly", 5.0}};
-    const json j = {{"name", "beam"},
-                    {"dimension", 2},
-                    {"materials", {{{"name", "steel"}, {"E", 210000.0}, {"nu", 0.3}}}},
-                    {"bodies", {{{"name", "beam"}, {"material", "steel"}, {"kinematics", "finite"}, {"mesh", mesh}}}},
-                    {"boundary_conditions",
-                     {{{"type", "displacement"}, {"body", "beam"}, {"set", "xmin"}, {"ux", 0.0}, {"uy", 0.0}},
-                      {{"type", "displacement"}, {"body", "beam"}, {"set", "xmax"}, {"uy", -60.0}}}},
-                    {"analysis", {{"type", "newton"}, {"increments", 4}, {"max_iterations", 4}, {"max_cutbacks", 1}}},
-                    {"solver", {{"mode", "direct"}}}};
+    // the bent beam (tests/common/BentBeam.h): every full step is cut back once, and the window's log hears each
+    // with its cause
+    const json j = testing_support::bent_beam();
     AnalysisWorker worker;
     QSignalSpy cut(&worker, &AnalysisWorker::cutBack);
     QSignalSpy finished(&worker, &AnalysisWorker::finished);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "../../common/BentBeam.h"
 #include "analysis/NewtonStatic.h"
 #include "material/J2Plasticity.h"
 #include "project/ModelBuilder.h"
@@ -217,18 +218,9 @@ TEST(NewtonStatic, NoEquilibriumEndsDivergedNamingTheIncrement) {
 }
 
 TEST(NewtonStatic, CutBacksAreNotCountedOverTheRun) {
-  // a slender finite-strain cantilever bent by its tip in 4 steps of 15 mm, 4 Newton iterations allowed: each full
-  // step needs one cut-back, so the run uses 4 in all, more than its limit of 1
-  const json mesh = {{"type", "block"}, {"nx", 20}, {"ny", 2}, {"lx", 100.0}, {"ly", 5.0}};
-  const json j = {{"name", "beam"},
-                  {"dimension", 2},
-                  {"materials", {{{"name", "steel"}, {"E", E}, {"nu", nu}}}},
-                  {"bodies", {{{"name", "beam"}, {"material", "steel"}, {"kinematics", "finite"}, {"mesh", mesh}}}},
-                  {"boundary_conditions",
-                   {{{"type", "displacement"}, {"body", "beam"}, {"set", "xmin"}, {"ux", 0.0}, {"uy", 0.0}},
-                    {{"type", "displacement"}, {"body", "beam"}, {"set", "xmax"}, {"uy", -60.0}}}},
-                  {"analysis", {{"type", "newton"}, {"increments", 4}, {"max_iterations", 4}, {"max_cutbacks", 1}}},
-                  {"solver", {{"mode", "direct"}}}};
+  // the bent beam (tests/common/BentBeam.h): each full step needs one cut-back, so the run uses 4 in all, more than
+  // its limit of 1
+  const json j = testing_support::bent_beam(E, nu);
   struct Told : AnalysisObserver {
     std::vector<std::pair<int, std::string>> cutbacks;
     void on_cutback(int increment, const std::string& cause) override { cutbacks.emplace_back(increment, cause); }
