@@ -162,9 +162,10 @@ void NewtonRun::set_constraints(double lf, bool step_begins) {
   layout_.set_contact(contact_);
   BlockSystem& sys = layout_.system();
   sys.d_reference = sys.d.size() ? sys.d.lpNorm<Eigen::Infinity>() : 0.0;
-  for (size_t g = 0; g < sys.groups.size(); ++g) {
-    if (sys.d.size()) sys.d_reference = std::max(sys.d_reference, (sys.groups[g].C * u_[g]).lpNorm<Eigen::Infinity>());
-    sys.d -= sys.groups[g].C * u_[g];  // C du = d − C u
+  for (size_t g = 0; g < sys.groups.size() && sys.d.size(); ++g) {
+    const Eigen::VectorXd Cu = sys.groups[g].C * u_[g];
+    sys.d_reference = std::max(sys.d_reference, Cu.lpNorm<Eigen::Infinity>());
+    sys.d -= Cu;  // C du = d − C u
   }
   // λ stays the multiplier of the same rows while they are those of the same points (their coefficients may move)
   std::vector<std::array<int, 3>> keys;

@@ -167,19 +167,8 @@ Eigen::MatrixXd CholmodFactorization::solve_columns(const Eigen::MatrixXd& B) {
 
 Eigen::MatrixXd CholmodFactorization::inverse_quadratic(const Eigen::MatrixXd& E) {
   Stopwatch t;
-  check_factored();
-  if (factor_->is_super) {  // only the supernodes each column reaches
-    Eigen::MatrixXd out = supernodal_inverse_quadratic(*factor_, E);
-    stats_.solve_s += t.seconds();
-    return out;
-  }
-  const int* perm = static_cast<const int*>(factor_->Perm);
-  Eigen::MatrixXd PE(E.rows(), E.cols());  // P A Pᵀ = L Lᵀ: A⁻¹ = Pᵀ L⁻ᵀ L⁻¹ P
-  for (Eigen::Index i = 0; i < E.rows(); ++i) PE.row(i) = E.row(perm ? perm[i] : i);
-  const Eigen::Map<const Eigen::MatrixXd> W(solve_block(CHOLMOD_L, PE), E.rows(), E.cols());  // L⁻¹ P E
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(E.cols(), E.cols());
-  out.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
-  out.triangularView<Eigen::StrictlyUpper>() = out.transpose();
+  check_factored();  // a supernodal factor: only the supernodes each column reaches
+  Eigen::MatrixXd out = supernodal_inverse_quadratic(*factor_, E);
   stats_.solve_s += t.seconds();
   return out;
 }

@@ -44,7 +44,8 @@ class CholmodFactorization final : public Factorization {
   void factorize(const SparseMatrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
   Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) override;
-  /// Eᵀ A⁻¹ E = WᵀW with W = L⁻¹ P E: a forward substitution and a rank-k update, no back substitution.
+  /// Eᵀ A⁻¹ E = WᵀW with W = L⁻¹ P E: a forward substitution over the columns' reaches, no back substitution
+  /// (supernodal_inverse_quadratic).
   Eigen::MatrixXd inverse_quadratic(const Eigen::MatrixXd& E) override;
   const FactorStats& stats() const override { return stats_; }
 
