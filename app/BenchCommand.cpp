@@ -8,15 +8,15 @@
 #include <memory>
 
 #include "Commands.h"
+#include "base/Blas.h"
+#include "base/DgemmPeak.h"
+#include "base/Stopwatch.h"
 #include "fem/Assembler.h"
 #include "fem/Loads.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
-#include "solve/Blas.h"
-#include "solve/DgemmPeak.h"
 #include "solve/Factorization.h"
 #include "solve/SkylineFactorization.h"
-#include "solve/Stopwatch.h"
 
 namespace rollsim::app {
 

@@ -1,25 +1,19 @@
 #pragma once
 // Batch front end: each subcommand of `rollsim` is one function returning the exit code
 // (0 success, 1 internal failure, 2 invalid input).
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "project/Project.h"
 
 namespace rollsim::app {
 
 struct RunOptions {
   std::string project;
-  std::optional<std::string> solver;
   std::optional<std::string> out;
-  std::optional<int> threads;
-  std::optional<std::string> partition;         // [BODY=]SPEC: overrides that body's (default: the first) partition
-  std::optional<std::string> preconditioner;    // none, lumped, dirichlet
-  std::optional<std::string> projector;         // identity, preconditioner
-  std::optional<std::string> interface_solver;  // krylov, dense
-  std::optional<double> cg_tolerance;
-  std::optional<std::string> update;         // always, selective[:TOL] (Newton)
-  std::optional<std::string> petsc_method;   // bddc, fetidp
-  std::optional<std::string> petsc_options;  // passed through to PETSc
+  Overrides overrides;  // the schema's flags (--solver, --threads, …), --set PATH=VALUE and --partition
   bool quiet = false;
 };
 
@@ -51,5 +45,8 @@ int check_command(const std::string& project);
 /// `rollsim mesh PROJECT [--out DIR] [--partition SPEC]`: the model's meshes as DIR/mesh.vtu, without solving.
 int mesh_command(const RunOptions& options);
 int schema_command();
+
+/// Where a run's (or mesh's) files go: --out, else output.dir, else results/<project name>.
+std::filesystem::path output_dir(const Project& project, const RunOptions& options);
 
 }  // namespace rollsim::app

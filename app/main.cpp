@@ -4,8 +4,9 @@
 
 #include "BenchSuiteCommand.h"
 #include "Commands.h"
+#include "base/Blas.h"
+#include "base/Schema.h"
 #include "project/ProjectSchema.h"
-#include "solve/Blas.h"
 #include "solve/PetscStrategy.h"
 #include "solve/SolverStrategy.h"
 
@@ -17,12 +18,34 @@ int rollsim::app::gui_command(GuiOptions) {
 #endif
 
 namespace {
-std::string solver_help() {
-  std::string s = "solver strategy, overrides the project:";
-  for (const auto& i : rollsim::solver_registry()) s += "\n  " + i.name + ": " + i.description;
-  s += std::string("\n  ") + rollsim::kAutoSolver +
-       ": direct, mixed or (a partitioned body) feti, whichever the partition table's cost model predicts cheapest";
-  return s;
+/// The flags the project schema marks (Field::flag), `--set PATH=VALUE` and `--partition`: each becomes an override
+/// of the project, checked by its validation.
+void add_project_flags(CLI::App& cmd, rollsim::Overrides& overrides) {
+  for (const auto& [path, field] : rollsim::flagged_fields(rollsim::project_schema())) {
+    std::string help = field->doc + " (" + path + ")";
+    if (!field->choices.empty()) help += ": " + rollsim::one_of(field->choices);
+    const std::string flag = "--" + field->flag;
+    cmd.add_option_function<std::string>(
+        flag,
+        [&overrides, path = path, flag](const std::string& v) {
+          overrides.sets.push_back({path, v, flag});
+        },
+        help);
+  }
+  cmd.add_option_function<std::vector<std::string>>(
+      "--set",
+      [&overrides](const std::vector<std::string>& sets) {
+        for (const std::string& s : sets) {
+          const auto eq = s.find('=');
+          overrides.sets.push_back({s.substr(0, eq), eq == std::string::npos ? "" : s.substr(eq + 1), "--set"});
+        }
+      },
+      "PATH=VALUE: set any project field, e.g. --set analysis.max_iterations=40 --set bodies[0].partition=2x2 "
+      "(the reference: rollsim schema)");
+  cmd.add_option_function<std::string>(
+      "--partition", [&overrides](const std::string& v) { overrides.partition = v; },
+      "[BODY=]SPEC: subdomains for feti, e.g. 4x4, 2x2x1, metis:16 (default body: the first; a rolling pass: the "
+      "slab)");
 }
 }  // namespace
 
@@ -39,29 +62,8 @@ int main(int argc, char** argv) {
   RunOptions run;
   auto* cmd_run = cli.add_subcommand("run", "solve a project and write summary.json and result.vtu");
   cmd_run->add_option("project", run.project, "project file (JSON)")->required();
-  cmd_run->add_option("--solver", run.solver, solver_help());
   cmd_run->add_option("--out", run.out, "output directory (default: the project's output.dir or results/<name>)");
-  cmd_run->add_option("--threads", run.threads, "threads for factorizations");
-  cmd_run->add_option("--partition", run.partition,
-                      "[BODY=]SPEC: subdomains for feti, e.g. 4x4, 2x2x1, metis:16 (default body: the first)");
-  cmd_run->add_option("--preconditioner", run.preconditioner,
-                      "feti interface preconditioner: " + rollsim::one_of(rollsim::preconditioner_names()));
-  cmd_run->add_option("--projector", run.projector,
-                      "feti rigid-mode projector with a preconditioner: identity (Q = I, the paper's), preconditioner "
-                      "(Q = M^-1: fewer iterations, costlier set-up)");
-  cmd_run->add_option("--interface-solver", run.interface_solver,
-                      "how mixed and feti solve the contact/glue interface: krylov (projected CG/GMRES, the paper's) "
-                      "or dense (the interface operator formed and factored: for up to a few thousand multipliers)");
-  cmd_run->add_option("--cg-tolerance", run.cg_tolerance, "relative tolerance of the interface CG (mixed, feti)");
-  cmd_run->add_option("--update", run.update,
-                      "Newton update policy: always (every group refactored at every iteration) or selective[:TOL] "
-                      "(a group whose residual is below TOL x the total keeps its factor; TOL 0.01 by default)");
-  cmd_run->add_option("--petsc-method", run.petsc_method,
-                      "petsc: " + rollsim::one_of(rollsim::petsc_method_names()) +
-                          " (PCBDDC in CG, or KSPFETIDP); run as mpirun -n P with one subdomain per rank");
-  cmd_run->add_option("--petsc-options", run.petsc_options,
-                      "petsc: options passed through to PETSc, e.g. \"-ksp_monitor -pc_bddc_use_faces\" (an option "
-                      "PETSc does not use is refused)");
+  add_project_flags(*cmd_run, run.overrides);
   cmd_run->add_flag("--quiet", run.quiet, "no progress on stderr");
 
   std::string check_file;
@@ -73,7 +75,9 @@ int main(int argc, char** argv) {
       cli.add_subcommand("mesh", "write the meshes of a project (bodies, subdomains) as mesh.vtu, without solving");
   cmd_mesh->add_option("project", mesh.project, "project file (JSON)")->required();
   cmd_mesh->add_option("--out", mesh.out, "output directory (default: the project's output.dir or results/<name>)");
-  cmd_mesh->add_option("--partition", mesh.partition, "[BODY=]SPEC: show this partition, e.g. 4x4, metis:16");
+  cmd_mesh->add_option_function<std::string>(
+      "--partition", [&mesh](const std::string& v) { mesh.overrides.partition = v; },
+      "[BODY=]SPEC: show this partition, e.g. 4x4, metis:16");
   cmd_mesh->add_flag("--quiet", mesh.quiet, "no summary line on stderr");
 
   BenchOptions bench;

@@ -24,7 +24,7 @@ struct CgIteration {
 
 /// How a run ended, with what it produced.
 struct RunOutcome {
-  QString status;  // converged / not_converged / diverged / cancelled / error (solve/RunStatus.h)
+  QString status;  // converged / not_converged / diverged / cancelled / error (base/RunStatus.h)
   QString error;   // what stopped the run, when it did not converge
   std::shared_ptr<const Model> model;
   // null on error or when cancelled before the first solve; after a cancel, the last iterate's fields

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "ProjectDocument.h"
-#include "project/Schema.h"
+#include "base/Schema.h"
 
 class QFormLayout;
 class QVBoxLayout;

@@ -103,7 +103,7 @@ void check_floating_groups_held(const BlockSystem& sys) {
 }
 
 Multipliers multiplier_choice(const SolverOptions& o) {
-  return o.multipliers == "redundant" ? Multipliers::FullyRedundant : Multipliers::NonRedundant;
+  return o.multipliers == GlueMultipliers::Redundant ? Multipliers::FullyRedundant : Multipliers::NonRedundant;
 }
 
 }  // namespace rollsim

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "analysis/AnalysisError.h"
+#include "base/Observer.h"
 #include "model/DofMap.h"
 #include "model/Model.h"
 #include "partition/Interface.h"
 #include "solve/BlockSystem.h"
-#include "solve/Observer.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {

@@ -8,9 +8,9 @@
 #include "analysis/DriverSteps.h"
 #include "analysis/GroupLayout.h"
 #include "analysis/Recovery.h"
+#include "base/Stopwatch.h"
 #include "contact/ContactConstraints.h"
 #include "model/DofMap.h"
-#include "solve/Stopwatch.h"
 #include "solve/UpdatePolicy.h"
 
 namespace rollsim {

@@ -3,17 +3,13 @@
 // system with the chosen strategy (repeated while the active set of frictionless contact changes), recover
 // displacements, stresses, reactions and contact forces.
 #include "analysis/AnalysisError.h"
+#include "analysis/IncrementOptions.h"
 #include "analysis/Results.h"
+#include "base/Observer.h"
 #include "model/Model.h"
-#include "solve/Observer.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {
-
-/// The most load increments an analysis takes (the schema's range of analysis.increments).
-constexpr int kMaxIncrements = 1000;
-/// Linear solves an increment's active-set loop takes by default (analysis.max_active_set_iterations).
-constexpr int kMaxActiveSetIterations = 50;
 
 /// `increments` (1…1000) equal proportional steps: increment i solves with every load and prescribed displacement
 /// times i / N, its active-set loop starting from increment i − 1's active set; the stiffness (and every factor) is
@@ -21,6 +17,7 @@ constexpr int kMaxActiveSetIterations = 50;
 /// increment whose active set still changes after `max_active_set_iterations` solves, or returns to a set it already
 /// tried, ends the run not_converged; so does an interface CG that stops short of its tolerance (Results::status).
 Results run_linear_static(const Model& model, SolverStrategy& solver, AnalysisObserver* observer = nullptr,
-                          int increments = 1, int max_active_set_iterations = kMaxActiveSetIterations);
+                          int increments = 1,
+                          int max_active_set_iterations = IncrementOptions{}.max_active_set_iterations);
 
 }  // namespace rollsim

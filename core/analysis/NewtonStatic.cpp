@@ -1,5 +1,7 @@
 #include "analysis/NewtonStatic.h"
 
+#include "analysis/IncrementOptions.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -14,12 +16,12 @@
 #include "analysis/LinearStatic.h"
 #include "analysis/Recovery.h"
 #include "analysis/RollingMeasures.h"
+#include "base/Stopwatch.h"
 #include "contact/ContactConstraints.h"
 #include "contact/ContactStiffness.h"
 #include "contact/Friction.h"
 #include "contact/FrictionStiffness.h"
 #include "solve/Factorization.h"
-#include "solve/Stopwatch.h"
 
 namespace rollsim {
 
@@ -71,7 +73,7 @@ class NewtonRun {
       iteration_sliding_ = iteration_sliding_ || p.sliding == ContactPair::Sliding::Iteration;
       couple_slip_ = couple_slip_ || p.kind == ContactKind::Coulomb;
     }
-    couple_slip_ = couple_slip_ && opt.consistent_friction && solver.solves_unsymmetric();
+    couple_slip_ = couple_slip_ && opt.friction_tangent == FrictionTangent::Consistent && solver.solves_unsymmetric();
     if (opt.contact_tangent == ContactTangent::Full && !solver.assembles_globally())
       throw AnalysisError(
           "analysis.contact_tangent 'full' joins the slave's and the master's stiffness, which only a solver with one "
@@ -114,7 +116,7 @@ class NewtonRun {
   /// Every group's tangent choice for an iteration: refactored (in `tangent`) or kept, and why — its residual share
   /// against the policy's threshold, `all_why` when no residuals were taken (every group new), or a constant tangent.
   std::vector<TangentChoice> tangent_choices(const std::vector<size_t>& tangent, const std::vector<double>& share,
-                                             const char* all_why) const;
+                                             const std::string& all_why) const;
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
@@ -312,7 +314,8 @@ int NewtonRun::update_statuses(double lf) {
 }
 
 std::vector<TangentChoice> NewtonRun::tangent_choices(const std::vector<size_t>& tangent,
-                                                      const std::vector<double>& share, const char* all_why) const {
+                                                      const std::vector<double>& share,
+                                                      const std::string& all_why) const {
   const BlockSystem& sys = layout_.system();
   std::vector<TangentChoice> out;
   for (size_t g = 0; g < sys.groups.size(); ++g) {
@@ -345,7 +348,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     std::vector<size_t> tangent = all;
     const bool residuals_first = assembled_once_ && !refresh_all_ && policy_.uses_residuals();
     std::vector<double> share;
-    const char* all_why = !assembled_once_ ? "first" : refresh_all_ ? "cut-back" : "always";
+    const std::string all_why = !assembled_once_ ? "first" : refresh_all_ ? "cut-back" : policy_.name();
     if (residuals_first) {  // the policy decides from the residuals
       if (auto cause = assemble(all, {}, at); !cause.empty()) return {{}, cause, k - 1};
       share = group_residuals();
@@ -353,7 +356,8 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       for (double& x : share) x = total > 0 ? x / total : 0.0;
       tangent.clear();
       for (size_t g : policy_.select(sys, share))  // a constant tangent (elastic, small strain) is never re-assembled
-        if (!opt_.keep_constant_tangents || !layout_.assembler().constant_tangent(g)) tangent.push_back(g);
+        if (opt_.constant_tangents == ConstantTangents::Refactor || !layout_.assembler().constant_tangent(g))
+          tangent.push_back(g);
     }
     // a step's first iteration factors the tangents assembled at the converged iterate of the step before (with its
     // plastic flow) where they are not factored yet: assembled again at the converged state they would be elastic,
@@ -361,7 +365,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     // afresh (every group of its body, so that subdomains do as their body does): its predictor (the prescribed
     // increment times the tangent) and its matrix must be the same tangent.
     std::vector<size_t> fresh = tangent;
-    if (opt_.first_tangent_converged && k == 1 && assembled_once_ && !refresh_all_) {
+    if (opt_.first_tangent == FirstTangent::Converged && k == 1 && assembled_once_ && !refresh_all_) {
       std::erase_if(tangent, [&](size_t g) { return !unfactored_[g] && !prescribed_moves(g, at); });
       fresh = tangent;
       std::erase_if(fresh, [&](size_t g) { return !prescribed_moves(g, at); });

@@ -13,33 +13,14 @@
 #include <string>
 
 #include "analysis/AnalysisError.h"
+#include "analysis/NewtonOptions.h"
 #include "analysis/Results.h"
+#include "base/Observer.h"
 #include "model/Model.h"
-#include "solve/Observer.h"
 #include "solve/SolverStrategy.h"
 #include "solve/UpdatePolicy.h"
 
 namespace rollsim {
-
-/// Which part of the contact's geometric stiffness (contact/ContactStiffness) the tangent takes: none; the terms
-/// whose two dofs lie in one group (into its K_g: every strategy); or every term, those joining two groups too
-/// (BlockSystem::coupling: strategies with one global matrix only).
-enum class ContactTangent { None, Groups, Full };
-
-struct NewtonOptions {
-  int increments = 10;                   // equal load steps N (a cut-back halves the current one)
-  int max_iterations = 25;               // Newton iterations of one attempt
-  double tolerance = 1e-8;               // ‖r_k‖ ≤ tolerance × max(‖r_1‖, ‖r_2‖) of the attempt
-  double displacement_tolerance = 1e-2;  // and ‖du_k‖ ≤ this × ‖u − u_n‖ (the step's displacement)
-  int max_cutbacks = 8;                  // failed attempts in the whole run before it is declared diverged
-  bool line_search = true;               // one secant step along du when the residual's work along it did not halve
-  bool consistent_friction = true;       // slipping Coulomb friction solved with λ_n (C_eq) where the strategy can
-  ContactTangent contact_tangent = ContactTangent::Groups;
-  // a step's first iteration factors the tangents of the last step's converged iterate (not re-assembled there)
-  bool first_tangent_converged = true;
-  bool keep_constant_tangents = true;  // a policy reading residuals (selective) never re-assembles a group whose
-                                       // tangent is constant (elastic, small strain); false: like any group
-};
 
 /// Runs the Newton analysis; Results::status is converged, cancelled (between iterations: the last converged step
 /// stays the result), not_converged (a linear solve short of its tolerance when no cut-back is left) or diverged.

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "analysis/RollingResults.h"
+#include "base/RunStatus.h"
 #include "solve/AutoChoice.h"
-#include "solve/RunStatus.h"
 #include "solve/SolveStats.h"
 
 namespace rollsim {
@@ -65,7 +65,7 @@ struct NewtonIteration {
   int refactored = 0;       // groups given a new tangent (and factor) for this iteration's solve
   int contact_changes = 0;  // frictionless statuses changed by this iteration's solve
   long cg_iterations = 0;   // interface CG iterations of this iteration's solve
-  std::string tangents;     // every group's tangent choice and why (solve/Observer.h: describe)
+  std::string tangents;     // every group's tangent choice and why (base/Observer.h: describe)
 };
 
 struct Timing {
@@ -73,7 +73,7 @@ struct Timing {
 };
 
 struct Results {
-  // How the run ended (solve/RunStatus.h); only a converged run is a result. A cancelled run holds the fields of its
+  // How the run ended (base/RunStatus.h); only a converged run is a result. A cancelled run holds the fields of its
   // last iterate: the last completed linear solve when the cancel came between solves, or the interrupted CG's current
   // iterate (every group in equilibrium with it, Gᵀλ = e met, the constraints C u = d not yet to tolerance); no bodies
   // when it came before the first solve. A run that did not converge holds the increments it completed and no fields of
@@ -98,7 +98,7 @@ struct Results {
   std::vector<NewtonIteration> newton;
   std::map<std::string, long> stiffness_evaluations;
   std::optional<AutoChoice> auto_choice;  // solver.mode was `auto`: what it chose and why
-  std::string update_policy;  // the Newton driver's update policy ("always", "selective:0.01"); empty: linear
+  std::string update_policy;  // the Newton driver's update policy (`always`, `selective:0.01`); empty: linear
   std::optional<RollingResults> rolling;  // a rolling pass: its measures over the completed increments
 };
 

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <string>
 
-#include "solve/Stopwatch.h"
+#include "base/Stopwatch.h"
 
 namespace rollsim::bench {
 

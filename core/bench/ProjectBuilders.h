@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "project/Schema.h"
+#include "base/Schema.h"
 
 namespace rollsim::bench {
 

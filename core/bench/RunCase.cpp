@@ -4,11 +4,11 @@
 #include <exception>
 
 #include "analysis/AnalysisError.h"
+#include "base/Stopwatch.h"
 #include "bench/MeshDistortion.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 #include "project/RunProject.h"
-#include "solve/Stopwatch.h"
 
 namespace rollsim::bench {
 

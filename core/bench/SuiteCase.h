@@ -6,8 +6,8 @@
 #include <string>
 
 #include "analysis/Results.h"
+#include "base/Schema.h"
 #include "model/Model.h"
-#include "project/Schema.h"
 
 namespace rollsim::bench {
 

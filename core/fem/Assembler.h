@@ -3,9 +3,9 @@
 // element -> value-slot scatter map are computed once; assemble() only rewrites values.
 #include <vector>
 
+#include "base/SparseMatrix.h"
 #include "model/DofMap.h"
 #include "model/Model.h"
-#include "model/SparseMatrix.h"
 
 namespace rollsim {
 

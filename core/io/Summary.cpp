@@ -165,19 +165,20 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   if (r.status.reason != Reason::none) s["reason"] = to_string(r.status.reason);
   if (!r.status.message.empty()) s["message"] = r.status.message;
   s["model"] = model_section(model, r);
+  const json options = run.config.is_object() ? run.config.value("solver", json::object()) : json::object();
   s["solver"] = {
       {"mode", run.mode},
-      {"cg_tolerance", run.cg_tolerance},
+      {"cg_tolerance", options.value("cg_tolerance", json())},
       {"cg_iterations_total", st.cg_iterations},
       {"newton_iterations", r.update_policy.empty() ? (r.status.ok() ? 1 : 0) : static_cast<long>(r.newton.size())},
       {"increments", r.load_increments},
       {"active_set_iterations", r.active_set_iterations},
       {"factorizations", factorizations},
-      {"threads", run.threads},
-      {"preconditioner", run.preconditioner},
-      {"multipliers", run.multipliers},
-      {"projector", run.projector},
-      {"interface_solver", run.interface_solver},
+      {"threads", options.value("threads", json())},
+      {"preconditioner", options.value("preconditioner", json())},
+      {"multipliers", options.value("multipliers", json())},
+      {"projector", options.value("projector", json())},
+      {"interface_solver", options.value("interface_solver", json())},
       {"blas", run.blas},
       {"ordering", st.factor.ordering},
       {"factor_nnz", st.factor.nnz_factor},
@@ -214,6 +215,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
                  {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
                  {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};
   if (run.peak_probe_s > 0) s["timing"]["peak_probe_s"] = run.peak_probe_s;
+  s["config"] = run.config;  // every option as the run resolved it, defaults included
   s["increments"] = increments_section(model, r);
   if (!r.status.ok()) return s;
   s["results"] = results_section(model, r);

@@ -10,16 +10,11 @@
 namespace rollsim {
 
 struct RunInfo {
-  std::string project;  // project name
-  std::string mode;     // solver strategy name
-  double cg_tolerance = 1e-4;
-  int threads = 1;
-  std::string preconditioner = "none";  // feti
-  std::string multipliers = "nonredundant";
-  std::string projector = "identity";
-  std::string interface_solver = "krylov";  // mixed / feti
-  std::string blas;                         // the BLAS library found at run time
-  // DGEMM's rate on this machine with the factorizations' thread count (solve/DgemmPeak.h; 0: not measured) and
+  std::string project;    // project name
+  std::string mode;       // solver strategy name (auto: the one it chose)
+  nlohmann::json config;  // the resolved run configuration (project/RunConfig's to_json): echoed as `config`
+  std::string blas;       // the BLAS library found at run time
+  // DGEMM's rate on this machine with the factorizations' thread count (base/DgemmPeak.h; 0: not measured) and
   // what measuring it cost
   double dgemm_peak_gflops = 0, peak_probe_s = 0;
   std::vector<std::string> fields = {};  // output.fields: the arrays result.vtu holds (empty: every one)

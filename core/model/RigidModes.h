@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "base/SparseMatrix.h"
 #include "model/Model.h"
-#include "model/SparseMatrix.h"
 
 namespace rollsim {
 

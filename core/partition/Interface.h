@@ -5,9 +5,9 @@
 #include <utility>
 #include <vector>
 
+#include "base/SparseMatrix.h"
 #include "mesh/Mesh.h"
 #include "model/DofMap.h"
-#include "model/SparseMatrix.h"
 #include "partition/Partition.h"
 #include "partition/Subdomain.h"
 

@@ -3,13 +3,11 @@
 #include <cholmod.h>
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <numeric>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
+#include "base/Parallel.h"
 #include "model/RigidModes.h"
 #include "partition/DualGraph.h"
 #include "partition/Interface.h"
@@ -302,27 +300,6 @@ struct SubdomainCache {
   std::vector<PartitionProblem> problems;
 };
 
-/// Runs job(i) for i in [0, n) on up to `threads` threads; rethrows the first exception.
-template <class Job>
-void run_parallel(int n, int threads, Job job) {
-  std::atomic<int> next{0};
-  std::exception_ptr error;
-  std::atomic<bool> failed{false};
-  auto worker = [&] {
-    for (int i = next++; i < n && !failed; i = next++) {
-      try {
-        job(i);
-      } catch (...) {
-        if (!failed.exchange(true)) error = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::min(threads, n); ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-}
 }  // namespace
 
 struct PartitionReporter::State {
@@ -358,7 +335,7 @@ struct PartitionReporter::State {
 PartitionReporter::State::State(const Body& b, const DofMap& d, ReporterOptions o)
     : body(b), dofs(d), options(std::move(o)) {
   const Mesh& m = body.mesh;
-  run_parallel(2, options.threads, [&](int job) {
+  for_each_group(2, options.threads, [&](size_t job) {
     if (job == 0) {
       one_domain = estimate_factor(m, dofs);
       return;
@@ -506,8 +483,7 @@ void PartitionReporter::State::recompute(const std::vector<char>& changed) {
   cache.resize(changed.size());
   // the largest first: the threads finish together
   std::stable_sort(todo.begin(), todo.end(), [&](int a, int b) { return elements[a].size() > elements[b].size(); });
-  run_parallel(static_cast<int>(todo.size()), options.threads,
-               [&](int i) { cache[todo[i]] = compute(todo[i], elements[todo[i]]); });
+  for_each_group(todo.size(), options.threads, [&](size_t i) { cache[todo[i]] = compute(todo[i], elements[todo[i]]); });
   empty_problems(todo);
   recomputed = static_cast<int>(todo.size());
 }

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "base/Schema.h"
 #include "mesh/Mesh.h"
-#include "project/Schema.h"
 
 namespace rollsim {
 

@@ -238,7 +238,6 @@ void check_plasticity(const json& materials, std::vector<Issue>& issues) {
   }
 }
 
-/// Why the model needs the Newton analysis ("" if it does not): a plastic material or finite kinematics.
 std::string nonlinear_because(const json& d) {
   for (const json& m : d.at("materials"))
     if (m.contains("yield_stress")) return "material '" + m.value("name", "") + "' has a yield stress";
@@ -255,11 +254,6 @@ void check_analysis_type(const json& d, std::vector<Issue>& issues) {
   if (const std::string why = nonlinear_because(d);
       !why.empty() && a != d.end() && a->value("type", "auto") == "linear")
     issues.push_back({"analysis.type", why + ": it needs the newton analysis"});
-  try {
-    make_update_policy(d.at("solver").value("update", "always"));
-  } catch (const std::invalid_argument& e) {
-    issues.push_back({"solver.update", e.what()});
-  }
 }
 
 void check_references(const Project& project, std::vector<Issue>& issues) {
@@ -477,58 +471,6 @@ void add_contacts(Model& model, const json& d) {
 }
 
 }  // namespace
-
-SolverOptions solver_options(const Project& project) {
-  const json& s = project.data.at("solver");
-  SolverOptions o;
-  o.cg_tolerance = s.at("cg_tolerance").get<double>();
-  o.threads = s.at("threads").get<int>();
-  o.preconditioner = s.at("preconditioner").get<std::string>();
-  o.multipliers = s.at("multipliers").get<std::string>();
-  o.projector = s.at("projector").get<std::string>();
-  o.interface_start = s.at("interface_start").get<std::string>();
-  o.interface_solver = s.at("interface_solver").get<std::string>();
-  o.petsc_method = s.at("petsc_method").get<std::string>();
-  o.petsc_options = s.at("petsc_options").get<std::string>();
-  return o;
-}
-
-int load_increments(const Project& project) {
-  const json d = expand_process(project.data);  // a rolling pass sets the increments from its travel
-  const auto a = d.find("analysis");
-  return a == d.end() ? 1 : a->value("increments", 1);
-}
-
-std::string analysis_type(const Project& project) {
-  const auto a = project.data.find("analysis");
-  const std::string type = a == project.data.end() ? "auto" : a->value("type", "auto");
-  if (type != "auto") return type;
-  return nonlinear_because(expand_process(project.data)).empty() ? "linear" : "newton";
-}
-
-NewtonOptions newton_options(const Project& project) {
-  NewtonOptions o;
-  o.increments = load_increments(project);
-  const auto a = project.data.find("analysis");
-  if (a == project.data.end()) return o;
-  o.max_iterations = a->value("max_iterations", o.max_iterations);
-  o.tolerance = a->value("tolerance", o.tolerance);
-  o.max_cutbacks = a->value("max_cutbacks", o.max_cutbacks);
-  o.line_search = a->value("line_search", o.line_search);
-  o.consistent_friction = a->value("friction_tangent", std::string("consistent")) == "consistent";
-  o.first_tangent_converged = a->value("first_tangent", std::string("converged")) == "converged";
-  const std::string contact = a->value("contact_tangent", std::string("groups"));
-  o.contact_tangent = contact == "none"   ? ContactTangent::None
-                      : contact == "full" ? ContactTangent::Full
-                                          : ContactTangent::Groups;
-  o.keep_constant_tangents = a->value("constant_tangents", std::string("keep")) == "keep";
-  return o;
-}
-
-int max_active_set_iterations(const Project& project) {
-  const auto a = project.data.find("analysis");
-  return a == project.data.end() ? 50 : a->value("max_active_set_iterations", 50);
-}
 
 Model build_model(const Project& project) {
   const json d = expand_process(project.data);

@@ -4,27 +4,17 @@
 #include <string>
 #include <vector>
 
-#include "analysis/NewtonStatic.h"
 #include "model/Model.h"
 #include "project/Project.h"
-#include "solve/SolverStrategy.h"
 
 namespace rollsim {
 
 /// Checks names, references, generator parameters and model size; appends problems to `issues`.
 void check_references(const Project& project, std::vector<Issue>& issues);
 
-/// The solver section as strategy options (validated values).
-SolverOptions solver_options(const Project& project);
-
-/// analysis.increments: the load increments of the run (validated, 1 by default).
-int load_increments(const Project& project);
-/// analysis.type as run: `auto` (the default) is newton when a material has a yield stress, else linear.
-std::string analysis_type(const Project& project);
-/// The Newton driver's settings: analysis.increments, max_iterations, tolerance, max_cutbacks.
-NewtonOptions newton_options(const Project& project);
-/// analysis.max_active_set_iterations (1…1000; 50 when absent).
-int max_active_set_iterations(const Project& project);
+/// Why a project (its process expanded) needs the Newton analysis ("" if it does not): a plastic material, finite
+/// kinematics or friction.
+std::string nonlinear_because(const json& expanded_project);
 
 /// Builds the model. Throws ProjectError for problems only visible on the mesh (inverted elements).
 Model build_model(const Project& project);

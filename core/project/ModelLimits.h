@@ -4,7 +4,7 @@
 // in proportion to the elements. A request beyond either is refused with the estimate in the message.
 #include <vector>
 
-#include "project/Schema.h"
+#include "base/Schema.h"
 
 namespace rollsim {
 

@@ -3,8 +3,8 @@
 // refused with both JSON paths — before, the last one silently won.
 #include <vector>
 
+#include "base/Schema.h"
 #include "model/Model.h"
-#include "project/Schema.h"
 
 namespace rollsim {
 

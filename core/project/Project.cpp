@@ -75,7 +75,16 @@ std::string number_overflow(const std::string& text, const std::string& what) {
 ProjectError::ProjectError(std::string source, std::vector<Issue> issues)
     : std::runtime_error(join(source, issues)), issues_(std::move(issues)) {}
 
-Project parse_project(const std::string& text, const std::string& source) {
+namespace {
+/// Issues at a path an override set are shown under the flag that set it ("--threads: must be …").
+std::vector<Issue> named_by_origin(std::vector<Issue> issues, const Overrides& overrides) {
+  for (Issue& i : issues)
+    if (std::string origin = override_origin(overrides, i.path); !origin.empty()) i.path = origin;
+  return issues;
+}
+}  // namespace
+
+Project parse_project(const std::string& text, const std::string& source, const Overrides& overrides) {
   Project p;
   p.source = source;
   check_nesting(text, source);
@@ -90,6 +99,7 @@ Project parse_project(const std::string& text, const std::string& source) {
     throw ProjectError(source, {{"", std::string("not valid JSON: ") + e.what()}});
   }
   if (!p.data.is_object()) throw ProjectError(source, {{"", "the top level must be a JSON object"}});
+  if (std::vector<Issue> asked = apply_overrides(p.data, overrides); !asked.empty()) throw ProjectError(source, asked);
   // the dimension is needed to check vectors, so it is checked first
   const auto d = p.data.find("dimension");
   if (d == p.data.end() || !d->is_number_integer() || (d->get<long long>() != 2 && d->get<long long>() != 3))
@@ -97,14 +107,14 @@ Project parse_project(const std::string& text, const std::string& source) {
                                                                 : "must be one of 2, 3, got " + describe(*d)}});
   std::vector<Issue> issues;
   validate_object(p.data, project_schema(), "", p.dimension(), issues);
-  if (!issues.empty()) throw ProjectError(source, issues);
+  if (!issues.empty()) throw ProjectError(source, named_by_origin(issues, overrides));
   if (!p.data.contains("name")) p.data["name"] = std::filesystem::path(source).stem().string();
   check_references(p, issues);
-  if (!issues.empty()) throw ProjectError(source, issues);
+  if (!issues.empty()) throw ProjectError(source, named_by_origin(issues, overrides));
   return p;
 }
 
-Project load_project(const std::filesystem::path& file) {
+Project load_project(const std::filesystem::path& file, const Overrides& overrides) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
     throw ProjectError(file.string(), {{"", "no such file (or not a regular file)"}});
@@ -114,7 +124,7 @@ Project load_project(const std::filesystem::path& file) {
   std::stringstream ss;
   ss << in.rdbuf();
   if (!in.good() && !in.eof()) throw ProjectError(file.string(), {{"", "cannot be read"}});
-  return parse_project(ss.str(), file.string());
+  return parse_project(ss.str(), file.string(), overrides);
 }
 
 }  // namespace rollsim

@@ -1,88 +1,20 @@
 // Declaration of every project field: name, type, range, default, unit, documentation.
 #include "project/ProjectSchema.h"
 
+#include "analysis/IncrementOptions.h"
+#include "analysis/NewtonOptions.h"
+#include "base/SchemaFields.h"
 #include "io/OutputFields.h"
 #include "project/RollingProcess.h"
 #include "project/RunProject.h"
 #include "solve/SolverStrategy.h"
+#include "solve/UpdatePolicy.h"
 
 namespace rollsim {
 
 namespace {
 
-Field num(std::string name, std::string unit, std::string doc) {
-  Field f;
-  f.name = std::move(name);
-  f.kind = Kind::Number;
-  f.unit = std::move(unit);
-  f.doc = std::move(doc);
-  return f;
-}
-Field positive(std::string name, std::string unit, std::string doc) {
-  Field f = num(std::move(name), std::move(unit), std::move(doc));
-  f.min = 0.0;
-  f.min_exclusive = true;
-  return f;
-}
-Field count(std::string name, std::string doc, double max = 1e6) {
-  Field f;
-  f.name = std::move(name);
-  f.kind = Kind::Integer;
-  f.min = 1;
-  f.max = max;
-  f.doc = std::move(doc);
-  return f;
-}
-Field str(std::string name, std::string doc) {
-  Field f;
-  f.name = std::move(name);
-  f.kind = Kind::String;
-  f.doc = std::move(doc);
-  return f;
-}
-Field vec(std::string name, std::string unit, std::string doc, int size = 0) {
-  Field f = num(std::move(name), std::move(unit), std::move(doc));
-  f.kind = Kind::Vector;
-  f.vector_size = size;
-  return f;
-}
-Field choice(std::string name, std::vector<std::string> choices, std::string def, std::string doc) {
-  Field f;
-  f.name = std::move(name);
-  f.kind = Kind::Choice;
-  f.choices = std::move(choices);
-  f.default_value = def;
-  f.doc = std::move(doc);
-  return f;
-}
-Field req(Field f) {
-  f.required = true;
-  return f;
-}
-Field def(Field f, json d) {
-  f.default_value = std::move(d);
-  return f;
-}
-Field objects(std::string name, const ObjectSchema& o, std::string doc, size_t min_items = 0) {
-  Field f;
-  f.name = std::move(name);
-  f.kind = Kind::ObjectArray;
-  f.object = &o;
-  f.doc = std::move(doc);
-  f.min_items = min_items;
-  f.required = min_items > 0;
-  if (!f.required) f.default_value = json::array();
-  return f;
-}
-Field object(std::string name, const ObjectSchema& o, std::string doc) {
-  Field f;
-  f.name = std::move(name);
-  f.kind = Kind::Object;
-  f.object = &o;
-  f.doc = std::move(doc);
-  f.default_value = json::object();
-  return f;
-}
+using namespace schema;
 
 const ObjectSchema kBlock{
     "block mesh",
@@ -153,12 +85,6 @@ const ObjectSchema kCylinder{
      angle("end_angle", 360.0, "end of the angular span")},
     "",
     {}};
-
-Field bounded(Field f, double lo, double hi) {
-  f.min = lo;
-  f.max = hi;
-  return f;
-}
 
 const ObjectSchema kRoundBar{
     "round_bar mesh",
@@ -252,12 +178,6 @@ Field poisson() {
   f.min = -1.0;
   f.max = 0.5;
   f.min_exclusive = f.max_exclusive = true;
-  return f;
-}
-
-Field non_negative(std::string name, std::string unit, std::string doc) {
-  Field f = num(std::move(name), std::move(unit), std::move(doc));
-  f.min = 0.0;
   return f;
 }
 
@@ -374,141 +294,75 @@ const ObjectSchema kContact{
     "",
     {}};
 
+/// The fields of a section: `head` (the project's own), then each table's bound fields.
+template <class... Tables>
+std::vector<Field> section(std::vector<Field> head, const Tables&... tables) {
+  (..., [&] {
+    for (Field& f : fields_of(tables)) head.push_back(std::move(f));
+  }());
+  return head;
+}
+
+/// solver.mode's documentation: every strategy of the registry with what it does.
+std::string mode_doc() {
+  std::string doc = "solver strategy (see docs/ARCHITECTURE.md) — ";
+  for (const StrategyInfo& s : solver_registry()) doc += s.name + ": " + s.description + "; ";
+  return doc + kAutoSolver +
+         ": direct, mixed or (a body partitioned) feti, whichever the partition table's cost model predicts cheapest "
+         "(summary.json's solver.auto says why)";
+}
+
 const ObjectSchema& solver_schema() {
   static const ObjectSchema s{
       "solver",
       "Linear solver settings.",
-      {choice("mode", solver_mode_names(), "direct",
-              "solver strategy (see docs/ARCHITECTURE.md); auto: direct, mixed or (a body partitioned) feti, whichever "
-              "the partition table's cost model predicts cheapest (summary.json's solver.auto says why)"),
-       def(count("threads", "threads for the factorization (BLAS) and parallel groups", 256), 1),
-       def(str("update",
-               "Newton: which groups get a new tangent and factor at each iteration — always (Mixed I / DD-I) or "
-               "selective[:TOL] (Mixed II / DD-II: a group keeps its factor while ‖r_g‖ ≤ TOL ‖r‖; TOL 0.01 by "
-               "default)"),
-           "always"),
-       choice("preconditioner", preconditioner_names(), "none",
-              "interface preconditioner of `feti` (none: the paper's unpreconditioned projected CG)"),
-       choice("multipliers", multiplier_names(), "nonredundant",
-              "subdomain glue of `feti`: nonredundant (k − 1 constraints per dof shared by k subdomains, the paper's) "
-              "or redundant (all k(k − 1)/2 pairs)"),
-       choice(
-           "projector", projector_names(), "identity",
-           "metric Q of the rigid-mode projector P = I − QG(GᵀQG)⁻¹Gᵀ of `feti` with a preconditioner: identity "
-           "(Q = I, the paper's; always without a preconditioner) or preconditioner (Q = M⁻¹: 15–25 % fewer "
-           "iterations, but M⁻¹G costs a preconditioner solve per floating neighbour's mode, once per factorization)"),
-       choice("interface_start", interface_start_names(), "zero",
-              "where the interface CG / GMRES of `mixed` and `feti` starts in a Newton analysis: zero (the least-norm "
-              "λ with Gᵀλ = e, the paper's) or previous (the last iteration's multipliers of the rows that stay, its "
-              "tolerance still relative to the zero start's residual: 27–30 % fewer CG iterations on the 3D pass, "
-              "the roll force within 5e-6 of zero's, docs/BENCHMARKS-ROLLING.md)"),
-       choice("interface_solver", interface_solver_names(), "krylov",
-              "how `mixed` and `feti` solve their condensed interface problem: krylov (projected CG, or GMRES when "
-              "slipping friction makes it unsymmetric; the paper's, F never formed) or dense (F formed from each "
-              "group's flexibility on the dofs its constraints touch — one block solve per touched dof, kept while "
-              "the group keeps its factor — and factored by dense LU: exact λ, for interfaces of up to a few "
-              "thousand multipliers)"),
-       choice("petsc_method", petsc_method_names(), "bddc",
-              "method of `petsc`: bddc (PCBDDC preconditioning CG on the whole problem) or fetidp (KSPFETIDP: CG on "
-              "the FETI-DP multipliers, the inner BDDC's coarse space)"),
-       def(str("petsc_options",
-               "`petsc`: options passed through to PETSc (e.g. \"-ksp_monitor -pc_bddc_use_faces\"); an option PETSc "
-               "does not use is refused"),
-           ""),
-       [] {
-         Field f = def(
-             positive("cg_tolerance", "-",
-                      "relative residual tolerance of the interface CG (mixed/feti; petsc: its Krylov solver's rtol)"),
-             1e-4);
-         f.max = 1.0;
-         f.max_exclusive = true;
-         return f;
-       }()},
+      section({flag(def(choice("mode", solver_mode_names(), "", mode_doc()), "direct"), "solver"),
+               [] {
+                 Field f = flag(str("update",
+                                    "Newton: which groups get a new tangent and factor at each iteration — always "
+                                    "(Mixed I / DD-I) or selective[:TOL] (Mixed II / DD-II: a group keeps its factor "
+                                    "while ‖r_g‖ ≤ TOL ‖r‖; TOL 0.01 by default)"),
+                                "update");
+                 f.default_value = to_string(UpdateSetting{});
+                 f.check = [](const json& v) -> std::string {
+                   try {
+                     parse_update(v.get<std::string>());
+                     return "";
+                   } catch (const std::invalid_argument& e) {
+                     return e.what();
+                   }
+                 };
+                 return f;
+               }()},
+              solver_option_fields()),
       "",
       {}};
   return s;
 }
 
-Field newton_tolerance() {
-  Field f = def(positive("tolerance", "-",
-                         "Newton: ‖r_k‖ / max(‖r_1‖, ‖r_2‖) of the out-of-balance force to converge a step (‖r_2‖: the "
-                         "scale of a step driven by a prescribed body alone)"),
-                1e-8);
-  f.max = 1.0;
-  f.max_exclusive = true;
-  return f;
+const ObjectSchema& analysis_schema() {
+  static const ObjectSchema s{
+      "analysis",
+      "How the loads are applied: in N increments, each with every load and prescribed displacement times its load "
+      "factor. `linear` solves the same stiffness at every increment (frictionless contact makes the sequence "
+      "meaningful: each increment's active set starts from the previous one's); `newton` iterates on the residual "
+      "with the consistent tangent (plasticity; the frictionless active set updated at every iteration) and cuts a "
+      "step that does not converge in half. The type is `newton` when a material is plastic and none is given.",
+      section({[] {
+                 std::vector<std::string> types{"auto"};
+                 for (const std::string& n : analysis_names()) types.push_back(n);
+                 return choice("type", types, "auto",
+                               "analysis: auto (newton when a material is plastic, else linear), linear or newton");
+               }(),
+               choice("contact_search", {"boxes", "all"}, "boxes",
+                      "contact search: boxes — a slave node is projected only on master facets whose bounding box is "
+                      "within search_distance; all — on every master facet (the exhaustive search, to measure what "
+                      "the boxes save)")},
+              increment_option_fields(), newton_option_fields()),
+      "",
+      {}};
+  return s;
 }
-
-Field max_cutbacks() {
-  Field f = def(count("max_cutbacks",
-                      "Newton: how often the step may be halved below its nominal size (after failed attempts; it "
-                      "grows back by doubling after a step that converges at once) before the run is diverged",
-                      50),
-                8);
-  f.min = 0;
-  return f;
-}
-
-const ObjectSchema kAnalysis{
-    "analysis",
-    "How the loads are applied: in N increments, each with every load and prescribed displacement times its load "
-    "factor. `linear` solves the same stiffness at every increment (frictionless contact makes the sequence "
-    "meaningful: each increment's active set starts from the previous one's); `newton` iterates on the residual "
-    "with the consistent tangent (plasticity; the frictionless active set updated at every iteration) and cuts a "
-    "step that does not converge in half. The type is `newton` when a material is plastic and none is given.",
-    {[] {
-       std::vector<std::string> types{"auto"};
-       for (const std::string& n : analysis_names()) types.push_back(n);
-       return choice("type", types, "auto",
-                     "analysis: auto (newton when a material is plastic, else linear), linear or newton");
-     }(),
-     def(count("increments", "load increments N: equal proportional steps of every load and prescribed displacement",
-               1000),
-         1),
-     def(count("max_active_set_iterations",
-               "linear solves an increment may take while the frictionless contact statuses change; the run ends "
-               "not_converged (iteration_limit) when they still change after that many",
-               1000),
-         50),
-     def(count("max_iterations", "Newton: iterations of one step before it is cut back", 200), 25), newton_tolerance(),
-     max_cutbacks(),
-     choice(
-         "friction_tangent", {"consistent", "lagged"}, "consistent",
-         "Newton with Coulomb friction: consistent — a slipping point's friction force μ λ_n is solved for with "
-         "its normal multiplier (an unsymmetric system: UMFPACK under direct, projected GMRES on the interface under "
-         "mixed and feti; skyline lags it whatever this says); lagged — it lags one iteration behind the normal "
-         "force (a symmetric system)"),
-     choice("first_tangent", {"converged", "fresh"}, "converged",
-            "Newton: the tangent a step's first iteration factors — converged: the one assembled at the step "
-            "before's converged iterate, with its plastic flow; fresh: assembled again at the converged state, where "
-            "a zero strain increment returns elastically, so a flowing body starts each step with its elastic "
-            "stiffness (docs/BENCHMARKS-ROLLING.md: what made `--update always` fail on the rolling pass)"),
-     choice("contact_tangent", {"none", "groups", "full"}, "groups",
-            "Newton with contact pairs that slide `large_every_iteration`: the contact's geometric stiffness (how the "
-            "rows' normal and projection turn with the displacement: node-to-segment in 2D, node-to-face in 3D). "
-            "groups — the terms within one group (the master's own part; the slave's on a warped 3D face) into its "
-            "stiffness block, every solver; full — also the terms joining slave and master, direct and skyline only; "
-            "none — the rows' change is not linearised. full pays where points slide over a deformable master (a block "
-            "pushed along a base: 60 Newton iterations against 94); a sticking point's term only shifts the "
-            "multipliers, so on a sticking pass full repeats none (docs/BENCHMARKS-NONLINEAR.md). In 3D the same "
-            "choice holds the turning of a slipping friction force's direction (its slip-direction term)"),
-     choice("constant_tangents", {"keep", "refactor"}, "keep",
-            "Newton under the selective update: keep — a group whose tangent cannot change (elastic, small strain) is "
-            "assembled and factored once; refactor — it is re-evaluated by its residual like any group (to measure "
-            "what keeping saves)"),
-     choice("contact_search", {"boxes", "all"}, "boxes",
-            "contact search: boxes — a slave node is projected only on master facets whose bounding box is within "
-            "search_distance; all — on every master facet (the exhaustive search, to measure what the boxes save)"),
-     [] {
-       Field f;
-       f.name = "line_search";
-       f.kind = Kind::Boolean;
-       f.default_value = true;
-       f.doc = "Newton: one secant step along the correction when the residual's work along it did not halve";
-       return f;
-     }()},
-    "",
-    {}};
 
 const ObjectSchema kProbe{"probe",
                           "A named point whose nearest node's displacement is reported in summary.json.",
@@ -577,7 +431,7 @@ const ObjectSchema& project_schema() {
          return f;
        }(),
        objects("boundary_conditions", kBC, "supports and loads"), objects("contacts", kContact, "contact pairs"),
-       object("analysis", kAnalysis, "load increments"), object("solver", solver_schema(), "solver settings"),
+       object("analysis", analysis_schema(), "load increments"), object("solver", solver_schema(), "solver settings"),
        objects("probes", kProbe, "reported points"), object("output", kOutput, "outputs")},
       "",
       {}};

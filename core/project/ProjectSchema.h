@@ -1,6 +1,6 @@
 #pragma once
 // The declared schema of a rollsim project file (see docs/project-format.md, generated from it).
-#include "project/Schema.h"
+#include "base/Schema.h"
 
 namespace rollsim {
 

@@ -6,8 +6,8 @@
 // mid-plane), half width in 3D. Axes: x rolling direction, y thickness (2D) / width (3D), z thickness (3D).
 #include <optional>
 
+#include "base/Schema.h"
 #include "model/Model.h"
-#include "project/Schema.h"
 
 namespace rollsim {
 

@@ -6,9 +6,9 @@
 #include "analysis/NewtonStatic.h"
 #include "analysis/RollingMeasures.h"
 #include "analysis/RollingTheory.h"
+#include "base/Blas.h"
 #include "project/ModelBuilder.h"
 #include "project/SolverChoice.h"
-#include "solve/Blas.h"
 
 namespace rollsim {
 
@@ -44,22 +44,19 @@ void refuse_contact(const SolverStrategy& solver, const Model& model) {
                       ")");
 }
 
-Results run_linear(const Project& project, const Model& model, AnalysisObserver* observer) {
-  const SolverOptions options = solver_options(project);
-  set_library_threads(options.threads);
-  const auto solver = make_solver(project.data.at("solver").at("mode").get<std::string>(), options);
+Results run_linear(const RunConfig& config, const Model& model, AnalysisObserver* observer) {
+  set_library_threads(config.solver.threads);
+  const auto solver = make_solver(config.solver_mode, config.solver);
   refuse_contact(*solver, model);
-  return run_linear_static(model, *solver, observer, load_increments(project), max_active_set_iterations(project));
+  return run_linear_static(model, *solver, observer, config.steps.increments, config.steps.max_active_set_iterations);
 }
 
-Results run_newton(const Project& project, const Model& model, AnalysisObserver* observer) {
-  const SolverOptions options = solver_options(project);
-  set_library_threads(options.threads);
-  const json& s = project.data.at("solver");
-  const auto solver = make_solver(s.at("mode").get<std::string>(), options);
+Results run_newton(const RunConfig& config, const Model& model, AnalysisObserver* observer) {
+  set_library_threads(config.solver.threads);
+  const auto solver = make_solver(config.solver_mode, config.solver);
   refuse_contact(*solver, model);
-  const auto policy = make_update_policy(s.value("update", "always"));
-  return run_newton_static(model, *solver, *policy, observer, newton_options(project));
+  const auto policy = make_update_policy(config.update);
+  return run_newton_static(model, *solver, *policy, observer, config.newton);
 }
 }  // namespace
 
@@ -84,16 +81,20 @@ std::vector<std::string> analysis_names() {
 }
 
 Results run_project(const Project& project, const Model& model, AnalysisObserver* observer) {
-  if (project.data.at("solver").at("mode").get<std::string>() == kAutoSolver) {
-    const AutoChoice choice = choose_solver_mode(project, model);
+  return run_project(project.config(), model, observer);
+}
+
+Results run_project(const RunConfig& config, const Model& model, AnalysisObserver* observer) {
+  if (config.solver_mode == kAutoSolver) {
+    const AutoChoice choice = choose_solver_mode(config, model);
     if (observer) observer->on_stage("solver auto: " + choice.reason);
-    Project chosen = project;
-    chosen.data["solver"]["mode"] = choice.mode;
+    RunConfig chosen = config;
+    chosen.solver_mode = choice.mode;
     Results r = run_project(chosen, model, observer);
     r.auto_choice = choice;
     return r;
   }
-  const std::string type = analysis_type(project);
+  const std::string& type = config.analysis;
   if (model.rolling)  // a pass the roll cannot bite is an answer, not a solver failure: nothing is solved
     if (std::string no_bite = bite_refusal(*model.rolling); !no_bite.empty()) {
       Results r;
@@ -102,7 +103,7 @@ Results run_project(const Project& project, const Model& model, AnalysisObserver
     }
   for (const AnalysisInfo& info : analysis_registry())
     if (info.name == type) {
-      Results r = info.run(project, model, observer);
+      Results r = info.run(config, model, observer);
       if (r.status.ok())  // never a NaN in a result: a converged run whose fields overflowed is an error
         if (auto bad = non_finite_results(model, r); !bad.empty()) r.status = {Status::error, Reason::none, bad};
       if (model.rolling) r.rolling = measure_rolling(model, r);

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "analysis/Results.h"
+#include "base/Observer.h"
 #include "model/Model.h"
 #include "project/Project.h"
-#include "solve/Observer.h"
 
 namespace rollsim {
 
@@ -18,7 +18,7 @@ namespace rollsim {
 struct AnalysisInfo {
   std::string name;
   std::string description;
-  std::function<Results(const Project&, const Model&, AnalysisObserver*)> run;
+  std::function<Results(const RunConfig&, const Model&, AnalysisObserver*)> run;
 };
 
 /// Every analysis, in the order shown to users, and their names (analysis.type).
@@ -30,5 +30,7 @@ std::vector<std::string> analysis_names();
 /// AnalysisError for a model that cannot be solved as given. solver.mode `auto` is resolved here
 /// (choose_solver_mode), said to the observer as a stage and returned in Results::auto_choice.
 Results run_project(const Project& project, const Model& model, AnalysisObserver* observer = nullptr);
+/// The same with a configuration of one's own (the project's, changed: the window's solver choice).
+Results run_project(const RunConfig& config, const Model& model, AnalysisObserver* observer = nullptr);
 
 }  // namespace rollsim

@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "base/Stopwatch.h"
 #include "model/DofMap.h"
 #include "partition/PartitionReport.h"
-#include "project/ModelBuilder.h"
-#include "solve/Stopwatch.h"
 
 namespace rollsim {
 
@@ -22,10 +21,10 @@ constexpr double kPartitionFlattery = 2;
 
 /// The feti model of the partition table for a preconditioner (PartitionReport.h's CostModel and its notes), with
 /// `solves` linear solves; none: 60 iterations, 2.3 × Dirichlet's (the 20 × 20 cantilever of BENCHMARKS-FETI.md).
-CostModel feti_model(const std::string& preconditioner, double solves) {
+CostModel feti_model(Preconditioner preconditioner, double solves) {
   CostModel m;  // dirichlet
-  if (preconditioner == "lumped") m = {45, 1, 1};
-  if (preconditioner == "none") m = {60, 1, 1};
+  if (preconditioner == Preconditioner::Lumped) m = {45, 1, 1};
+  if (preconditioner == Preconditioner::None) m = {60, 1, 1};
   m.cg_iterations *= solves;
   return m;
 }
@@ -64,16 +63,15 @@ std::string describe(const AutoChoice& c) {
 }
 }  // namespace
 
-AutoChoice choose_solver_mode(const Project& project, const Model& model) {
+AutoChoice choose_solver_mode(const RunConfig& config, const Model& model) {
   const Stopwatch clock;
   const bool contact = !model.contacts.empty();
   const bool unilateral = std::any_of(model.contacts.begin(), model.contacts.end(),
                                       [](const ContactPair& p) { return p.kind != ContactKind::Tied; });
-  const double solves =
-      unilateral && analysis_type(project) == "linear" ? kActiveSetSolves * load_increments(project) : 1;
+  const double solves = unilateral && config.analysis == "linear" ? kActiveSetSolves * config.steps.increments : 1;
   const CostModel direct{0, contact ? kLuFactors * solves : 1, 0};
   const CostModel mixed{contact ? kInterfaceIterations * solves : 0, 1, 1};
-  const CostModel feti = feti_model(solver_options(project).preconditioner, solves);
+  const CostModel feti = feti_model(config.solver.preconditioner, solves);
 
   double direct_cost = 0, mixed_cost = 0, feti_cost = 0;
   bool partitioned = false;

@@ -4,7 +4,7 @@
 // Candidates: `direct`, `mixed`, and `feti` when a body is partitioned. `skyline` and `petsc` are never chosen
 // (docs/BENCHMARKS.md, "solver.mode: auto", says where skyline was measured fastest and by how much).
 #include "model/Model.h"
-#include "project/Project.h"
+#include "project/RunConfig.h"
 #include "solve/AutoChoice.h"
 
 namespace rollsim {
@@ -19,6 +19,6 @@ namespace rollsim {
 /// - feti: partitioned bodies by the table's model for the project's preconditioner (dirichlet 25 iterations, two
 ///   factors; lumped 45, one; none 60, one), times 2 — the table's AMD estimate flatters a partition about 2× against
 ///   CHOLMOD's METIS ordering (docs/BENCHMARKS-PARTITION.md) —, the others as under mixed.
-AutoChoice choose_solver_mode(const Project& project, const Model& model);
+AutoChoice choose_solver_mode(const RunConfig& config, const Model& model);
 
 }  // namespace rollsim

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "base/RunStatus.h"
 #include "solve/Factorization.h"
-#include "solve/RunStatus.h"
 
 namespace rollsim {
 

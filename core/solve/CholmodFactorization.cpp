@@ -5,9 +5,9 @@
 #include <utility>
 #include <vector>
 
+#include "base/Stopwatch.h"
 #include "solve/CholmodView.h"
 #include "solve/NodeOrdering.h"
-#include "solve/Stopwatch.h"
 #include "solve/SupernodalSolve.h"
 
 namespace rollsim {

@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
+#include "base/Parallel.h"
 #include "solve/CholeskyOrLU.h"
 #include "solve/Factorization.h"
-#include "solve/Parallel.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {
@@ -166,11 +166,9 @@ class BlockPreconditioner final : public InterfacePreconditioner {
 };
 }  // namespace
 
-std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(const std::string& name, int threads) {
-  if (name == "none") return nullptr;
-  if (name == "lumped") return std::make_unique<BlockPreconditioner>(false, threads);
-  if (name == "dirichlet") return std::make_unique<BlockPreconditioner>(true, threads);
-  throw std::invalid_argument("unknown preconditioner '" + name + "' (valid: " + one_of(preconditioner_names()) + ")");
+std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(Preconditioner kind, int threads) {
+  if (kind == Preconditioner::None) return nullptr;
+  return std::make_unique<BlockPreconditioner>(kind == Preconditioner::Dirichlet, threads);
 }
 
 }  // namespace rollsim

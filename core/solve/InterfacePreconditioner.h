@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "solve/BlockSystem.h"
+#include "solve/SolverOptions.h"
 
 namespace rollsim {
 
@@ -25,8 +26,8 @@ class InterfacePreconditioner {
   virtual SparseMatrix apply_columns(const BlockSystem& sys, const SparseMatrix& X) const = 0;
 };
 
-/// "none" gives nullptr; "lumped", "dirichlet"; anything else throws std::invalid_argument. `threads`: the groups'
-/// blocks are set up and applied concurrently (summed in group order: the result does not depend on it).
-std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(const std::string& name, int threads = 1);
+/// None gives nullptr. `threads`: the groups' blocks are set up and applied concurrently (summed in group order: the
+/// result does not depend on it).
+std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(Preconditioner kind, int threads = 1);
 
 }  // namespace rollsim

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "solve/Blas.h"
+#include "base/Blas.h"
+#include "base/Parallel.h"
+#include "base/Stopwatch.h"
 #include "solve/DenseInterfaceSolve.h"
-#include "solve/Parallel.h"
 #include "solve/ProjectedGMRES.h"
 #include "solve/SparseCompare.h"
-#include "solve/Stopwatch.h"
 
 namespace rollsim {
 
@@ -146,7 +146,7 @@ Eigen::MatrixXd MixedStrategy::formed_interface(const BlockSystem& sys) {
 
 ProjectedCGResult MixedStrategy::solve_interface(const BlockSystem& sys, InterfaceProblem& problem,
                                                  bool new_preconditioner, int solve, AnalysisObserver* observer) {
-  if (options_.interface_solver == "dense") {
+  if (options_.interface_solver == InterfaceSolver::Dense) {
     if (!same_constraints(sys, basis_C_)) {  // the independent rows, found again when a constraint block changed
       basis_ = independent_rows(stacked_constraints(sys));
       basis_C_.clear();
@@ -156,11 +156,11 @@ ProjectedCGResult MixedStrategy::solve_interface(const BlockSystem& sys, Interfa
     r.lambda = basis_.minimum_norm(r.lambda);  // a dependent row's share spread as the Krylov solvers spread it
     return r;
   }
-  if (options_.interface_start == "previous") problem.start = sys.lambda_start;
+  if (options_.interface_start == InterfaceStart::Previous) problem.start = sys.lambda_start;
   // an indefinite group factor (CholeskyOrLU) makes F symmetric but possibly indefinite on ker Gᵀ, where CG may
   // break down: GMRES then, as for an unsymmetric F; positive definite groups keep CG
   const bool krylov_gmres = problem.unsymmetric || any_indefinite();
-  if (preconditioner_ && options_.projector == "preconditioner" && problem.Gs.cols() && !krylov_gmres)
+  if (preconditioner_ && options_.projector == ProjectorMetric::Preconditioner && problem.Gs.cols() && !krylov_gmres)
     problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
   ProjectedCGOptions cg{options_.cg_tolerance, kMaxInterfaceIterations, {}, solve};
   if (preconditioner_) cg.preconditioner = [&](const Eigen::VectorXd& w) { return preconditioner_->apply(sys, w); };
@@ -197,7 +197,7 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   BlockSolution out;
   out.lambda = last_.lambda;
   out.status = cg_status(last_, ProjectedCGOptions{options_.cg_tolerance, kMaxInterfaceIterations, {}, solve});
-  if (options_.interface_solver == "dense" && !last_.converged) {
+  if (options_.interface_solver == InterfaceSolver::Dense && !last_.converged) {
     char what[300];
     std::snprintf(what, sizeof what,
                   "the dense interface solve left a relative residual of %.3g and a constraint error of %.3g (above "

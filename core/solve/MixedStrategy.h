@@ -26,7 +26,8 @@ class MixedStrategy final : public SolverStrategy {
   bool solves_unsymmetric() const override { return true; }
   /// λ is as accurate as the interface CG's relative tolerance (dense: exact, as `direct`'s)
   double multiplier_tolerance() const override {
-    return options_.interface_solver == "dense" ? SolverStrategy::multiplier_tolerance() : options_.cg_tolerance;
+    return options_.interface_solver == InterfaceSolver::Dense ? SolverStrategy::multiplier_tolerance()
+                                                               : options_.cg_tolerance;
   }
   /// The last interface solve (residual history, constraint error), for tests and reports.
   const ProjectedCGResult& last_interface_solve() const { return last_; }

@@ -64,10 +64,6 @@ std::filesystem::path petsc_module_path() {
 bool petsc_available() { return true; }
 
 std::unique_ptr<SolverStrategy> make_petsc_strategy(const SolverOptions& options) {
-  const auto& methods = petsc_method_names();
-  if (std::find(methods.begin(), methods.end(), options.petsc_method) == methods.end())
-    throw std::invalid_argument("petsc: the method must be " + one_of(methods) + ", got '" + options.petsc_method +
-                                "'");
   return load().make_strategy(options);
 }
 

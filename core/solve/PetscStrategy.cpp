@@ -14,8 +14,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "base/Stopwatch.h"
 #include "solve/PetscModule.h"
-#include "solve/Stopwatch.h"
 
 namespace rollsim {
 
@@ -351,7 +351,7 @@ void PetscStrategy::set_up(const BlockSystem& sys) {
 
   ROLLSIM_PETSC(KSPCreate(comm, &ksp_));
   PC bddc = nullptr;
-  if (options_.petsc_method == "bddc") {
+  if (options_.petsc_method == PetscMethod::Bddc) {
     ROLLSIM_PETSC(KSPSetType(ksp_, KSPCG));
     ROLLSIM_PETSC(KSPGetPC(ksp_, &bddc));
     ROLLSIM_PETSC(PCSetType(bddc, PCBDDC));
@@ -435,7 +435,7 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
       VecDestroy(&x);
       VecDestroy(&b);
       refuse_together("petsc: --petsc-options: PETSc did not use " + left +
-                      " (misspelt, or not an option of --petsc-method " + options_.petsc_method + ")");
+                      " (misspelt, or not an option of --petsc-method " + word(options_.petsc_method) + ")");
     }
   }
   // every rank gets the whole solution: the driver recovers every body from the groups' displacements
@@ -463,7 +463,7 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   if (reason < 0) {
     const bool indefinite = reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_INDEFINITE_MAT;
     sol.status = {Status::not_converged, reason == KSP_DIVERGED_ITS ? Reason::iteration_limit : Reason::breakdown,
-                  "petsc (" + options_.petsc_method + "): the Krylov solve stopped after " + std::to_string(its) +
+                  "petsc (" + word(options_.petsc_method) + "): the Krylov solve stopped after " + std::to_string(its) +
                       " iterations: " + KSPConvergedReasons[reason] +
                       (indefinite ? " (CG needs a positive definite matrix: the stiffness or tangent is not — plastic "
                                     "flow without hardening, or a part that lost its stiffness)"

@@ -11,9 +11,9 @@
 #include <functional>
 #include <vector>
 
+#include "base/Observer.h"
+#include "base/RunStatus.h"
 #include "solve/Factorization.h"
-#include "solve/Observer.h"
-#include "solve/RunStatus.h"
 
 namespace rollsim {
 

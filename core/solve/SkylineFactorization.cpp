@@ -8,8 +8,8 @@
 #include <numeric>
 #include <string>
 
+#include "base/Stopwatch.h"
 #include "solve/ReverseCuthillMcKee.h"
-#include "solve/Stopwatch.h"
 
 namespace rollsim {
 namespace {

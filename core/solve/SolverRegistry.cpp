@@ -32,36 +32,6 @@ const std::vector<StrategyInfo>& solver_registry() {
   return registry;
 }
 
-const std::vector<std::string>& preconditioner_names() {
-  static const std::vector<std::string> names{"none", "lumped", "dirichlet"};
-  return names;
-}
-
-const std::vector<std::string>& multiplier_names() {
-  static const std::vector<std::string> names{"nonredundant", "redundant"};
-  return names;
-}
-
-const std::vector<std::string>& projector_names() {
-  static const std::vector<std::string> names{"identity", "preconditioner"};
-  return names;
-}
-
-const std::vector<std::string>& interface_start_names() {
-  static const std::vector<std::string> names{"zero", "previous"};
-  return names;
-}
-
-const std::vector<std::string>& interface_solver_names() {
-  static const std::vector<std::string> names{"krylov", "dense"};
-  return names;
-}
-
-const std::vector<std::string>& petsc_method_names() {
-  static const std::vector<std::string> names{"bddc", "fetidp"};
-  return names;
-}
-
 std::string one_of(const std::vector<std::string>& words) {
   std::string s;
   for (size_t i = 0; i < words.size(); ++i) s += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];

@@ -7,26 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "base/Observer.h"
 #include "solve/BlockSystem.h"
-#include "solve/Observer.h"
 #include "solve/SolveStats.h"
+#include "solve/SolverOptions.h"
 
 namespace rollsim {
-
-struct SolverOptions {
-  double cg_tolerance = 1e-4;
-  int threads = 1;                           // groups factored and solved concurrently (mixed / feti)
-  std::string preconditioner = "none";       // interface preconditioner: none, lumped, dirichlet (feti)
-  std::string multipliers = "nonredundant";  // subdomain glue: nonredundant, redundant (feti)
-  std::string projector = "identity";        // metric Q of the rigid-mode projector with a preconditioner:
-                                             // identity (Q = I, the paper's) or preconditioner (Q = M⁻¹)
-  std::string interface_start = "zero";      // mixed / feti: the interface CG starts from BlockSystem::lambda_start
-                                             // (previous) or from the least-norm feasible λ (zero, the paper's)
-  std::string interface_solver = "krylov";   // mixed / feti: projected CG / GMRES (krylov, the paper's) or F formed
-                                             // and factored (dense: InterfaceFlexibility, DenseInterfaceSolve)
-  std::string petsc_method = "bddc";         // petsc: bddc (PCBDDC in CG) or fetidp (KSPFETIDP)
-  std::string petsc_options;                 // petsc: options passed through to PETSc, e.g. "-ksp_monitor"
-};
 
 class SolverStrategy {
  public:
@@ -63,13 +49,6 @@ struct StrategyInfo {
   std::function<std::unique_ptr<SolverStrategy>(const SolverOptions&)> make;
 };
 
-/// The words of each solver option, named once: the schema, the CLI's checks and help, and the strategies read them.
-const std::vector<std::string>& preconditioner_names();    // none, lumped, dirichlet
-const std::vector<std::string>& multiplier_names();        // nonredundant, redundant
-const std::vector<std::string>& projector_names();         // identity (Q = I), preconditioner (Q = M⁻¹)
-const std::vector<std::string>& petsc_method_names();      // bddc, fetidp
-const std::vector<std::string>& interface_start_names();   // zero, previous (the last Newton iteration's λ)
-const std::vector<std::string>& interface_solver_names();  // krylov, dense
 /// "a, b or c": for messages that list the valid words.
 std::string one_of(const std::vector<std::string>& words);
 

@@ -2,7 +2,7 @@
 
 #include <umfpack.h>
 
-#include "solve/Stopwatch.h"
+#include "base/Stopwatch.h"
 
 namespace rollsim {
 

@@ -13,11 +13,7 @@ std::vector<size_t> AlwaysUpdate::select(const BlockSystem& sys, const std::vect
   return all;
 }
 
-std::string SelectiveUpdate::name() const {
-  std::ostringstream s;
-  s << "selective:" << tolerance_;
-  return s.str();
-}
+std::string SelectiveUpdate::name() const { return to_string({UpdateSetting::Kind::Selective, tolerance_}); }
 
 std::vector<size_t> SelectiveUpdate::select(const BlockSystem& sys, const std::vector<double>& group_residuals) const {
   if (group_residuals.size() != sys.groups.size()) return AlwaysUpdate().select(sys, group_residuals);
@@ -27,21 +23,45 @@ std::vector<size_t> SelectiveUpdate::select(const BlockSystem& sys, const std::v
   return chosen;
 }
 
-std::unique_ptr<UpdatePolicy> make_update_policy(const std::string& name) {
-  if (name == "always") return std::make_unique<AlwaysUpdate>();
-  if (name == "selective") return std::make_unique<SelectiveUpdate>(kSelectiveTolerance);
-  const std::string prefix = "selective:";
-  if (name.rfind(prefix, 0) == 0) {
-    const std::string tol = name.substr(prefix.size());
-    char* end = nullptr;
-    const double t = std::strtod(tol.c_str(), &end);
-    if (!tol.empty() && end == tol.c_str() + tol.size() && t > 0.0 && t < 1.0)
-      return std::make_unique<SelectiveUpdate>(t);
-    throw std::invalid_argument("update policy '" + name +
-                                "': the tolerance after 'selective:' must be a number in "
-                                "(0, 1), e.g. selective:0.01");
-  }
-  throw std::invalid_argument("unknown update policy '" + name + "' (valid: always, selective, selective:TOL)");
+const std::vector<std::string>& update_policy_names() {
+  static const std::vector<std::string> names{"always", "selective"};
+  return names;
+}
+
+UpdateSetting parse_update(const std::string& text) {
+  const std::string& always = update_policy_names()[0];
+  const std::string& selective = update_policy_names()[1];
+  if (text == always) return {};
+  UpdateSetting s;
+  s.kind = UpdateSetting::Kind::Selective;
+  if (text == selective) return s;
+  const std::string prefix = selective + ":";
+  if (text.rfind(prefix, 0) != 0)
+    throw std::invalid_argument("unknown update policy '" + text + "' (valid: " + always + ", " + selective + ", " +
+                                prefix + "TOL)");
+  const std::string tol = text.substr(prefix.size());
+  char* end = nullptr;
+  s.tolerance = std::strtod(tol.c_str(), &end);
+  if (tol.empty() || end != tol.c_str() + tol.size() || !(s.tolerance > 0.0 && s.tolerance < 1.0))
+    throw std::invalid_argument("update policy '" + text + "': the tolerance after '" + prefix +
+                                "' must be a number in (0, 1), e.g. " + to_string(UpdateSetting{s.kind}));
+  return s;
+}
+
+std::string to_string(const UpdateSetting& setting) {
+  if (setting.kind == UpdateSetting::Kind::Always) return update_policy_names()[0];
+  std::ostringstream s;
+  s << update_policy_names()[1] << ":" << setting.tolerance;
+  return s.str();
+}
+
+std::unique_ptr<UpdatePolicy> make_update_policy(const UpdateSetting& setting) {
+  if (setting.kind == UpdateSetting::Kind::Always) return std::make_unique<AlwaysUpdate>();
+  return std::make_unique<SelectiveUpdate>(setting.tolerance);
+}
+
+std::unique_ptr<UpdatePolicy> make_update_policy(const std::string& text) {
+  return make_update_policy(parse_update(text));
 }
 
 void mark_updated(BlockSystem& sys, const std::vector<size_t>& groups) {

@@ -24,10 +24,26 @@ class UpdatePolicy {
   virtual double threshold() const { return 0.0; }
 };
 
+/// The policy a run asks for (solver.update, --update): its kind and, selective, its tolerance. The default member
+/// values are the one default of the option.
+struct UpdateSetting {
+  enum class Kind { Always, Selective };
+  Kind kind = Kind::Always;
+  double tolerance = 0.01;  // selective: the paper's examples
+};
+
+/// The words of the kinds, in enum order (`always`, `selective`; a selective tolerance follows as ":TOL").
+const std::vector<std::string>& update_policy_names();
+/// `always`, `selective` or `selective:TOL` (0 < TOL < 1); anything else throws std::invalid_argument naming the
+/// valid ones.
+UpdateSetting parse_update(const std::string& text);
+/// As the run reports it: `always`, `selective:0.01`.
+std::string to_string(const UpdateSetting& setting);
+
 /// Mixed I / DD-I: every group, every iteration.
 class AlwaysUpdate final : public UpdatePolicy {
  public:
-  std::string name() const override { return "always"; }
+  std::string name() const override { return update_policy_names()[0]; }
   std::vector<size_t> select(const BlockSystem& sys, const std::vector<double>& group_residuals) const override;
   bool uses_residuals() const override { return false; }
 };
@@ -47,12 +63,9 @@ class SelectiveUpdate final : public UpdatePolicy {
   double tolerance_;
 };
 
-/// Default tolerance of "selective" (the paper's examples).
-constexpr double kSelectiveTolerance = 0.01;
-
-/// "always", "selective" or "selective:TOL" (0 < TOL < 1); anything else throws std::invalid_argument naming the
-/// valid ones.
-std::unique_ptr<UpdatePolicy> make_update_policy(const std::string& name);
+std::unique_ptr<UpdatePolicy> make_update_policy(const UpdateSetting& setting);
+/// make_update_policy(parse_update(text)).
+std::unique_ptr<UpdatePolicy> make_update_policy(const std::string& text);
 
 /// Bumps the version of each group in `groups` (their K was just re-assembled): what the strategies refactor.
 void mark_updated(BlockSystem& sys, const std::vector<size_t>& groups);

@@ -31,14 +31,14 @@
 #include <CLI/CLI.hpp>
 
 #include "analysis/LinearStatic.h"
+#include "base/Blas.h"
+#include "base/Stopwatch.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
-#include "solve/Blas.h"
 #include "solve/CholmodView.h"
 #include "solve/Factorization.h"
 #include "solve/GlobalDirect.h"
 #include "solve/SolverStrategy.h"
-#include "solve/Stopwatch.h"
 
 namespace fs = std::filesystem;
 

@@ -25,15 +25,15 @@
 #include <CLI/CLI.hpp>
 #include <Eigen/SparseCholesky>
 
+#include "base/Blas.h"
+#include "base/DgemmPeak.h"
+#include "base/Stopwatch.h"
 #include "fem/Assembler.h"
 #include "fem/Loads.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
-#include "solve/Blas.h"
 #include "solve/CholmodFactorization.h"
-#include "solve/DgemmPeak.h"
 #include "solve/Factorization.h"
-#include "solve/Stopwatch.h"
 
 #ifdef ROLLSIM_BENCH_MUMPS
 #include <dmumps_c.h>

@@ -40,10 +40,10 @@
 
 #include "analysis/Decomposition.h"
 #include "analysis/LinearStatic.h"
+#include "base/Blas.h"
 #include "partition/PartitionSpec.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
-#include "solve/Blas.h"
 #include "solve/MixedStrategy.h"
 #include "solve/SolverStrategy.h"
 
@@ -204,9 +204,9 @@ Config feti(const std::string& factorization, const std::string& preconditioner,
             double tolerance, int threads = 1, const std::string& projector = "identity") {
   Config c;
   c.factorization = factorization;
-  c.options.preconditioner = preconditioner;
-  c.options.multipliers = multipliers;
-  c.options.projector = projector;
+  c.options.preconditioner = from_word<Preconditioner>(preconditioner);
+  c.options.multipliers = from_word<GlueMultipliers>(multipliers);
+  c.options.projector = from_word<ProjectorMetric>(projector);
   c.options.cg_tolerance = tolerance;
   c.options.threads = threads;
   return c;

@@ -240,7 +240,7 @@ factor_section() {
 The same assembled K (body 0 of each sample) factored by every variant in one process; medians of the repeats.
 `cholmod` is what `direct`, `mixed` and `feti` use: CHOLMOD's supernodal Cholesky, ordered by METIS nested
 dissection on the node graph (solve/NodeOrdering.h) where nodes have ≥ 12 neighbours (3D) and by AMD below (2D),
-CHOLMOD's amalgamation, CHOLMOD's OpenMP loops on the calling thread (solve/Blas.h). `cholmod-defaults` is CHOLMOD as rollsim called it before issue 14 (its own choice of AMD, or
+CHOLMOD's amalgamation, CHOLMOD's OpenMP loops on the calling thread (base/Blas.h). `cholmod-defaults` is CHOLMOD as rollsim called it before issue 14 (its own choice of AMD, or
 METIS on the dof graph when AMD fills too much; with this build's OpenMP teams off too — they are process-wide).
 `cholmod:…` changes one setting of `cholmod`. Peers: Eigen's SimplicialLDLT (AMD), MUMPS 5.5 (Debian's
 libmumps-dev, one MPI rank, METIS). flops: each solver's own count (MUMPS: RINFOG(3); Eigen: Σ c_j² over L's

@@ -14,6 +14,8 @@ namespace {
 
 // folder -> folders it must never include
 const std::map<std::string, std::set<std::string>> kNever = {
+    {"base",
+     {"mesh", "model", "fem", "material", "partition", "contact", "solve", "analysis", "project", "io", "bench"}},
     {"mesh", {"model", "fem", "material", "partition", "contact", "solve", "analysis", "project", "io", "bench"}},
     {"model", {"fem", "material", "partition", "contact", "solve", "analysis", "project", "io", "bench"}},
     {"material", {"fem", "partition", "contact", "solve", "analysis", "project", "io", "bench"}},

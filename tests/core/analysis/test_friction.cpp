@@ -112,9 +112,9 @@ TEST_P(Friction, AShearLimitCapsTheFrictionStressAtItsValueTimesTheContactLength
 INSTANTIATE_TEST_SUITE_P(Modes, Friction, ::testing::Values("direct", "mixed", "mixed+dense"),
                          [](const auto& info) { return info.param == "mixed+dense" ? "mixed_dense" : info.param; });
 
-class FrictionTangent : public ::testing::TestWithParam<std::string> {};
+class FrictionTangentTest : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(FrictionTangent, TheConsistentTangentReachesTheSameSlidingForceInFewerIterations) {
+TEST_P(FrictionTangentTest, TheConsistentTangentReachesTheSameSlidingForceInFewerIterations) {
   // the sliding block: with the friction force μ λ_n solved for with λ_n (an unsymmetric system: UMFPACK under direct,
   // projected GMRES on the interface under mixed and feti) Newton converges quadratically once the stick/slip set
   // holds; lagged one iteration behind λ_n it converges linearly
@@ -134,7 +134,7 @@ TEST_P(FrictionTangent, TheConsistentTangentReachesTheSameSlidingForceInFewerIte
       << consistent.newton.size() << " iterations against " << lagged.newton.size();
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, FrictionTangent, ::testing::Values("direct", "mixed", "feti"));
+INSTANTIATE_TEST_SUITE_P(Modes, FrictionTangentTest, ::testing::Values("direct", "mixed", "feti"));
 
 TEST(FrictionInput, BadFrictionIsRefusedWithItsPath) {
   struct Case {

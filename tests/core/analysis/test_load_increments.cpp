@@ -184,5 +184,5 @@ TEST(LoadIncrements, CountOutsideOneToAThousandIsRefused) {
     }
   }
   bad["analysis"] = {{"increments", 3}};
-  EXPECT_EQ(load_increments(parse_project(bad.dump(), "ok")), 3);
+  EXPECT_EQ(parse_project(bad.dump(), "ok").config().steps.increments, 3);
 }

@@ -133,7 +133,7 @@ TEST(AnalysisObserver, DirectReportsARefactorizationPerSolveAndNoCgIterations) {
 
 TEST(AnalysisObserver, FetiReportsEverySubdomainFactorization) {
   const Model model = sample("block-indent-dd-2d-50x30.json");
-  auto solver = make_solver("feti", {1e-6, 1, "dirichlet"});
+  auto solver = make_solver("feti", {1e-6, 1, Preconditioner::Dirichlet});
   Recorder rec;
   const Results res = run_linear_static(model, *solver, &rec);
   ASSERT_EQ(to_string(res.status.status), std::string("converged"));
@@ -145,7 +145,8 @@ TEST(AnalysisObserver, FetiReportsEverySubdomainFactorization) {
 
 TEST(AnalysisObserver, AnObserverThatNeverCancelsChangesNothing) {
   const Model model = sample("block-indent-dd-2d-50x30.json");
-  auto a = make_solver("feti", {1e-6, 1, "dirichlet"}), b = make_solver("feti", {1e-6, 1, "dirichlet"});
+  auto a = make_solver("feti", {1e-6, 1, Preconditioner::Dirichlet}),
+       b = make_solver("feti", {1e-6, 1, Preconditioner::Dirichlet});
   Recorder rec;
   const Results quiet = run_linear_static(model, *a), observed = run_linear_static(model, *b, &rec);
   ASSERT_EQ(quiet.bodies.size(), observed.bodies.size());
@@ -157,7 +158,7 @@ TEST(AnalysisObserver, AnObserverThatNeverCancelsChangesNothing) {
 TEST(AnalysisObserver, CancelBetweenCgIterationsKeepsTheIterate) {
   // no preconditioner and a tight tolerance: hundreds of CG iterations; cancel at the first one
   const Model model = sample("block-indent-dd-2d-50x30.json", "none");
-  auto solver = make_solver("feti", {1e-12, 1, "none"});
+  auto solver = make_solver("feti", {1e-12, 1, Preconditioner::None});
   Recorder rec;
   rec.cancel_when = [](const Recorder& r) { return !r.cg.empty(); };
   const Results res = run_linear_static(model, *solver, &rec);

@@ -51,7 +51,8 @@ void expect_feti_equals_direct(const Model& model, const std::string& what) {
       for (const std::string projector : {"preconditioner", "identity"}) {
         if (pc == "none" && projector == "identity") continue;  // without a preconditioner Q = I anyway
         const std::string variant = what + " " + pc + " " + glue + " " + projector;
-        SolverOptions o{1e-10, 1, pc, glue, projector};
+        SolverOptions o{1e-10, 1, from_word<Preconditioner>(pc), from_word<GlueMultipliers>(glue),
+                        from_word<ProjectorMetric>(projector)};
         MixedStrategy feti(o, true);
         const Results r = run_linear_static(model, feti);
         EXPECT_GT(r.subdomains, 1) << what;
@@ -87,7 +88,7 @@ TEST(Feti, PaintedMapEqualsStructuredPartition) {
   painted["bodies"][0]["partition_map"] = a.bodies[0].partition.element_subdomain;
   const Model b = model_of(painted);
   EXPECT_EQ(a.bodies[0].partition.element_subdomain, b.bodies[0].partition.element_subdomain);
-  SolverOptions o{1e-8, 1, "dirichlet", "nonredundant"};
+  SolverOptions o{1e-8, 1, Preconditioner::Dirichlet, GlueMultipliers::NonRedundant};
   const Results ra = solve(a, "feti", o), rb = solve(b, "feti", o);
   EXPECT_EQ(ra.interface_multipliers, rb.interface_multipliers);
   EXPECT_EQ(ra.rigid_modes, rb.rigid_modes);
@@ -96,8 +97,8 @@ TEST(Feti, PaintedMapEqualsStructuredPartition) {
 
 TEST(Feti, ThreadsGiveBitIdenticalResults) {
   const Model model = model_of(cantilever(2, 24, 12, 0, "4x2"));
-  const Results one = solve(model, "feti", {1e-8, 1, "dirichlet", "nonredundant"});
-  const Results two = solve(model, "feti", {1e-8, 2, "dirichlet", "nonredundant"});
+  const Results one = solve(model, "feti", {1e-8, 1, Preconditioner::Dirichlet, GlueMultipliers::NonRedundant});
+  const Results two = solve(model, "feti", {1e-8, 2, Preconditioner::Dirichlet, GlueMultipliers::NonRedundant});
   EXPECT_EQ(relative_difference(one, two), 0.0);
 }
 
@@ -105,9 +106,9 @@ TEST(Feti, ThreadsGiveBitIdenticalResultsWhereCholmodOrdersWithMetis) {
   // 12³-element subdomains: CHOLMOD tries METIS after AMD, and METIS's process-wide random state once made two
   // concurrent orderings differ from run to run (~1e-7 in u); the pool's dynamic scheduling must not bring it back
   const Model model = model_of(cantilever(3, 24, 24, 24, "2x2x2"));
-  const Results one = solve(model, "feti", {1e-6, 1, "dirichlet", "nonredundant"});
-  const Results two = solve(model, "feti", {1e-6, 2, "dirichlet", "nonredundant"});
-  const Results again = solve(model, "feti", {1e-6, 2, "dirichlet", "nonredundant"});
+  const Results one = solve(model, "feti", {1e-6, 1, Preconditioner::Dirichlet, GlueMultipliers::NonRedundant});
+  const Results two = solve(model, "feti", {1e-6, 2, Preconditioner::Dirichlet, GlueMultipliers::NonRedundant});
+  const Results again = solve(model, "feti", {1e-6, 2, Preconditioner::Dirichlet, GlueMultipliers::NonRedundant});
   EXPECT_EQ(relative_difference(one, two), 0.0);
   EXPECT_EQ(relative_difference(two, again), 0.0);
 }

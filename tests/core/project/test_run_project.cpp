@@ -22,7 +22,7 @@ TEST(RunProject, EqualsTheLinearDriverWithTheProjectsSolver) {
   const Model model = build_model(p);
   const Results r = run_project(p, model);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
-  auto solver = make_solver(p.data.at("solver").at("mode").get<std::string>(), solver_options(p));
+  auto solver = make_solver(p.config().solver_mode, p.config().solver);
   const Results direct = run_linear_static(model, *solver);
   ASSERT_EQ(r.bodies.size(), direct.bodies.size());
   for (size_t b = 0; b < r.bodies.size(); ++b) EXPECT_EQ(r.bodies[b].displacement, direct.bodies[b].displacement);

@@ -1,6 +1,7 @@
 // solver.mode `auto`: the mode of least predicted cost among direct, mixed and (a body partitioned) feti, from the
 // partition table's cost model; run_project resolves it, reports it and runs the chosen mode unchanged.
 #include "project/SolverChoice.h"
+#include "solve/SolverStrategy.h"
 
 #include <gtest/gtest.h>
 
@@ -40,7 +41,7 @@ void expect_cheapest(const AutoChoice& c) {
 TEST(SolverChoice, OneUndividedBodyWithoutContactIsDirect) {
   const Project p = sample("cantilever-2d-240x60");
   const Model m = build_model(p);
-  const AutoChoice c = choose_solver_mode(p, m);
+  const AutoChoice c = choose_solver_mode(p.config(), m);
   expect_cheapest(c);
   EXPECT_EQ(c.mode, "direct");
   ASSERT_EQ(c.costs.size(), 2u) << "feti is weighed only with a partitioned body";
@@ -51,7 +52,7 @@ TEST(SolverChoice, OneUndividedBodyWithoutContactIsDirect) {
 
 TEST(SolverChoice, ContactMakesTheBorderedLuDearerThanTheInterfaceCg) {
   const Project p = sample("block-indent-2d-90x70");
-  const AutoChoice c = choose_solver_mode(p, build_model(p));
+  const AutoChoice c = choose_solver_mode(p.config(), build_model(p));
   expect_cheapest(c);
   EXPECT_EQ(c.mode, "mixed");
   EXPECT_GT(cost_of(c, "direct"), cost_of(c, "mixed"));
@@ -60,7 +61,7 @@ TEST(SolverChoice, ContactMakesTheBorderedLuDearerThanTheInterfaceCg) {
 TEST(SolverChoice, FetiIsWeighedWithThePartitionTablesCost) {
   Project p = sample("block-indent-dd-2d-50x30");
   const Model m = build_model(p);
-  const AutoChoice c = choose_solver_mode(p, m);
+  const AutoChoice c = choose_solver_mode(p.config(), m);
   expect_cheapest(c);
   ASSERT_EQ(c.costs.size(), 3u);
   // the partitioned body as the window's table prices it (twice: its AMD estimate flatters a partition), the other

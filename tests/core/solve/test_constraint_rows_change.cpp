@@ -83,7 +83,7 @@ TEST(ConstraintRowsChange, FetiPreconditionerFollowsTheRowsNotTheirCount) {
   const Model model = cantilever("2x2");
   for (const std::string pc : {"lumped", "dirichlet"}) {
     SCOPED_TRACE(pc);
-    const SolverOptions o{1e-10, 1, pc};
+    const SolverOptions o{1e-10, 1, from_word<Preconditioner>(pc)};
     GroupLayout layout(model, true, Multipliers::NonRedundant);
     layout.assemble(all_groups(layout.system()), {}, 1.0);
     const int n = layout.body_dofs()[0]->num_free();

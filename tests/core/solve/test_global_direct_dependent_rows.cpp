@@ -41,7 +41,7 @@ void expect_mixed_solution(const BlockSystem& sys) {
   const BlockSolution mixed = make_solver("mixed", o)->solve(sys);
   ASSERT_TRUE(mixed.status.ok());
   SolverOptions dense;
-  dense.interface_solver = "dense";
+  dense.interface_solver = InterfaceSolver::Dense;
   for (const auto& [name, s] : {std::pair{"direct", make_solver("direct", {})->solve(sys)},
                                 std::pair{"mixed, dense", make_solver("mixed", dense)->solve(sys)}}) {
     SCOPED_TRACE(name);

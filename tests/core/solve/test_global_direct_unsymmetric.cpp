@@ -54,7 +54,7 @@ TEST(GlobalDirectUnsymmetric, SolvesTheBorderedSystemWithCeqInTheEquations) {
 // `mixed` with the `dense` interface solver forms F = C K⁻¹ C_eqᵀ, unsymmetric, and gives the same solution.
 TEST(GlobalDirectUnsymmetric, MixedWithTheDenseInterfaceGivesTheSameSolution) {
   SolverOptions o;
-  o.interface_solver = "dense";
+  o.interface_solver = InterfaceSolver::Dense;
   const BlockSystem sys = system_with(Eigen::RowVector3d(1, 0.3, -1));
   const BlockSolution s = make_solver("mixed", o)->solve(sys);
   ASSERT_TRUE(s.status.ok()) << s.status.message;

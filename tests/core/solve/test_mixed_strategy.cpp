@@ -116,7 +116,7 @@ TEST(MixedStrategy, FetiSolvesSubdomainsWithIndefiniteTangentsAsDirect) {
   o.cg_tolerance = 1e-12;
   for (const std::string preconditioner : {"none", "lumped"}) {
     SCOPED_TRACE(preconditioner);
-    o.preconditioner = preconditioner;
+    o.preconditioner = from_word<Preconditioner>(preconditioner);
     MixedStrategy feti(o, /*subdomains=*/true);
     const BlockSolution s = feti.solve(sys);
     EXPECT_TRUE(s.status.ok()) << s.status.message;
@@ -150,7 +150,7 @@ TEST(MixedStrategy, PreconditionersCutGMRESIterationsOnAnIndefiniteSubdomain) {
   std::map<std::string, int> iterations;
   for (const std::string preconditioner : {"none", "lumped", "dirichlet"}) {
     SCOPED_TRACE(preconditioner);
-    o.preconditioner = preconditioner;
+    o.preconditioner = from_word<Preconditioner>(preconditioner);
     MixedStrategy feti(o, /*subdomains=*/true);
     const BlockSolution s = feti.solve(sys);
     ASSERT_TRUE(s.status.ok()) << s.status.message;
@@ -168,7 +168,7 @@ TEST(MixedStrategy, PreconditionersCutGMRESIterationsOnAnIndefiniteSubdomain) {
 // interface iterations; a second solve with the same factors forms nothing again.
 TEST(MixedStrategy, DenseInterfaceSolverGivesDirectsAnswer) {
   SolverOptions o;
-  o.interface_solver = "dense";
+  o.interface_solver = InterfaceSolver::Dense;
   for (const BlockSystem& sys : {torn_chain(1.5, -0.5), torn_chain(0.5, 0.5), torn_lattice(8, 32, -0.01)}) {
     const BlockSolution direct = make_solver("direct", {})->solve(sys);
     MixedStrategy feti(o, /*subdomains=*/true);
@@ -188,7 +188,7 @@ TEST(MixedStrategy, DenseInterfaceSolverReportsASingularInterface) {
   BlockSystem sys = torn_chain(0.5, 0.5);
   sys.groups[1].C = SparseMatrix(2, 3);  // B no longer glued: its translation is free, its load unbalanced
   SolverOptions o;
-  o.interface_solver = "dense";
+  o.interface_solver = InterfaceSolver::Dense;
   MixedStrategy feti(o, /*subdomains=*/true);
   const BlockSolution s = feti.solve(sys);
   EXPECT_FALSE(s.status.ok());

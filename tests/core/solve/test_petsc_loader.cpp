@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "project/Project.h"
 #include "solve/PetscModule.h"
 #include "solve/PetscStrategy.h"
 #include "solve/SolverStrategy.h"
@@ -55,12 +56,16 @@ TEST(PetscLoader, ALibraryWithoutTheEntryPointIsRefused) {
   EXPECT_NE(message.find("no entry point rollsim_petsc_module"), std::string::npos) << message;
 }
 
-TEST(PetscLoader, AnUnknownMethodIsRefusedBeforeAnythingIsLoaded) {
+TEST(PetscLoader, AnUnknownMethodIsRefusedBeforeAnythingIsLoaded) {  // by the project's validation: an enum after it
   const ScopedEnv env(kPetscModuleEnv, "/nonexistent/rollsim_petsc.so");
-  SolverOptions options;
-  options.petsc_method = "gamg";
-  const std::string message = refusal(options);
-  EXPECT_NE(message.find("bddc or fetidp, got 'gamg'"), std::string::npos) << message;
+  try {
+    parse_project(R"({"dimension": 2, "solver": {"mode": "petsc", "petsc_method": "gamg"}})", "p");
+    FAIL() << "gamg accepted";
+  } catch (const ProjectError& e) {
+    EXPECT_NE(std::string(e.what()).find("solver.petsc_method: must be one of bddc, fetidp, got \"gamg\""),
+              std::string::npos)
+        << e.what();
+  }
 }
 #else
 TEST(PetscLoader, ABuildWithoutPetscRefusesTheStrategy) {

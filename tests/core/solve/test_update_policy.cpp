@@ -6,6 +6,7 @@
 #include "analysis/GroupLayout.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
+#include "solve/SolverStrategy.h"
 #include "solve/UpdatePolicy.h"
 
 using namespace rollsim;
@@ -48,7 +49,7 @@ TEST(UpdatePolicy, EveryStrategyRefactorsExactlyWhatWasMarked) {
   const Model model = cantilever_2x2();
   for (const std::string mode : {"skyline", "direct", "mixed", "feti"}) {
     SCOPED_TRACE(mode);
-    const SolverOptions o{1e-10, 1, "dirichlet"};
+    const SolverOptions o{1e-10, 1, Preconditioner::Dirichlet};
     auto solver = make_solver(mode, o);
     GroupLayout layout(model, solver->uses_subdomains(), Multipliers::NonRedundant);
     BlockSystem& sys = layout.system();

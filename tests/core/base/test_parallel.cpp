@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "solve/Parallel.h"
+#include "base/Parallel.h"
 
 using namespace rollsim;
 

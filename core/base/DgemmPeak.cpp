@@ -1,9 +1,9 @@
-#include "solve/DgemmPeak.h"
+#include "base/DgemmPeak.h"
 
 #include <algorithm>
 #include <vector>
 
-#include "solve/Stopwatch.h"
+#include "base/Stopwatch.h"
 
 extern "C" void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
                        const double* alpha, const double* a, const int* lda, const double* b, const int* ldb,

@@ -1,4 +1,4 @@
-#include "solve/Parallel.h"
+#include "base/Parallel.h"
 
 #include <algorithm>
 #include <atomic>
@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "solve/Blas.h"
+#include "base/Blas.h"
 
 namespace rollsim {
 

@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "grid_matrix.h"
-#include "solve/Blas.h"
+#include "../solve/grid_matrix.h"
+#include "base/Blas.h"
 #include "solve/CholmodFactorization.h"
 
 namespace rollsim {

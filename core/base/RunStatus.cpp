@@ -1,4 +1,4 @@
-#include "solve/RunStatus.h"
+#include "base/RunStatus.h"
 
 namespace rollsim {
 

@@ -1,4 +1,4 @@
-#include "project/Schema.h"
+#include "base/Schema.h"
 
 #include <cmath>
 #include <set>
@@ -171,8 +171,12 @@ void check_field(json& v, const Field& f, const std::string& path, int dim, std:
       for (size_t i = 0; i < v.size(); ++i)
         validate_object(v[i], *f.object, path + "[" + std::to_string(i) + "]", dim, out);
       return;
-    default:
+    default: {
+      const size_t before = out.size();
       check_scalar(v, f, path, out);
+      if (out.size() == before && f.check)
+        if (std::string problem = f.check(v); !problem.empty()) out.push_back({path, problem});
+    }
   }
 }
 
@@ -183,6 +187,43 @@ std::string join_names(const std::vector<const Field*>& fields) {
 }
 
 }  // namespace
+
+const Field* find_field(const ObjectSchema& root, const std::string& path) {
+  const ObjectSchema* object = &root;
+  const Field* field = nullptr;
+  size_t at = 0;
+  while (at <= path.size()) {
+    if (!object) return nullptr;
+    size_t end = path.find('.', at);
+    if (end == std::string::npos) end = path.size();
+    std::string name = path.substr(at, end - at);
+    if (const auto bracket = name.find('['); bracket != std::string::npos) name.resize(bracket);  // an array's item
+    field = nullptr;
+    for (const Field& f : object->fields)
+      if (f.name == name) field = &f;
+    if (!field) return nullptr;
+    object = field->object;
+    at = end + 1;
+  }
+  return field;
+}
+
+namespace {
+void collect_flags(const ObjectSchema& object, const std::string& path,
+                   std::vector<std::pair<std::string, const Field*>>& out) {
+  for (const Field& f : object.fields) {
+    const std::string p = path.empty() ? f.name : path + "." + f.name;
+    if (!f.flag.empty()) out.emplace_back(p, &f);
+    if (f.kind == Kind::Object && f.object) collect_flags(*f.object, p, out);
+  }
+}
+}  // namespace
+
+std::vector<std::pair<std::string, const Field*>> flagged_fields(const ObjectSchema& root) {
+  std::vector<std::pair<std::string, const Field*>> out;
+  collect_flags(root, "", out);
+  return out;
+}
 
 void validate_object(json& value, const ObjectSchema& schema, const std::string& path, int dim,
                      std::vector<Issue>& out) {
@@ -269,7 +310,8 @@ void field_rows(std::ostringstream& s, const std::vector<Field>& fields) {
   for (const Field& f : fields) {
     std::string def = f.required ? "required" : f.default_value.is_null() ? "optional" : f.default_value.dump();
     s << "| `" << f.name << "` | " << type_text(f) << " | " << def << " | " << range_text(f) << " | "
-      << (f.unit.empty() ? "" : f.unit) << " | " << f.doc << " |\n";
+      << (f.unit.empty() ? "" : f.unit) << " | " << f.doc
+      << (f.flag.empty() ? "" : " (command line: `--" + f.flag + "`)") << " |\n";
   }
 }
 

@@ -2,7 +2,7 @@
 // whole cost allows) and stops at its budget.
 #include <gtest/gtest.h>
 
-#include "solve/DgemmPeak.h"
+#include "base/DgemmPeak.h"
 
 namespace rollsim {
 namespace {

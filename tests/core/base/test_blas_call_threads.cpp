@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <string>
 
-#include "grid_matrix.h"
-#include "solve/Blas.h"
-#include "solve/BlasCallThreads.h"
+#include "../solve/grid_matrix.h"
+#include "base/Blas.h"
+#include "base/BlasCallThreads.h"
 #include "solve/CholmodFactorization.h"
 
 namespace rollsim {

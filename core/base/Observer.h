@@ -24,7 +24,7 @@
 namespace rollsim {
 
 /// What a Newton iteration does with one group's tangent: re-assembles and refactors it, or keeps last iteration's
-/// factor, and why: "first" (the run's first iteration), "cut-back", "always" (the policy), "share 0.43 > 0.01" (its
+/// factor, and why: "first" (the run's first iteration), "cut-back", `always` (the policy), "share 0.43 > 0.01" (its
 /// residual's share of the total against the selective threshold), "constant" (an elastic small-strain group's one
 /// factor).
 struct TangentChoice {

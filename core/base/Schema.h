@@ -1,6 +1,8 @@
 #pragma once
-// One parameter schema (name, type, range, default, unit, doc) that drives project validation,
-// the generated docs/project-format.md, and (later) the GUI's property editor.
+// One parameter schema (name, type, range, default, unit, doc) that drives project validation, the generated
+// docs/project-format.md, the GUI's property editor and the command line's flags. Each layer declares the section it
+// reads (solve/SolverSchema, analysis/NewtonSchema, process/…): defaults are written there and nowhere else.
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -39,6 +41,9 @@ struct Field {
   const ObjectSchema* object = nullptr;
   int vector_size = 0;  // 0: the model dimension; -1: any length
   size_t min_items = 0;
+  std::string flag;  // `rollsim run --<flag>` sets this field (empty: only `--set path=value`)
+  // a check beyond the kind's (a value of the right kind): the problem, or "" (e.g. `selective:2` of solver.update)
+  std::function<std::string(const json&)> check;
 };
 
 /// An object type. If `discriminator` is set, the value of that field selects one of `variants`,
@@ -57,6 +62,13 @@ struct Issue {
   std::string message;
   std::string str() const { return path.empty() ? message : path + ": " + message; }
 };
+
+/// The field at a dotted path below `root` ("solver.cg_tolerance", "bodies[0].partition"), following objects and
+/// arrays of objects (not a discriminator's variants); null when there is none.
+const Field* find_field(const ObjectSchema& root, const std::string& path);
+
+/// Every field of `root` (recursively) that has a command-line flag, with its dotted path.
+std::vector<std::pair<std::string, const Field*>> flagged_fields(const ObjectSchema& root);
 
 /// Checks `value` against `schema` (recursively) and fills defaults; appends problems to `issues`.
 void validate_object(json& value, const ObjectSchema& schema, const std::string& path, int dimension,

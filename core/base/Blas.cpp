@@ -1,10 +1,10 @@
-#include "solve/Blas.h"
+#include "base/Blas.h"
 
 #include <dlfcn.h>
 
 #include <atomic>
 
-#include "solve/BlasCallThreads.h"
+#include "base/BlasCallThreads.h"
 
 namespace rollsim {
 

@@ -1,4 +1,4 @@
-#include "solve/BlasCallThreads.h"
+#include "base/BlasCallThreads.h"
 
 #include <dlfcn.h>
 

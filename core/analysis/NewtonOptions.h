@@ -1,0 +1,110 @@
+#pragma once
+// The Newton driver's options, typed, and the table that declares them to the project schema (the analysis
+// section): every default the member's initializer, every field's range and documentation its bind(...) line.
+#include <string>
+#include <vector>
+
+#include "base/BoundField.h"
+#include "base/SchemaFields.h"
+#include "base/Words.h"
+
+namespace rollsim {
+
+/// Which part of the contact's geometric stiffness (contact/ContactStiffness) the tangent takes: none; the terms
+/// whose two dofs lie in one group (into its K_g: every strategy); or every term, those joining two groups too
+/// (BlockSystem::coupling: strategies with one global matrix only).
+enum class ContactTangent { None, Groups, Full };
+/// Slipping Coulomb friction: solved with λ_n (C_eq) where the strategy can, or lagged one iteration.
+enum class FrictionTangent { Consistent, Lagged };
+/// A step's first iteration: the tangents of the last step's converged iterate, or assembled afresh there.
+enum class FirstTangent { Converged, Fresh };
+/// Under a policy reading residuals: a constant tangent (elastic, small strain) kept, or judged like any group.
+enum class ConstantTangents { Keep, Refactor };
+
+template <>
+inline const std::vector<std::string>& words<ContactTangent>() {
+  static const std::vector<std::string> w{"none", "groups", "full"};
+  return w;
+}
+template <>
+inline const std::vector<std::string>& words<FrictionTangent>() {
+  static const std::vector<std::string> w{"consistent", "lagged"};
+  return w;
+}
+template <>
+inline const std::vector<std::string>& words<FirstTangent>() {
+  static const std::vector<std::string> w{"converged", "fresh"};
+  return w;
+}
+template <>
+inline const std::vector<std::string>& words<ConstantTangents>() {
+  static const std::vector<std::string> w{"keep", "refactor"};
+  return w;
+}
+
+struct NewtonOptions {
+  int increments = 1;                    // equal load steps N (analysis.increments; a cut-back halves the current one)
+  int max_iterations = 25;               // Newton iterations of one attempt
+  double tolerance = 1e-8;               // ‖r_k‖ ≤ tolerance × max(‖r_1‖, ‖r_2‖) of the attempt
+  double displacement_tolerance = 1e-2;  // and ‖du_k‖ ≤ this × ‖u − u_n‖ (the step's displacement)
+  int max_cutbacks = 8;                  // failed attempts in the whole run before it is declared diverged
+  bool line_search = true;               // one secant step along du when the residual's work along it did not halve
+  FrictionTangent friction_tangent = FrictionTangent::Consistent;
+  FirstTangent first_tangent = FirstTangent::Converged;
+  ContactTangent contact_tangent = ContactTangent::Groups;
+  ConstantTangents constant_tangents = ConstantTangents::Keep;
+};
+
+/// The analysis section's Newton fields, in the order shown to users (analysis.increments is the load steps' field,
+/// read by both analyses: project/RunConfig).
+inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
+  using namespace schema;
+  using N = NewtonOptions;
+  static const std::vector<BoundField<N>> table = {
+      bind(count("max_iterations", "Newton: iterations of one step before it is cut back", 200), &N::max_iterations),
+      bind(below(positive("tolerance", "-",
+                          "Newton: ‖r_k‖ / max(‖r_1‖, ‖r_2‖) of the out-of-balance force to converge a step (‖r_2‖: "
+                          "the scale of a step driven by a prescribed body alone)"),
+                 1.0),
+           &N::tolerance),
+      bind(bounded(count("max_cutbacks",
+                         "Newton: how often the step may be halved below its nominal size (after failed attempts; it "
+                         "grows back by doubling after a step that converges at once) before the run is diverged"),
+                   0, 50),
+           &N::max_cutbacks),
+      bind(str("friction_tangent",
+               "Newton with Coulomb friction: consistent — a slipping point's friction force μ λ_n is solved for with "
+               "its normal multiplier (an unsymmetric system: UMFPACK under direct, projected GMRES on the interface "
+               "under mixed and feti; skyline lags it whatever this says); lagged — it lags one iteration behind the "
+               "normal force (a symmetric system)"),
+           &N::friction_tangent),
+      bind(str("first_tangent",
+               "Newton: the tangent a step's first iteration factors — converged: the one assembled at the step "
+               "before's converged iterate, with its plastic flow; fresh: assembled again at the converged state, "
+               "where a zero strain increment returns elastically, so a flowing body starts each step with its "
+               "elastic stiffness (docs/BENCHMARKS-ROLLING.md: what made `--update always` fail on the rolling pass)"),
+           &N::first_tangent),
+      bind(str("contact_tangent",
+               "Newton with contact pairs that slide `large_every_iteration`: the contact's geometric stiffness (how "
+               "the rows' normal and projection turn with the displacement: node-to-segment in 2D, node-to-face in "
+               "3D). groups — the terms within one group (the master's own part; the slave's on a warped 3D face) "
+               "into its stiffness block, every solver; full — also the terms joining slave and master, direct and "
+               "skyline only; none — the rows' change is not linearised. full pays where points slide over a "
+               "deformable master (a block pushed along a base: 60 Newton iterations against 94); a sticking point's "
+               "term only shifts the multipliers, so on a sticking pass full repeats none "
+               "(docs/BENCHMARKS-NONLINEAR.md). In 3D the same choice holds the turning of a slipping friction "
+               "force's direction (its slip-direction term)"),
+           &N::contact_tangent),
+      bind(str("constant_tangents",
+               "Newton under the selective update: keep — a group whose tangent cannot change (elastic, small strain) "
+               "is assembled and factored once; refactor — it is re-evaluated by its residual like any group (to "
+               "measure what keeping saves)"),
+           &N::constant_tangents),
+      bind(boolean("line_search",
+                   "Newton: one secant step along the correction when the residual's work along it did not halve"),
+           &N::line_search),
+  };
+  return table;
+}
+
+}  // namespace rollsim

@@ -1,0 +1,42 @@
+#pragma once
+// A run's description, typed and parsed once from the validated project (Project::config): the analysis, the solver
+// and its options, the update policy, the load steps and the Newton options, and what is written. The analyses, the
+// strategies, the writers and summary.json read this, never the JSON; every default is the typed member's, which the
+// schema shows and fills in (solve/SolverOptions.h, analysis/NewtonOptions.h, analysis/IncrementOptions.h).
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/IncrementOptions.h"
+#include "analysis/NewtonOptions.h"
+#include "solve/SolverOptions.h"
+#include "solve/UpdatePolicy.h"
+
+namespace rollsim {
+
+/// The output section: where results go and which are written.
+struct OutputConfig {
+  std::optional<std::string> dir;   // output.dir (none: results/<project name>, or --out)
+  bool vtu = false;                 // write result.vtu
+  bool all_increments = false;      // and results.pvd with one VTU per increment (output.increments: all)
+  std::vector<std::string> fields;  // output.fields as given (`all`, or names)
+};
+
+struct RunConfig {
+  std::string analysis;     // linear or newton (analysis.type `auto` resolved from the materials)
+  std::string solver_mode;  // a registry name, or `auto` (run_project resolves it from the model)
+  SolverOptions solver;
+  UpdateSetting update;    // Newton's update policy
+  IncrementOptions steps;  // analysis.increments (a rolling pass: from its travel) and the active-set limit
+  NewtonOptions newton;    // newton.increments = steps.increments
+  OutputConfig output;
+};
+
+/// The configuration of a validated project (defaults filled in, process expanded where it sets the increments).
+RunConfig read_run_config(const nlohmann::json& validated_project);
+
+/// The resolved configuration as summary.json echoes it (every option, defaults included, in the project's words).
+nlohmann::json to_json(const RunConfig& config);
+
+}  // namespace rollsim
