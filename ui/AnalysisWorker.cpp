@@ -68,9 +68,13 @@ class ForwardingObserver final : public AnalysisObserver {
     flush();
     emit w_.cutBack(increment, QString::fromStdString(cause));
   }
-  void on_rolling_increment(double travel, double roll_force, double roll_torque) override {
+  void on_measures_begin(const MeasureTable& columns, const ChartRequest& chart) override {
     flush();
-    emit w_.rollingIncrement(travel, roll_force, roll_torque);
+    emit w_.measuresBegun(columns, chart);
+  }
+  void on_measured(int /*increment*/, const MeasureRow& row) override {
+    flush();
+    emit w_.measured(QVector<double>(row.begin(), row.end()));
   }
   void on_progress(double fraction) override {
     flush();
@@ -107,6 +111,8 @@ class ForwardingObserver final : public AnalysisObserver {
 AnalysisWorker::AnalysisWorker(QObject* parent) : QObject(parent) {
   qRegisterMetaType<RunOutcome>();
   qRegisterMetaType<QVector<CgIteration>>();
+  qRegisterMetaType<MeasureTable>();
+  qRegisterMetaType<ChartRequest>();
 }
 
 AnalysisWorker::~AnalysisWorker() {

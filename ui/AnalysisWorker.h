@@ -74,9 +74,12 @@ class AnalysisWorker : public QObject {
   void factorized(const QString& group);
   /// Frictionless contact: active-set iteration `iteration` changed `changed` statuses.
   void activeSetIteration(int iteration, int changed);
-  /// A rolling pass's increment is complete (AnalysisObserver::on_rolling_increment): travel [mm], roll force and
-  /// torque (2D: per unit width, N/mm and N·mm/mm).
-  void rollingIncrement(double travel, double rollForce, double rollTorque);
+  /// A process measures each increment (AnalysisObserver::on_measures_begin): the columns of its rows and the chart
+  /// that plots them.
+  void measuresBegun(const rollsim::MeasureTable& columns, const rollsim::ChartRequest& chart);
+  /// A process's row of an increment that is complete (AnalysisObserver::on_measured): a rolling pass's travel [mm],
+  /// roll force and torque (2D: per unit width, N/mm and N·mm/mm).
+  void measured(const QVector<double>& row);
   /// Fraction of the run done, in [0, 1].
   void progress(double fraction);
   /// The run ended (always emitted once per start, on the GUI thread, after the worker thread has ended).
@@ -95,3 +98,5 @@ class AnalysisWorker : public QObject {
 
 Q_DECLARE_METATYPE(rollsim::ui::RunOutcome)
 Q_DECLARE_METATYPE(rollsim::ui::CgIteration)
+Q_DECLARE_METATYPE(rollsim::MeasureTable)
+Q_DECLARE_METATYPE(rollsim::ChartRequest)

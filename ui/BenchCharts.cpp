@@ -10,8 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "MeasureCharts.h"
 #include "OffscreenQt.h"
-#include "RollingCharts.h"
 #include "io/AtomicFile.h"
 
 namespace rollsim::ui {

@@ -8,8 +8,8 @@
 #include <QValueAxis>
 #include <algorithm>
 
+#include "MeasureCharts.h"
 #include "OffscreenQt.h"
-#include "RollingCharts.h"
 #include "io/AtomicFile.h"
 
 namespace rollsim::ui {

@@ -278,7 +278,7 @@ void MainWindow::model_changed() {
 bool MainWindow::start_run() {
   if (worker_->running()) return false;
   partition_->flush();
-  plot_->clear(doc_->project().dimension());
+  plot_->clear();
   log_->info(tr("run %1 with solver %2")
                  .arg(QString::fromStdString(doc_->project().name()),
                       QString::fromStdString(doc_->project().data.at("solver").at("mode").get<std::string>())));

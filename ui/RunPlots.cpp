@@ -5,8 +5,8 @@
 
 #include "AnalysisWorker.h"
 #include "FactorizationPlot.h"
+#include "ProcessPlot.h"
 #include "ResidualPlot.h"
-#include "RollingPlot.h"
 #include "SolvePlot.h"
 
 namespace rollsim::ui {
@@ -16,12 +16,12 @@ RunPlots::RunPlots(QWidget* parent)
       residuals_(new ResidualPlot),
       solves_(new SolvePlot),
       factorizations_(new FactorizationPlot),
-      rolling_(new RollingPlot) {
+      process_(new ProcessPlot) {
   auto* split = new QSplitter(Qt::Horizontal, this);
   split->addWidget(residuals_);
   split->addWidget(solves_);
   split->addWidget(factorizations_);
-  split->addWidget(rolling_);
+  split->addWidget(process_);
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 1);
   split->setStretchFactor(2, 1);
@@ -40,18 +40,18 @@ void RunPlots::watch(const AnalysisWorker* worker) {
   connect(worker, &AnalysisWorker::newtonIteration, this, &RunPlots::add_newton_iteration);
   connect(worker, &AnalysisWorker::solveFinished, this, &RunPlots::end_solve);
   connect(worker, &AnalysisWorker::factorized, this, &RunPlots::add_factorization);
-  connect(worker, &AnalysisWorker::rollingIncrement, rolling_, &RollingPlot::add_increment);
+  connect(worker, &AnalysisWorker::measuresBegun, process_, &ProcessPlot::begin);
+  connect(worker, &AnalysisWorker::measured, process_, &ProcessPlot::add_row);
   connect(worker, &AnalysisWorker::finished, this, &RunPlots::end_run);
 }
 
 void RunPlots::end_run(const RunOutcome& outcome) {
-  if (outcome.results && outcome.model && outcome.results->rolling)
-    rolling_->set_results(*outcome.results->rolling, outcome.model->dim, rolling_theory(*outcome.model->rolling));
+  if (outcome.results && outcome.results->process) process_->set_results(*outcome.results->process);
 }
 
-void RunPlots::clear(int dim) {
+void RunPlots::clear() {
   timer_.stop();
-  rolling_->clear(dim);
+  process_->clear();
   series_.clear();
   residuals_->clear();
   solves_->clear();

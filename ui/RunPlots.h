@@ -14,7 +14,7 @@ class AnalysisWorker;
 struct CgIteration;
 class FactorizationPlot;
 class ResidualPlot;
-class RollingPlot;
+class ProcessPlot;
 struct RunOutcome;
 class SolvePlot;
 
@@ -26,8 +26,8 @@ class RunPlots : public QWidget {
 
   /// Records the run reports of `worker` (queued connections: the worker's signals come from its thread).
   void watch(const AnalysisWorker* worker);
-  /// Forgets the last run (a new run starts, of a project of dimension `dim`: the rolling plot's units).
-  void clear(int dim = 2);
+  /// Forgets the last run (a new run starts).
+  void clear();
   /// Redraws the charts now from what was recorded (the timer does it at most every kRefreshMs).
   void flush();
   /// Every recorded series as CSV (RunSeries::csv).
@@ -37,7 +37,7 @@ class RunPlots : public QWidget {
   ResidualPlot* residual_plot() const { return residuals_; }
   SolvePlot* solve_plot() const { return solves_; }
   FactorizationPlot* factorization_plot() const { return factorizations_; }
-  RollingPlot* rolling_plot() const { return rolling_; }
+  ProcessPlot* process_plot() const { return process_; }
 
   static constexpr int kRefreshMs = 100;
 
@@ -48,7 +48,7 @@ class RunPlots : public QWidget {
   void add_newton_iteration(int increment, int iteration, double residual);
   void end_solve(int solve, int cg_iterations);
   void add_factorization(const QString& group);
-  /// A run ended: a rolling pass's plot takes its final measures and the arc.
+  /// A run ended: a process's plot takes its final charts (a rolling pass: its history and the arc).
   void end_run(const rollsim::ui::RunOutcome& outcome);
 
  private:
@@ -58,7 +58,7 @@ class RunPlots : public QWidget {
   ResidualPlot* residuals_;
   SolvePlot* solves_;
   FactorizationPlot* factorizations_;
-  RollingPlot* rolling_;
+  ProcessPlot* process_;
   QTimer timer_;
 };
 

@@ -15,7 +15,6 @@
 #include "analysis/GroupLayout.h"
 #include "analysis/LinearStatic.h"
 #include "analysis/Recovery.h"
-#include "analysis/RollingMeasures.h"
 #include "base/Stopwatch.h"
 #include "contact/ContactConstraints.h"
 #include "contact/ContactStiffness.h"
@@ -52,8 +51,9 @@ std::string tangent_failure(const std::string& what) {
 class NewtonRun {
  public:
   NewtonRun(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy, AnalysisObserver& obs,
-            const NewtonOptions& opt)
+            const NewtonOptions& opt, const IncrementMeasure* measure)
       : model_(model),
+        measure_(measure),
         solver_(solver),
         policy_(policy),
         obs_(obs),
@@ -120,10 +120,8 @@ class NewtonRun {
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
-  /// A rolling pass: the observer hears the last completed increment's roll force and torque.
-  void tell_rolling(const IncrementResults& inc) const;
-
   const Model& model_;
+  const IncrementMeasure* measure_;  // a process's measures of each increment, told to the observer (may be null)
   SolverStrategy& solver_;
   const UpdatePolicy& policy_;
   AnalysisObserver& obs_;
@@ -234,11 +232,6 @@ void NewtonRun::add_contact_stiffness(double lf, const std::vector<size_t>& tang
     entries.insert(entries.end(), rows.begin(), rows.end());
   }
   if (rows_follow || !entries.empty()) layout_.add_body_stiffness(entries, tangent, full ? &sys.coupling : nullptr);
-}
-
-void NewtonRun::tell_rolling(const IncrementResults& inc) const {
-  const RollingIncrement r = roll_load(model_, inc);
-  obs_.on_rolling_increment(r.travel, r.roll_force, r.roll_torque);
 }
 
 std::vector<double> NewtonRun::group_residuals() const {
@@ -499,7 +492,7 @@ Results NewtonRun::run() {
     }
     res.increments.push_back(std::move(inc));
     obs_.on_increment_end(increment, increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9)));
-    if (model_.rolling && lf < 1.0) tell_rolling(res.increments.back());
+    if (measure_ && lf < 1.0) obs_.on_measured(increment, measure_->measure(res.increments.back()));
     obs_.on_progress(lf);
     if (attempt_no == 0 && depth > 0) {  // grow back after a cut-back once a step converges at first attempt
       step *= 2;
@@ -534,14 +527,14 @@ Results NewtonRun::run() {
 }  // namespace
 
 Results run_newton_static(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy,
-                          AnalysisObserver* observer, const NewtonOptions& options) {
+                          AnalysisObserver* observer, const NewtonOptions& options, const IncrementMeasure* measure) {
   if (options.increments < 1 || options.increments > kMaxIncrements)
     throw AnalysisError("increments must be an integer in [1, " + std::to_string(kMaxIncrements) + "], got " +
                         std::to_string(options.increments));
   AnalysisObserver quiet;
   AnalysisObserver& obs = observer ? *observer : quiet;
   obs.on_stage("assemble");
-  NewtonRun run(model, solver, policy, obs, options);
+  NewtonRun run(model, solver, policy, obs, options, measure);
   return run.run();
 }
 

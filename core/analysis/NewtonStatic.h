@@ -13,6 +13,7 @@
 #include <string>
 
 #include "analysis/AnalysisError.h"
+#include "analysis/IncrementMeasure.h"
 #include "analysis/NewtonOptions.h"
 #include "analysis/Results.h"
 #include "base/Observer.h"
@@ -24,7 +25,9 @@ namespace rollsim {
 
 /// Runs the Newton analysis; Results::status is converged, cancelled (between iterations: the last converged step
 /// stays the result), not_converged (a linear solve short of its tolerance when no cut-back is left) or diverged.
+/// `measure` (may be null): a process's measures of each completed increment, told to the observer as it goes.
 Results run_newton_static(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy,
-                          AnalysisObserver* observer = nullptr, const NewtonOptions& options = {});
+                          AnalysisObserver* observer = nullptr, const NewtonOptions& options = {},
+                          const IncrementMeasure* measure = nullptr);
 
 }  // namespace rollsim

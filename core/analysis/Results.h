@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/RollingResults.h"
+#include "base/Measures.h"
 #include "base/RunStatus.h"
 #include "solve/AutoChoice.h"
 #include "solve/SolveStats.h"
@@ -99,7 +99,7 @@ struct Results {
   std::map<std::string, long> stiffness_evaluations;
   std::optional<AutoChoice> auto_choice;  // solver.mode was `auto`: what it chose and why
   std::string update_policy;  // the Newton driver's update policy (`always`, `selective:0.01`); empty: linear
-  std::optional<RollingResults> rolling;  // a rolling pass: its measures over the completed increments
+  std::optional<ProcessResults> process;  // a process's measures over the completed increments (process/)
 };
 
 }  // namespace rollsim

@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "base/Measures.h"
+
 namespace rollsim {
 
 /// What a Newton iteration does with one group's tangent: re-assembles and refactors it, or keeps last iteration's
@@ -71,9 +73,11 @@ class AnalysisObserver {
   /// (residual ratio 0.003, tolerance 1e-08)"): it restores the last converged state and retries with half the step.
   /// Not called for the failure that ends the run (that one is the result's `diverged` status).
   virtual void on_cutback(int /*increment*/, const std::string& /*cause*/) {}
-  /// An increment of a rolling pass is complete (not the last: its fields come with the results): roll travel so far
-  /// [length], roll force [force] and torque [force · length] of the whole slab (2D: per unit width).
-  virtual void on_rolling_increment(double /*travel*/, double /*roll_force*/, double /*roll_torque*/) {}
+  /// A process measures each increment: the columns of its rows (their names, labels and units) and the chart that
+  /// plots them as they come; said once, before the first increment.
+  virtual void on_measures_begin(const MeasureTable& /*columns*/, const ChartRequest& /*chart*/) {}
+  /// The process's row of an increment that is complete (not the last: its fields come with the results).
+  virtual void on_measured(int /*increment*/, const MeasureRow& /*row*/) {}
   /// Fraction of the increments done, in [0, 1].
   virtual void on_progress(double /*fraction*/) {}
   /// True asks the analysis to stop at the next safe point: between CG iterations, before every linear solve

@@ -234,6 +234,8 @@ void validate_object(json& value, const ObjectSchema& schema, const std::string&
   std::vector<const Field*> fields;
   for (const Field& f : schema.fields) fields.push_back(&f);
   if (!schema.discriminator.empty()) {
+    if (!schema.default_variant.empty() && !value.contains(schema.discriminator))
+      value[schema.discriminator] = schema.default_variant;
     const auto it = value.find(schema.discriminator);
     const std::string p = path + (path.empty() ? "" : ".") + schema.discriminator;
     std::string names;
@@ -334,7 +336,9 @@ std::string schema_markdown(const ObjectSchema& root) {
   std::ostringstream s;
   const char* header = "| field | type | default | range | unit | meaning |\n|---|---|---|---|---|---|\n";
   for (const ObjectSchema* o : all) {
-    s << "## " << o->name << "\n\n" << o->doc << "\n\n" << header;
+    s << "## " << o->name << "\n\n" << o->doc;
+    if (!o->default_variant.empty()) s << " Without `" << o->discriminator << "`: `" << o->default_variant << "`.";
+    s << "\n\n" << header;
     field_rows(s, o->fields);
     for (const auto& [name, v] : o->variants) {
       s << "\n### " << o->name << " with `" << o->discriminator << "`: `" << name << "`\n\n" << v->doc << "\n\n";

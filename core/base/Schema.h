@@ -54,6 +54,7 @@ struct ObjectSchema {
   std::vector<Field> fields;
   std::string discriminator;
   std::map<std::string, const ObjectSchema*> variants;
+  std::string default_variant = {};  // the discriminator's value when absent (empty: it is required)
 };
 
 /// One problem found in a project: the JSON path (e.g. "bodies[1].mesh.nx") and the reason.

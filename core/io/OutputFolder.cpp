@@ -16,25 +16,25 @@ bool is_result_increment(const std::string& name) {  // results_0001.vtu
   return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
-bool is_final_output(const std::string& name) {
-  static const char* const names[] = {"summary.json", "result.vtu",          "results.pvd", "convergence.csv",
-                                      "rolling.csv",  "contact_profile.csv", "rolling.png", "contact_profile.png"};
-  return std::find(std::begin(names), std::end(names), name) != std::end(names) || is_result_increment(name);
+bool is_final_output(const std::string& name, const std::vector<std::string>& others) {
+  static const char* const names[] = {"summary.json", "result.vtu", "results.pvd", "convergence.csv"};
+  return std::find(std::begin(names), std::end(names), name) != std::end(names) ||
+         std::find(others.begin(), others.end(), name) != others.end() || is_result_increment(name);
 }
 }  // namespace
 
-bool is_run_output(const std::filesystem::path& path) {
+bool is_run_output(const std::filesystem::path& path, const std::vector<std::string>& others) {
   const std::string name = path.filename().string();
   const std::string tmp = ".tmp";
   if (name.size() > tmp.size() + 1 && name[0] == '.' && name.compare(name.size() - tmp.size(), tmp.size(), tmp) == 0)
-    return is_final_output(name.substr(1, name.size() - tmp.size() - 1));
-  return is_final_output(name);
+    return is_final_output(name.substr(1, name.size() - tmp.size() - 1), others);
+  return is_final_output(name, others);
 }
 
-void clear_run_outputs(const std::filesystem::path& dir) {
+void clear_run_outputs(const std::filesystem::path& dir, const std::vector<std::string>& others) {
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    if (!entry.is_regular_file() || !is_run_output(entry.path())) continue;
+    if (!entry.is_regular_file() || !is_run_output(entry.path(), others)) continue;
     std::error_code removed;
     std::filesystem::remove(entry.path(), removed);
     if (removed)

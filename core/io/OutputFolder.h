@@ -1,17 +1,19 @@
 #pragma once
 // The output folder of `rollsim run` holds one run: before a run writes, every file an earlier run wrote there
-// (summary.json, result.vtu, results.pvd and its results_NNNN.vtu, convergence.csv, a rolling pass's rolling.csv,
-// contact_profile.csv and their PNG plots, and the hidden temporaries of an interrupted write) is removed, so a
-// failed run never leaves an older result beside its own summary. Other files are kept.
+// (summary.json, result.vtu, results.pvd and its results_NNNN.vtu, convergence.csv, the files a process writes —
+// named by the caller, from the process registry — and the hidden temporaries of an interrupted write) is removed,
+// so a failed run never leaves an older result beside its own summary. Other files are kept.
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace rollsim {
 
-/// True for the names a run writes (above), results_<digits>.vtu and `.<any of those>.tmp`.
-bool is_run_output(const std::filesystem::path& name);
+/// True for the names a run writes (above, `others` among them), results_<digits>.vtu and `.<any of those>.tmp`.
+bool is_run_output(const std::filesystem::path& name, const std::vector<std::string>& others = {});
 
 /// Removes the run outputs (is_run_output) directly inside `dir`; throws std::runtime_error naming a file that
 /// cannot be removed.
-void clear_run_outputs(const std::filesystem::path& dir);
+void clear_run_outputs(const std::filesystem::path& dir, const std::vector<std::string>& others = {});
 
 }  // namespace rollsim

@@ -4,7 +4,6 @@
 #include <set>
 
 #include "analysis/Recovery.h"
-#include "analysis/RollingTheory.h"
 #include "io/OutputFields.h"
 
 namespace rollsim {
@@ -67,48 +66,6 @@ json results_section(const Model& m, const Results& r) {
       out["max_plastic_strain"][m.bodies[b].name] =
           *std::max_element(r.bodies[b].plastic_strain.begin(), r.bodies[b].plastic_strain.end());
   return out;
-}
-
-// The closed forms beside the pass's values (analysis/RollingTheory), in the same units; angles in degrees.
-json theory_section(const RollingPass& pass) {
-  const RollingTheory t = rolling_theory(pass);
-  return {{"sims_roll_force", t.sims_force},
-          {"sims_roll_torque", t.sims_torque},
-          {"sims_forward_slip", t.sims_forward_slip},
-          {"sims_neutral_angle", t.neutral_angle * 180 / M_PI},
-          {"friction_hill_roll_force", t.friction_hill_force},
-          {"bite_angle", t.bite_angle * 180 / M_PI},
-          {"projected_contact_length", t.contact_length},
-          {"hitchcock_radius_ratio", t.hitchcock_radius_ratio},
-          {"wusatowski_spread", t.wusatowski_spread}};
-}
-
-// The pass's steady (or last) values, where it bit and settled, with units (the process works in mm and MPa).
-json rolling_section(const Model& m, const RollingResults& r) {
-  const bool plane = m.dim == 2;
-  const RollingIncrement& s = r.steady;
-  return {{"roll_force", s.roll_force},
-          {"roll_torque", s.roll_torque},
-          {plane ? "contact_length" : "contact_area", s.contact_length},
-          {"exit_thickness", s.exit_thickness},
-          {"spread", s.spread},
-          {"mean_spread", s.mean_spread},
-          {"forward_slip", s.forward_slip},
-          {"volume_change", s.volume_change},
-          {"bite_increment", r.bite_increment},
-          {"steady_state_increment", r.steady_state_increment},
-          {"units",
-           {{"roll_force", plane ? "N/mm (per unit width)" : "N"},
-            {"roll_torque", plane ? "N·mm/mm (per unit width)" : "N·mm"},
-            {plane ? "contact_length" : "contact_area", plane ? "mm" : "mm²"},
-            {"exit_thickness", "mm"},
-            {"spread", "mm"},
-            {"mean_spread", "mm"},
-            {"forward_slip", "-"},
-            {"volume_change", "-"}}},
-          {"values",
-           r.steady_state_increment ? "travel-weighted mean from the steady state on" : "last increment (not steady)"},
-          {"theory", theory_section(*m.rolling)}};
 }
 
 bool all_finite(const json& j) {
@@ -219,7 +176,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   s["increments"] = increments_section(model, r);
   if (!r.status.ok()) return s;
   s["results"] = results_section(model, r);
-  if (r.rolling) s["results"]["rolling"] = rolling_section(model, *r.rolling);
+  if (r.process) s["results"][r.process->process] = r.process->summary;  // its steady values, units, closed forms
   s["fields"] = json::array();  // what result.vtu holds, from the output registry
   for (const OutputField& f : output_fields())
     if (is_present(f, model) && is_selected(f, run.fields))

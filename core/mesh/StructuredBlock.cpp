@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace rollsim {
@@ -87,6 +88,17 @@ Mesh make_block(const BlockSpec& s) {
   }
   add_derived_node_sets(m);
   return m;
+}
+
+std::string grading_problem(double grading, int n) {
+  const double spread = std::pow(std::max(grading, 1.0 / grading), n - 1);
+  if (spread <= kMaxGradingSpread) return "";
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "%g over %d elements makes the largest element %.3g times the smallest (at most %g): lower the "
+                "grading or the element count",
+                grading, n, spread, kMaxGradingSpread);
+  return text;
 }
 
 }  // namespace rollsim

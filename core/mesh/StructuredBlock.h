@@ -1,6 +1,7 @@
 #pragma once
 // Structured rectangle (Q4) / box (H8) generator.
 #include <array>
+#include <string>
 
 #include "mesh/Mesh.h"
 
@@ -20,6 +21,11 @@ struct BlockSpec {
 /// Grading moves the nodes along x only (the numbering and connectivity do not change); x_grading = 1 gives
 /// origin + size · i / n exactly. Throws std::invalid_argument naming x_grading if it is not a positive number.
 Mesh make_block(const BlockSpec& spec);
+
+/// Largest / smallest element size a grading may produce: beyond it the smallest elements approach round-off.
+constexpr double kMaxGradingSpread = 1e6;
+/// Why a geometric grading (size ratio of neighbours) over n elements is refused, or "" when it is accepted.
+std::string grading_problem(double grading, int n);
 
 /// Fraction of the length from x min of node i (0..n) of n elements whose sizes fall by `grading` from each
 /// element to the next: size_i ∝ grading^−i, so (1 − q^i) / (1 − q^n) with q = 1 / grading; i / n for grading 1.

@@ -9,7 +9,6 @@
 #include "mesh/Mesh.h"
 #include "model/BodyPartition.h"
 #include "model/MaterialData.h"
-#include "model/RollingPass.h"
 
 namespace rollsim {
 
@@ -70,7 +69,7 @@ struct Probe {
 /// each slave node keeps the master facet and the normal found in the undeformed configuration; large sliding
 /// (the Newton analysis): the projection is searched again in the configuration where each step begins (Step), or
 /// in the current configuration at every Newton iteration (Iteration).
-/// sticking: unilateral, and an active point keeps its master point (no slip: the paper's rolling condition);
+/// sticking: unilateral, and an active point keeps its master point (no slip: the paper's condition on the roll);
 /// coulomb: unilateral, an active point sticks while its tangential force is within μ times its normal force and
 /// slips with exactly μ times it otherwise. Either may cap the friction stress at `shear_limit` (Tresca): a point then
 /// slips once its tangential force passes shear_limit × its tributary measure.
@@ -101,8 +100,7 @@ struct Model {
   std::vector<Pressure> pressures;
   std::vector<Probe> probes;
   std::vector<ContactPair> contacts;
-  std::vector<std::string> warnings;   // said to the user, e.g. a partition piece split automatically
-  std::optional<RollingPass> rolling;  // set when the project is a rolling pass
+  std::vector<std::string> warnings;  // said to the user, e.g. a partition piece split automatically
 
   long total_nodes() const;
   long total_elements() const;

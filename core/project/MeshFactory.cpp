@@ -32,17 +32,6 @@ RoundBarSpec round_bar_spec(const json& m) {
 }
 }  // namespace
 
-std::string grading_problem(double grading, int n) {
-  const double spread = std::pow(std::max(grading, 1.0 / grading), n - 1);
-  if (spread <= kMaxGradingSpread) return "";
-  char text[160];
-  std::snprintf(text, sizeof text,
-                "%g over %d elements makes the largest element %.3g times the smallest (at most %g): lower the "
-                "grading or the element count",
-                grading, n, spread, kMaxGradingSpread);
-  return text;
-}
-
 void check_mesh_spec(const json& m, const std::string& path, int dim, std::vector<Issue>& issues) {
   const auto type = m.at("type").get<std::string>();
   auto need_dim = [&](int d) {

@@ -7,13 +7,9 @@
 
 #include "base/Schema.h"
 #include "mesh/Mesh.h"
+#include "mesh/StructuredBlock.h"
 
 namespace rollsim {
-
-/// Largest / smallest element size a grading may produce: beyond it the smallest elements approach round-off.
-constexpr double kMaxGradingSpread = 1e6;
-/// Why a geometric grading (size ratio of neighbours) over n elements is refused, or "" when it is accepted.
-std::string grading_problem(double grading, int n);
 
 void check_mesh_spec(const json& mesh, const std::string& path, int dim, std::vector<Issue>& issues);
 double estimated_elements(const json& mesh, int dim);

@@ -8,11 +8,11 @@
 #include "model/RigidModes.h"
 #include "partition/PartitionCheck.h"
 #include "partition/PartitionSpec.h"
+#include "process/ProcessRegistry.h"
 #include "project/MeshFactory.h"
 #include "project/ModelLimits.h"
 #include "project/PrescribedConflicts.h"
 #include "project/ProjectSchema.h"
-#include "project/RollingProcess.h"
 #include "solve/UpdatePolicy.h"
 
 namespace rollsim {
@@ -257,7 +257,7 @@ void check_analysis_type(const json& d, std::vector<Issue>& issues) {
 }
 
 void check_references(const Project& project, std::vector<Issue>& issues) {
-  check_process(project.data, issues);
+  if (const Process* process = process_of(project.data)) process->check(project.data.at("process"), issues);
   if (!issues.empty()) return;  // the generated bodies would repeat the process's problem under their own paths
   const json d = expand_process(project.data);
   const int dim = project.dimension();
@@ -530,7 +530,6 @@ Model build_model(const Project& project) {
     }
     model.probes.push_back(std::move(probe));
   }
-  model.rolling = rolling_pass(project.data, model);
   return model;
 }
 

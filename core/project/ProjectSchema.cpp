@@ -5,7 +5,7 @@
 #include "analysis/NewtonOptions.h"
 #include "base/SchemaFields.h"
 #include "io/OutputFields.h"
-#include "project/RollingProcess.h"
+#include "process/ProcessRegistry.h"
 #include "project/RunProject.h"
 #include "solve/SolverStrategy.h"
 #include "solve/UpdatePolicy.h"
@@ -426,8 +426,8 @@ const ObjectSchema& project_schema() {
          Field f;  // optional, no default: a project without it has no process
          f.name = "process";
          f.kind = Kind::Object;
-         f.object = &rolling_process_schema();
-         f.doc = "a rolling pass that generates the slab and roll bodies (see below)";
+         f.object = &process_schema();
+         f.doc = "a process that generates bodies, contacts and conditions (`type`: rolling, see below)";
          return f;
        }(),
        objects("boundary_conditions", kBC, "supports and loads"), objects("contacts", kContact, "contact pairs"),

@@ -1,7 +1,7 @@
 #include "project/RunConfig.h"
 
+#include "process/ProcessRegistry.h"
 #include "project/ModelBuilder.h"
-#include "project/RollingProcess.h"
 
 namespace rollsim {
 
@@ -33,6 +33,8 @@ RunConfig read_run_config(const json& p) {
   c.output.vtu = out.at("vtu").get<bool>();
   c.output.all_increments = out.at("increments").get<std::string>() == "all";
   c.output.fields = out.at("fields").get<std::vector<std::string>>();
+  c.process = process_of(p);
+  if (c.process) c.process_section = p.at("process");
   return c;
 }
 

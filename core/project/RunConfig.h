@@ -10,18 +10,12 @@
 
 #include "analysis/IncrementOptions.h"
 #include "analysis/NewtonOptions.h"
+#include "io/OutputConfig.h"
+#include "process/Process.h"
 #include "solve/SolverOptions.h"
 #include "solve/UpdatePolicy.h"
 
 namespace rollsim {
-
-/// The output section: where results go and which are written.
-struct OutputConfig {
-  std::optional<std::string> dir;   // output.dir (none: results/<project name>, or --out)
-  bool vtu = false;                 // write result.vtu
-  bool all_increments = false;      // and results.pvd with one VTU per increment (output.increments: all)
-  std::vector<std::string> fields;  // output.fields as given (`all`, or names)
-};
 
 struct RunConfig {
   std::string analysis;     // linear or newton (analysis.type `auto` resolved from the materials)
@@ -31,6 +25,8 @@ struct RunConfig {
   IncrementOptions steps;  // analysis.increments (a rolling pass: from its travel) and the active-set limit
   NewtonOptions newton;    // newton.increments = steps.increments
   OutputConfig output;
+  const Process* process = nullptr;  // process.type from the registry (null: none)
+  nlohmann::json process_section;    // its validated section, what ProcessRun is started from
 };
 
 /// The configuration of a validated project (defaults filled in, process expanded where it sets the increments).

@@ -4,8 +4,6 @@
 
 #include "analysis/LinearStatic.h"
 #include "analysis/NewtonStatic.h"
-#include "analysis/RollingMeasures.h"
-#include "analysis/RollingTheory.h"
 #include "base/Blas.h"
 #include "project/ModelBuilder.h"
 #include "project/SolverChoice.h"
@@ -44,19 +42,21 @@ void refuse_contact(const SolverStrategy& solver, const Model& model) {
                       ")");
 }
 
-Results run_linear(const RunConfig& config, const Model& model, AnalysisObserver* observer) {
+Results run_linear(const RunConfig& config, const Model& model, AnalysisObserver* observer,
+                   const IncrementMeasure* /*measure: the linear analysis reports no increment measures*/) {
   set_library_threads(config.solver.threads);
   const auto solver = make_solver(config.solver_mode, config.solver);
   refuse_contact(*solver, model);
   return run_linear_static(model, *solver, observer, config.steps.increments, config.steps.max_active_set_iterations);
 }
 
-Results run_newton(const RunConfig& config, const Model& model, AnalysisObserver* observer) {
+Results run_newton(const RunConfig& config, const Model& model, AnalysisObserver* observer,
+                   const IncrementMeasure* measure) {
   set_library_threads(config.solver.threads);
   const auto solver = make_solver(config.solver_mode, config.solver);
   refuse_contact(*solver, model);
   const auto policy = make_update_policy(config.update);
-  return run_newton_static(model, *solver, *policy, observer, config.newton);
+  return run_newton_static(model, *solver, *policy, observer, config.newton, measure);
 }
 }  // namespace
 
@@ -95,18 +95,22 @@ Results run_project(const RunConfig& config, const Model& model, AnalysisObserve
     return r;
   }
   const std::string& type = config.analysis;
-  if (model.rolling)  // a pass the roll cannot bite is an answer, not a solver failure: nothing is solved
-    if (std::string no_bite = bite_refusal(*model.rolling); !no_bite.empty()) {
+  const std::unique_ptr<ProcessRun> process =
+      config.process ? config.process->start(config.process_section, model) : nullptr;
+  if (process) {
+    if (RunStatus refused = process->refusal(); !refused.ok()) {  // an answer, not a failure: nothing is solved
       Results r;
-      r.status = {Status::no_bite, Reason::none, std::move(no_bite)};
+      r.status = std::move(refused);
       return r;
     }
+    if (observer) observer->on_measures_begin(process->live_table(), process->live_chart());
+  }
   for (const AnalysisInfo& info : analysis_registry())
     if (info.name == type) {
-      Results r = info.run(config, model, observer);
+      Results r = info.run(config, model, observer, process.get());
       if (r.status.ok())  // never a NaN in a result: a converged run whose fields overflowed is an error
         if (auto bad = non_finite_results(model, r); !bad.empty()) r.status = {Status::error, Reason::none, bad};
-      if (model.rolling) r.rolling = measure_rolling(model, r);
+      if (process) r.process = process->finish(r);
       return r;
     }
   throw AnalysisError("analysis.type: no analysis named '" + type + "'");

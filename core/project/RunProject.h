@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/IncrementMeasure.h"
 #include "analysis/Results.h"
 #include "base/Observer.h"
 #include "model/Model.h"
@@ -18,7 +19,7 @@ namespace rollsim {
 struct AnalysisInfo {
   std::string name;
   std::string description;
-  std::function<Results(const RunConfig&, const Model&, AnalysisObserver*)> run;
+  std::function<Results(const RunConfig&, const Model&, AnalysisObserver*, const IncrementMeasure*)> run;
 };
 
 /// Every analysis, in the order shown to users, and their names (analysis.type).

@@ -21,8 +21,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 
 # keys whose values measure the machine or the moment, not the computation (compared by presence only)
-MACHINE_KEYS = {"timing", "blas", "dgemm_peak_gflops", "peak_probe_s", "factor_gflops", "memory", "peak_memory_mb",
-                "seconds", "wall_s", "cpu_s", "total_s", "time_s"}
+MACHINE_KEYS = {"timing", "blas", "dgemm_peak_gflops", "peak_probe_s", "factor_gflops", "factor_peak_fraction",
+                "choice_s", "memory", "peak_memory_mb", "seconds", "wall_s", "cpu_s", "total_s", "time_s"}
 
 
 def cases():
@@ -96,8 +96,10 @@ def differences(a, b, path=""):
     if isinstance(a, dict) and isinstance(b, dict):
         for k in sorted(set(a) | set(b)):
             p = f"{path}.{k}" if path else k
-            if k not in a or k not in b:
-                yield f"{p}: only in {'new' if k in b else 'old'}"
+            if k not in a and k in b:
+                yield f"+{p}"  # a key the new run adds: listed, not a difference
+            elif k not in b:
+                yield f"{p}: only in old"
             elif k not in MACHINE_KEYS:
                 yield from differences(a[k], b[k], p)
     elif isinstance(a, list) and isinstance(b, list):
@@ -113,6 +115,7 @@ def compare(old, new):
     old, new = Path(old), Path(new)
     bad = 0
     compared = 0
+    added = {}
     for case in sorted(p.name for p in old.iterdir() if p.is_dir()):
         for f in ("exit_code", "summary.json"):
             a, b = old / case / f, new / case / f
@@ -128,11 +131,17 @@ def compare(old, new):
                     print(f"{case}: exit code {ca} -> {cb}")
                     bad += 1
                 continue
-            diffs = list(differences(json.loads(a.read_text()), json.loads(b.read_text())))
+            found = list(differences(json.loads(a.read_text()), json.loads(b.read_text())))
+            diffs = [d for d in found if not d.startswith("+")]
+            for d in found:
+                if d.startswith("+"):
+                    added[d[1:]] = added.get(d[1:], 0) + 1
             compared += 1
             for d in diffs[:20]:
                 print(f"{case}: {d}")
             bad += bool(diffs)
+    for key, n in sorted(added.items()):
+        print(f"added: {key} (in {n} summaries)")
     print(f"{compared} summaries compared, {bad} differ")
     return 1 if bad or compared == 0 else 0
 

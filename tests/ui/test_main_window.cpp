@@ -21,11 +21,11 @@
 #include "LogPanel.h"
 #include "MainWindow.h"
 #include "MeshView.h"
+#include "ProcessPlot.h"
 #include "ProjectDocument.h"
 #include "ProjectTreePanel.h"
 #include "PropertyEditor.h"
 #include "ResidualPlot.h"
-#include "RollingPlot.h"
 #include "RunPanel.h"
 #include "RunPlots.h"
 
@@ -186,24 +186,32 @@ class TestMainWindow : public QObject {
     QVERIFY(w.document()->propose("/process/travel", 6.0).empty());
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    RollingPlot* rolling = w.plot()->rolling_plot();
+    ProcessPlot* rolling = w.plot()->process_plot();
     QVERIFY(!rolling->isVisible());  // nothing yet
-    QSignalSpy live(w.worker(), &AnalysisWorker::rollingIncrement);
+    QSignalSpy begun(w.worker(), &AnalysisWorker::measuresBegun);
+    QSignalSpy live(w.worker(), &AnalysisWorker::measured);
     QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
     QVERIFY(w.start_run());
     QVERIFY(finished.wait(60000));
     QCOMPARE(w.run_status(), QStringLiteral("converged"));
     QVERIFY(live.count() >= 5);  // every increment but the last, as it completed
+    QCOMPARE(begun.count(), 1);  // the columns: travel, roll force, torque, with their units
+    const auto columns = begun.at(0).at(0).value<MeasureTable>();
+    QCOMPARE(columns.columns.size(), size_t{3});
+    QCOMPARE(QString::fromStdString(columns.columns[1].name), QStringLiteral("roll_force"));
+    QCOMPARE(QString::fromStdString(columns.columns[1].unit), QStringLiteral("N/mm (per unit width)"));
     for (const QList<QVariant>& args : live) {
-      QVERIFY(args.at(0).toDouble() > 0 && args.at(0).toDouble() < 6);  // travel [mm]
-      QVERIFY(args.at(1).toDouble() > 4000);                            // roll force [N/mm]
+      const auto row = args.at(0).value<QVector<double>>();
+      QCOMPARE(row.size(), 3);
+      QVERIFY(row[0] > 0 && row[0] < 6);  // travel [mm]
+      QVERIFY(row[1] > 4000);             // roll force [N/mm]
     }
     const auto outcome = finished.takeFirst().at(0).value<RunOutcome>();
     QVERIFY(rolling->isVisible());
-    QCOMPARE(rolling->increments(), static_cast<int>(outcome.results->rolling->increments.size()));
+    QCOMPARE(rolling->increments(), static_cast<int>(outcome.results->process->table("rolling")->rows.size()));
     QCOMPARE(rolling->increments(), live.count() + 1);
-    QVERIFY(rolling->findChild<QWidget*>(QStringLiteral("rollingArc"))->isVisible());
-    w.plot()->clear(2);
+    QVERIFY(rolling->findChild<QWidget*>(QStringLiteral("processProfile"))->isVisible());
+    w.plot()->clear();
     QVERIFY(!rolling->isVisible());
   }
 

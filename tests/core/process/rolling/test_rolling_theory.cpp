@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "analysis/RollingTheory.h"
+#include "process/rolling/RollingTheory.h"
 
 using namespace rollsim;
 

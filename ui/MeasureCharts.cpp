@@ -1,4 +1,4 @@
-#include "RollingCharts.h"
+#include "MeasureCharts.h"
 
 #include <QBuffer>
 #include <QChart>
@@ -12,9 +12,6 @@
 #include <QScatterSeries>
 #include <QValueAxis>
 #include <algorithm>
-
-#include "OffscreenQt.h"
-#include "io/AtomicFile.h"
 
 namespace rollsim::ui {
 
@@ -86,50 +83,45 @@ QChart* new_chart(const QString& title) {
   return c;
 }
 
-QString increment_label(int increment) {
-  return increment > 0 ? QString::number(increment) : QStringLiteral("not reached");
+/// The palette of the charts (and of the PNG chart sink's): blue, red, green, orange, purple.
+QColor palette(int i) {
+  static const QColor colours[] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {255, 127, 14}, {148, 103, 189}};
+  return colours[static_cast<size_t>(std::abs(i)) % std::size(colours)];
 }
 
 }  // namespace
 
-QChart* make_history_chart(const RollingResults& r, int dim, const RollingTheory* sims) {
-  const bool plane = dim == 2;
-  QChart* c = new_chart(QStringLiteral("Roll force and torque against travel (bite: increment %1, steady state: %2)")
-                            .arg(increment_label(r.bite_increment), increment_label(r.steady_state_increment)));
-  QValueAxis* x = axis(c, Qt::AlignBottom, QStringLiteral("roll travel [mm]"));
-  const QColor force_color(31, 119, 180), torque_color(214, 39, 40);
-  QValueAxis* f = axis(c, Qt::AlignLeft, plane ? "roll force [MN/m]" : "roll force [kN]", force_color);
-  QValueAxis* t = axis(c, Qt::AlignRight, plane ? "torque per roll [kN·m/m]" : "torque per roll [kN·m]", torque_color);
-  x->setRange(0, 0), f->setRange(0, 0), t->setRange(0, 0);
-  std::vector<QPointF> force, torque;
-  for (const RollingIncrement& i : r.increments) {
-    force.emplace_back(i.travel, i.roll_force * 1e-3);                     // N/mm → MN/m, N → kN
-    torque.emplace_back(i.travel, i.roll_torque * (plane ? 1e-3 : 1e-6));  // N·mm/mm → kN·m/m, N·mm → kN·m
+QChart* make_chart(const ChartRequest& request, const MeasureTable& table) {
+  QChart* c = new_chart(QString::fromStdString(request.title));
+  QValueAxis* x = axis(c, Qt::AlignBottom, QString::fromStdString(request.x_title));
+  const bool right =
+      std::any_of(request.lines.begin(), request.lines.end(), [](const ChartLine& l) { return l.right_axis; });
+  const auto side_colour = [&](bool on_right) {
+    for (const ChartLine& l : request.lines)
+      if (l.right_axis == on_right) return right ? palette(l.colour) : QColor(Qt::black);
+    return QColor(Qt::black);
+  };
+  QValueAxis* y[2] = {
+      axis(c, Qt::AlignLeft, QString::fromStdString(request.left_title), side_colour(false)),
+      right ? axis(c, Qt::AlignRight, QString::fromStdString(request.right_title), side_colour(true)) : nullptr};
+  const size_t xc = table.column(request.x);
+  const double x0 = table.rows.empty() || xc == table.columns.size() ? 0 : table.rows.front()[xc];
+  x->setRange(x0, x0);
+  for (QValueAxis* a : y)
+    if (a) a->setRange(0, 0);
+  double end = x0;
+  for (const ChartLine& l : request.lines) {
+    const size_t yc = table.column(l.column);
+    if (xc == table.columns.size() || yc == table.columns.size()) continue;
+    std::vector<QPointF> points;
+    for (const MeasureRow& row : table.rows) points.emplace_back(row[xc], row[yc] * l.scale);
+    if (!points.empty()) end = std::max(end, points.back().x());
+    add_line(c, QString::fromStdString(l.label), points, x, y[l.right_axis], palette(l.colour));
   }
-  add_line(c, QStringLiteral("roll force"), force, x, f, force_color);
-  add_line(c, QStringLiteral("torque"), torque, x, t, torque_color);
-  if (sims && !r.increments.empty()) {
-    const double end = r.increments.back().travel;
-    add_reference(c, QStringLiteral("Sims's force"), {0, end}, sims->sims_force * 1e-3, x, f, force_color);
-    add_reference(c, QStringLiteral("Sims's torque"), {0, end}, sims->sims_torque * (plane ? 1e-3 : 1e-6), x, t,
-                  torque_color);
-  }
-  return c;
-}
-
-QChart* make_arc_chart(const std::vector<ArcPoint>& arc) {
-  QChart* c = new_chart(QStringLiteral("Contact along the arc, last increment (entry left, exit plane at x = 0)"));
-  QValueAxis* x = axis(c, Qt::AlignBottom, QStringLiteral("x [mm]"));
-  QValueAxis* s = axis(c, Qt::AlignLeft, QStringLiteral("stress on the slab [MPa]"));
-  const double x0 = arc.empty() ? 0 : arc.front().x;
-  x->setRange(x0, x0), s->setRange(0, 0);
-  std::vector<QPointF> pressure, shear;
-  for (const ArcPoint& p : arc) {
-    pressure.emplace_back(p.x, p.pressure);
-    shear.emplace_back(p.x, p.shear);
-  }
-  add_line(c, QStringLiteral("pressure"), pressure, x, s, QColor(31, 119, 180));
-  add_line(c, QStringLiteral("friction stress (+: toward the exit)"), shear, x, s, QColor(44, 160, 44));
+  if (!table.rows.empty())
+    for (const ChartReference& r : request.references)
+      add_reference(c, QString::fromStdString(r.label), {x0, end}, r.value, x, y[r.right_axis && right],
+                    palette(r.colour));
   return c;
 }
 
@@ -149,18 +141,6 @@ QByteArray render_png(QChart* chart, QSize size) {
   buffer.open(QIODevice::WriteOnly);
   image.save(&buffer, "PNG");
   return bytes;
-}
-
-void write_rolling_plots(const std::filesystem::path& dir, const RollingResults& r, int dim,
-                         const RollingTheory& sims) {
-  const OffscreenQt qt;
-  const QSize size(1000, 600);
-  auto write = [&](const char* file, QChart* chart) {
-    const QByteArray png = render_png(chart, size);
-    write_file_atomically(dir / file, std::string(png.constData(), static_cast<size_t>(png.size())));
-  };
-  write("rolling.png", make_history_chart(r, dim, &sims));
-  write("contact_profile.png", make_arc_chart(r.profile));
 }
 
 }  // namespace rollsim::ui

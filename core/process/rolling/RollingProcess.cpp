@@ -1,9 +1,11 @@
-#include "project/RollingProcess.h"
+#include "process/rolling/RollingProcess.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "project/MeshFactory.h"
+#include "mesh/StructuredBlock.h"
+#include "process/rolling/RollingReport.h"
+#include "process/rolling/RollingRun.h"
 
 namespace rollsim {
 
@@ -41,16 +43,7 @@ const ObjectSchema& rolling_process_schema() {
       "the exit plane with its top cut to the roll's surface over the arc of contact, touching the roll along the "
       "whole arc, as a pusher would leave it once the roll grips; its rear end is free, so only friction draws it "
       "in. Units: mm and MPa (N/mm²).",
-      {[] {
-         Field f;
-         f.name = "type";
-         f.kind = Kind::Choice;
-         f.choices = {"rolling"};
-         f.default_value = "rolling";
-         f.doc = "process kind";
-         return f;
-       }(),
-       number("slab_length", "length", 300, 0, 1e6, "slab length along x (rolling direction)"),
+      {number("slab_length", "length", 300, 0, 1e6, "slab length along x (rolling direction)"),
        number("slab_width", "length", 350, 0, 1e6, "slab width (3D: along y; half is modelled)"),
        number("slab_thickness", "length", 100, 0, 1e6, "entry thickness h0 (half is modelled)"),
        number("roll_radius", "length", 300, 0, 1e6, "roll radius R"),
@@ -185,9 +178,7 @@ double exit_thickness(const json& p) {
 }
 }  // namespace
 
-void check_process(const json& project, std::vector<Issue>& issues) {
-  if (!project.contains("process")) return;
-  const json& p = project.at("process");
+void check_rolling(const json& p, std::vector<Issue>& issues) {
   const double h0 = p.at("slab_thickness").get<double>();
   if (p.contains("reduction") && p.contains("exit_thickness"))
     issues.push_back({"process.exit_thickness", "give either process.reduction or process.exit_thickness, not both"});
@@ -205,8 +196,7 @@ void check_process(const json& project, std::vector<Issue>& issues) {
                                          " increments over process.travel: at most 1000 (analysis.increments)"});
 }
 
-json expand_process(const json& project) {
-  if (!project.contains("process")) return project;
+json expand_rolling(const json& project) {
   const json& p = project.at("process");
   const int dim = project.at("dimension").get<int>();
   const double L = p.at("slab_length"), W = p.at("slab_width"), h0 = p.at("slab_thickness");
@@ -304,9 +294,7 @@ json expand_process(const json& project) {
   return out;
 }
 
-std::optional<RollingPass> rolling_pass(const json& project, const Model& model) {
-  if (!project.contains("process")) return std::nullopt;
-  const json& p = project.at("process");
+RollingPass rolling_pass(const json& p, const Model& model) {
   RollingPass pass;
   auto body = [&](const std::string& name) {
     for (size_t b = 0; b < model.bodies.size(); ++b)
@@ -330,6 +318,15 @@ std::optional<RollingPass> rolling_pass(const json& project, const Model& model)
   const std::string friction = p.at("friction");
   if (friction != "sticking") pass.friction = friction == "coulomb" ? p.at("friction_coefficient").get<double>() : 0.0;
   return pass;
+}
+
+std::vector<std::string> RollingProcess::outputs() const {
+  return {kHistoryTable + std::string(".csv"), kHistoryTable + std::string(".png"), kProfileTable + std::string(".csv"),
+          kProfileTable + std::string(".png")};
+}
+
+std::unique_ptr<ProcessRun> RollingProcess::start(const json& section, const Model& model) const {
+  return std::make_unique<RollingRun>(rolling_pass(section, model), model);
 }
 
 }  // namespace rollsim

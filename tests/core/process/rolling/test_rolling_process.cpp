@@ -8,6 +8,7 @@
 
 #include "contact/ContactConstraints.h"
 #include "mesh/Mesh.h"
+#include "process/rolling/RollingProcess.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
@@ -18,6 +19,14 @@ Model rolling(int dim, json process = json::object()) {
   process["type"] = "rolling";
   json j = {{"dimension", dim}, {"process", process}};
   return build_model(parse_project(j.dump(), "rolling"));
+}
+
+/// The pass as its measures see it, on the model rolling(dim, process) builds.
+RollingPass pass_of(int dim, json process = json::object()) {
+  process["type"] = "rolling";
+  json j = {{"dimension", dim}, {"process", process}};
+  const Project p = parse_project(j.dump(), "rolling");
+  return rolling_pass(p.data.at("process"), build_model(p));
 }
 
 // Distinct x of the slab's nodes, ascending: the node planes along the rolling direction.
@@ -56,8 +65,7 @@ TEST(RollingProcess, GeneratesAPreBittenSlabTouchingTheRollAlongTheArc) {
     EXPECT_EQ(c.contacts[0].friction, 0.4);
     EXPECT_NEAR(c.contacts[0].shear_limit, 100 / std::sqrt(3.0), 1e-12);  // μ p capped at k = σ_0/√3
     EXPECT_TRUE(m.contacts[0].holds_slave);                               // the rear end is free: friction draws it
-    ASSERT_TRUE(m.rolling);
-    EXPECT_EQ(m.displacements[static_cast<size_t>(m.rolling->hub)].set, "inner");
+    EXPECT_EQ(m.displacements[static_cast<size_t>(pass_of(dim).hub)].set, "inner");
     // the slab's top nodes over the arc lie on the roll's polygon (active from the start), none penetrates it
     const auto pairs = search_contacts(m);
     int on_arc = 0, active = 0;
@@ -91,9 +99,8 @@ TEST(RollingProcess, GeneratesAPreBittenSlabTouchingTheRollAlongTheArc) {
 TEST(RollingProcess, ExitThicknessInsteadOfReduction) {
   // the paper's 13.2 % given as the exit thickness 86.8 mm builds the same pass, node for node
   const Model by_reduction = rolling(2), by_exit = rolling(2, {{"exit_thickness", 86.8}});
-  ASSERT_TRUE(by_exit.rolling);
-  EXPECT_DOUBLE_EQ(by_exit.rolling->exit_thickness, 86.8);
-  EXPECT_NEAR(by_reduction.rolling->exit_thickness, 86.8, 1e-12);
+  EXPECT_DOUBLE_EQ(pass_of(2, {{"exit_thickness", 86.8}}).exit_thickness, 86.8);
+  EXPECT_NEAR(pass_of(2).exit_thickness, 86.8, 1e-12);
   for (size_t b = 0; b < 2; ++b)
     for (size_t n = 0; n < by_exit.bodies[b].mesh.nodes.size(); ++n)
       for (int c = 0; c < 2; ++c)
@@ -228,8 +235,7 @@ TEST(RollingProcess, WholeWidthMirrorsSlabAndRollAndHoldsTheCentreLine) {
     EXPECT_NEAR(whole.bodies[0].mesh.nodes[static_cast<size_t>(n)][1], 0.0, 1e-9);
     EXPECT_NEAR(whole.bodies[0].mesh.nodes[static_cast<size_t>(n)][2], 0.0, 1e-9);
   }
-  ASSERT_TRUE(half.rolling && whole.rolling);
-  EXPECT_TRUE(half.rolling->half_width);
-  EXPECT_FALSE(whole.rolling->half_width);
-  EXPECT_FALSE(rolling(2, {{"width_symmetry", false}}).rolling->half_width);  // plane strain has no width
+  EXPECT_TRUE(pass_of(3, small).half_width);
+  EXPECT_FALSE(pass_of(3, whole_spec).half_width);
+  EXPECT_FALSE(pass_of(2, {{"width_symmetry", false}}).half_width);  // plane strain has no width
 }

@@ -1,6 +1,6 @@
-#include "analysis/RollingMeasures.h"
+#include "process/rolling/RollingMeasures.h"
 
-#include "analysis/RollingTheory.h"
+#include "process/rolling/RollingTheory.h"
 
 #include "fem/SolidElement.h"
 
@@ -9,6 +9,29 @@
 #include <map>
 
 namespace rollsim {
+
+const std::vector<RollingMeasure>& rolling_measures() {
+  using R = RollingIncrement;
+  static const std::vector<RollingMeasure> table = {
+      {{"travel", "roll travel", "mm"}, "mm", &R::travel},
+      {{"roll_force", "roll force", "N/mm (per unit width)"}, "N", &R::roll_force},
+      {{"roll_torque", "torque per roll", "N·mm/mm (per unit width)"}, "N·mm", &R::roll_torque},
+      {{"contact_length", "contact length", "mm"}, "mm²", &R::contact_length},
+      {{"exit_thickness", "exit thickness", "mm"}, "mm", &R::exit_thickness},
+      {{"forward_slip", "forward slip", "-"}, "-", &R::forward_slip},
+      {{"spread", "spread at the widest point", "mm"}, "mm", &R::spread},
+      {{"mean_spread", "spread of the mean width", "mm"}, "mm", &R::mean_spread},
+      {{"volume_change", "slab volume change", "-"}, "-", &R::volume_change},
+  };
+  return table;
+}
+
+Measure RollingMeasure::in(int dim) const {
+  Measure m = plane;
+  if (dim == 3) m.unit = solid_unit;
+  if (dim == 3 && m.name == "contact_length") m.label = "contact area";
+  return m;
+}
 
 namespace {
 
@@ -94,16 +117,13 @@ RollingIncrement window_mean(const std::vector<RollingIncrement>& h, double from
     before = r.travel;
     if (r.travel <= from || r.travel > to) continue;
     m.travel = r.travel;
-    m.roll_force += w * r.roll_force, m.roll_torque += w * r.roll_torque;
-    m.contact_length += w * r.contact_length, m.exit_thickness += w * r.exit_thickness;
-    m.forward_slip += w * r.forward_slip, m.spread += w * r.spread, m.mean_spread += w * r.mean_spread;
-    m.volume_change += w * r.volume_change;
+    for (const RollingMeasure& measure : rolling_measures())
+      if (measure.field != &RollingIncrement::travel) m.*measure.field += w * r.*measure.field;
     weight += w;
   }
   if (weight <= 0) return m;
-  for (double* v : {&m.roll_force, &m.roll_torque, &m.contact_length, &m.exit_thickness, &m.forward_slip, &m.spread,
-                    &m.mean_spread, &m.volume_change})
-    *v /= weight;
+  for (const RollingMeasure& measure : rolling_measures())
+    if (measure.field != &RollingIncrement::travel) m.*measure.field /= weight;
   return m;
 }
 
@@ -168,8 +188,7 @@ int steady_state_from(const std::vector<RollingIncrement>& h, double window) {
   return 0;
 }
 
-RollingIncrement roll_load(const Model& model, const IncrementResults& inc) {
-  const RollingPass& pass = *model.rolling;
+RollingIncrement roll_load(const RollingPass& pass, const Model& model, const IncrementResults& inc) {
   const double symmetry = pass.half_width ? 2.0 : 1.0;
   RollingIncrement r;
   r.travel = inc.load_factor * pass.travel;
@@ -179,8 +198,7 @@ RollingIncrement roll_load(const Model& model, const IncrementResults& inc) {
   return r;
 }
 
-RollingResults measure_rolling(const Model& model, const Results& results) {
-  const RollingPass& pass = *model.rolling;
+RollingResults measure_rolling(const RollingPass& pass, const Model& model, const Results& results) {
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
   const double symmetry = pass.half_width ? 2.0 : 1.0;
   const double contact = rolling_theory(pass).contact_length;  // √(R Δh)
@@ -190,7 +208,7 @@ RollingResults measure_rolling(const Model& model, const Results& results) {
   std::vector<std::pair<double, double>> fronts{{0.0, 0.0}};  // (travel, front advance) from the start
   for (const IncrementResults& inc : results.increments) {
     if (inc.bodies.size() != model.bodies.size()) continue;
-    RollingIncrement r = roll_load(model, inc);
+    RollingIncrement r = roll_load(pass, model, inc);
     for (const ContactResult& c : inc.contacts) r.contact_length += symmetry * c.measure;
     exit_geometry(pass, slab, inc.bodies[static_cast<size_t>(pass.slab)], contact, r);
     if (pass.width_axis >= 0)

@@ -6,7 +6,8 @@
 #include <cmath>
 
 #include "analysis/Results.h"
-#include "analysis/RollingMeasures.h"
+#include "process/rolling/RollingMeasures.h"
+#include "process/rolling/RollingProcess.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
@@ -92,7 +93,8 @@ TEST(RollingMeasures, SpreadAtTheWidestPointAndOfTheMeanWidth) {
                           {"slab_nt", 4},
                           {"roll_n_axial", 2},
                           {"roll_n_around", 48}}}};
-  const Model m = build_model(parse_project(project.dump(), "lean"));
+  const Project p = parse_project(project.dump(), "lean");
+  const Model m = build_model(p);
   const double c = 0.02;
   IncrementResults inc;
   for (const Body& b : m.bodies) {
@@ -109,7 +111,7 @@ TEST(RollingMeasures, SpreadAtTheWidestPointAndOfTheMeanWidth) {
   }
   Results results;
   results.increments.push_back(inc);
-  const RollingResults r = measure_rolling(m, results);
+  const RollingResults r = measure_rolling(rolling_pass(p.data.at("process"), m), m, results);
   ASSERT_EQ(r.increments.size(), 1u);
   EXPECT_NEAR(r.increments[0].spread, 2 * c * 50, 1e-9);
   EXPECT_NEAR(r.increments[0].mean_spread, 2 * c * 25, 1e-9);

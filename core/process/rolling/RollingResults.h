@@ -1,6 +1,6 @@
 #pragma once
-// What a rolling pass reports (analysis/RollingMeasures computes it from the increments' fields): per increment the
-// roll force, torque, contact length, exit thickness, forward slip and spread, and where the roll bit and the pass
+// What a rolling pass reports (process/rolling/RollingMeasures computes it from the increments' fields): per increment
+// the roll force, torque, contact length, exit thickness, forward slip and spread, and where the roll bit and the pass
 // reached steady state. Whole-slab values: the symmetry halves are counted back in (2D: per unit width).
 #include <vector>
 

@@ -6,7 +6,7 @@
 // width; 3D: times the slab's width.
 #include <string>
 
-#include "model/RollingPass.h"
+#include "process/rolling/RollingPass.h"
 
 namespace rollsim {
 

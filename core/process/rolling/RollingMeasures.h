@@ -3,10 +3,27 @@
 // the hub's reactions, contact length from the contact pair, exit thickness and spread from the slab's nodes past
 // the exit plane, forward slip from the slab front's advance against the roll's surface travel; then where the roll
 // bit and where force and torque settled, and the pressure and shear along the arc at the last increment.
+#include <vector>
+
 #include "analysis/Results.h"
+#include "base/Measures.h"
 #include "model/Model.h"
+#include "process/rolling/RollingPass.h"
+#include "process/rolling/RollingResults.h"
 
 namespace rollsim {
+
+/// One measure of a pass: its name, label and unit (plane strain: per unit width; 3D: its unit there), and the
+/// member of RollingIncrement that holds it. The table is the pass's columns in rolling.csv, the keys and units of
+/// summary.json's results.rolling and what window means average: a new measure is its member, its line here and
+/// its computation in measure_rolling.
+struct RollingMeasure {
+  Measure plane;           // name, label, unit in plane strain
+  std::string solid_unit;  // the unit in 3D
+  double RollingIncrement::*field;
+  Measure in(int dim) const;  // the measure as a model of dimension `dim` reports it
+};
+const std::vector<RollingMeasure>& rolling_measures();
 
 /// Force and torque are settled at an increment when their means over the last two windows of travel, each half a
 /// nominal contact length √(R Δh) (Δh = h0 − h1, the whole draft), agree within this fraction. Means, not values:
@@ -24,9 +41,9 @@ RollingIncrement window_mean(const std::vector<RollingIncrement>& history, doubl
 int steady_state_from(const std::vector<RollingIncrement>& history, double window);
 
 /// One increment's travel, roll force and torque (the rest of the measures need the history: measure_rolling).
-RollingIncrement roll_load(const Model& model, const IncrementResults& increment);
+RollingIncrement roll_load(const RollingPass& pass, const Model& model, const IncrementResults& increment);
 
-/// The measures of `results` (its increments' fields) for the pass `model.rolling` (which must be set).
-RollingResults measure_rolling(const Model& model, const Results& results);
+/// The measures of `results` (its increments' fields) for `pass` on `model` (built from its process).
+RollingResults measure_rolling(const RollingPass& pass, const Model& model, const Results& results);
 
 }  // namespace rollsim

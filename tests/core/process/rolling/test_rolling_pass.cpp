@@ -7,16 +7,22 @@
 
 #include <cmath>
 
-#include "../../common/RollingPass.h"
-#include "../../common/RunJson.h"
+#include "../../../common/PassRun.h"
+#include "../../../common/RollingPass.h"
 
 using namespace rollsim;
 
 TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
-  const Results r = testing_support::run_json(testing_support::paper_pass_2d(4.0, 2.0));
+  const testing_support::PassRun r = testing_support::run_pass(testing_support::paper_pass_2d(4.0, 2.0));
   ASSERT_TRUE(r.status.ok()) << r.status.message;
-  ASSERT_TRUE(r.rolling);
+  ASSERT_TRUE(r.rolling && r.process);
   const RollingResults& roll = *r.rolling;
+  // the process's generic table (rolling.csv) holds the same measures, under their registered names
+  const MeasureTable* table = r.process->table("rolling");
+  ASSERT_TRUE(table);
+  ASSERT_EQ(table->rows.size(), roll.increments.size());
+  EXPECT_EQ(table->rows.back()[table->column("roll_force")], roll.increments.back().roll_force);
+  EXPECT_EQ(table->columns[table->column("roll_force")].unit, "N/mm (per unit width)");
   ASSERT_GE(roll.increments.size(), 2u);  // 2 mm steps, more where the driver cut one back
   EXPECT_EQ(roll.bite_increment, 1);
   const RollingIncrement& last = roll.increments.back();
@@ -56,8 +62,8 @@ TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
 TEST(RollingPass, RigidRollIsDrivenWithoutFactoringAndCarriesTheContactForce) {
   nlohmann::json rigid = testing_support::paper_pass_2d(2.0, 1.0);
   rigid["process"]["roll"] = "rigid";
-  const Results r = testing_support::run_json(rigid);
-  const Results e = testing_support::run_json(testing_support::paper_pass_2d(2.0, 1.0));
+  const testing_support::PassRun r = testing_support::run_pass(rigid);
+  const testing_support::PassRun e = testing_support::run_pass(testing_support::paper_pass_2d(2.0, 1.0));
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_TRUE(e.status.ok()) << e.status.message;
   EXPECT_EQ(r.solver.factorizations.count("roll"), 0u);
@@ -83,7 +89,7 @@ TEST(RollingPass, FrictionBelowTheBiteAngleIsNoBite) {
   nlohmann::json low = testing_support::paper_pass_2d(1.0, 1.0);
   low["process"]["friction"] = "coulomb";
   low["process"]["friction_coefficient"] = 0.1;
-  const Results r = testing_support::run_json(low);
+  const testing_support::PassRun r = testing_support::run_pass(low);
   EXPECT_EQ(r.status.status, Status::no_bite);
   EXPECT_NE(r.status.message.find("0.1 is below tan α = 0.213"), std::string::npos) << r.status.message;
   EXPECT_NE(r.status.message.find("α = 12.04°"), std::string::npos) << r.status.message;
@@ -92,10 +98,10 @@ TEST(RollingPass, FrictionBelowTheBiteAngleIsNoBite) {
   nlohmann::json frictionless = low;
   frictionless["process"]["friction"] = "frictionless";
   frictionless["process"].erase("friction_coefficient");
-  EXPECT_EQ(testing_support::run_json(frictionless).status.status, Status::no_bite);
+  EXPECT_EQ(testing_support::run_pass(frictionless).status.status, Status::no_bite);
   nlohmann::json enough = low;
   enough["process"]["friction_coefficient"] = 0.3;
-  const Results bites = testing_support::run_json(enough);
+  const testing_support::PassRun bites = testing_support::run_pass(enough);
   EXPECT_TRUE(bites.status.ok()) << bites.status.message;
   EXPECT_EQ(bites.rolling->bite_increment, 1);
 }
@@ -107,19 +113,19 @@ TEST(RollingPass, FrictionBelowTheBiteAngleIsNoBite) {
 TEST(RollingPass, EverySolverModeGivesTheSameRollForce) {
   nlohmann::json pass = testing_support::paper_pass_2d(3.0, 1.0);
   pass["solver"] = {{"mode", "direct"}, {"update", "selective"}, {"cg_tolerance", 1e-12}};
-  const Results direct = testing_support::run_json(pass);
+  const testing_support::PassRun direct = testing_support::run_pass(pass);
   ASSERT_TRUE(direct.status.ok()) << direct.status.message;
   const RollingIncrement& ref = direct.rolling->increments.back();
   pass["solver"]["mode"] = "mixed";
-  const Results mixed = testing_support::run_json(pass);
+  const testing_support::PassRun mixed = testing_support::run_pass(pass);
   pass["solver"]["interface_solver"] = "dense";
-  const Results mixed_dense = testing_support::run_json(pass);
+  const testing_support::PassRun mixed_dense = testing_support::run_pass(pass);
   pass["solver"]["mode"] = "feti";
   pass["process"]["slab_partition"] = "3x1";
-  const Results feti_dense = testing_support::run_json(pass);
+  const testing_support::PassRun feti_dense = testing_support::run_pass(pass);
   pass["solver"]["interface_solver"] = "krylov";
-  const Results feti = testing_support::run_json(pass);
-  for (const Results* r : {&mixed, &mixed_dense, &feti, &feti_dense}) {
+  const testing_support::PassRun feti = testing_support::run_pass(pass);
+  for (const testing_support::PassRun* r : {&mixed, &mixed_dense, &feti, &feti_dense}) {
     ASSERT_TRUE(r->status.ok()) << r->status.message;
     const RollingIncrement& last = r->rolling->increments.back();
     EXPECT_EQ(last.travel, ref.travel);
@@ -148,7 +154,7 @@ TEST(RollingPass, WholeWidthGivesTheHalfWidthPass) {
                          {"solver", {{"mode", "mixed"}, {"cg_tolerance", 1e-10}}}};
   nlohmann::json whole = half;
   whole["process"]["width_symmetry"] = false;
-  const Results h = testing_support::run_json(half), w = testing_support::run_json(whole);
+  const testing_support::PassRun h = testing_support::run_pass(half), w = testing_support::run_pass(whole);
   ASSERT_TRUE(h.status.ok()) << h.status.message;
   ASSERT_TRUE(w.status.ok()) << w.status.message;
   ASSERT_TRUE(h.rolling && w.rolling);

@@ -1,4 +1,4 @@
-#include "analysis/RollingTheory.h"
+#include "process/rolling/RollingTheory.h"
 
 #include <cmath>
 #include <cstdio>

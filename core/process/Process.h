@@ -1,0 +1,46 @@
+#pragma once
+// A process: what a project's `process` section stands for (a rolling pass today; a hot pass or a multi-pass
+// schedule next). It declares its section's schema, expands the section into ordinary bodies, materials, contacts and
+// conditions — so that everything below sees a plain multi-body model — and, once the model is built, starts a
+// ProcessRun: its refusal of a run it cannot do, its measures of each increment while the analysis goes on, and its
+// results afterwards. Chosen by name (process.type) from the registry (process/ProcessRegistry); a new process is a
+// new implementation there, with no change to the analyses, Model, Results, the observers or the writers.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/IncrementMeasure.h"
+#include "analysis/Results.h"
+#include "base/Measures.h"
+#include "base/RunStatus.h"
+#include "base/Schema.h"
+#include "model/Model.h"
+
+namespace rollsim {
+
+/// A process running on a built model.
+class ProcessRun : public IncrementMeasure {
+ public:
+  /// Why the run must not be solved (a status that is not converged, e.g. no_bite), or converged when it may.
+  virtual RunStatus refusal() const { return {}; }
+  /// Its measures of `results` (every completed increment): tables, charts, summary section, report.
+  virtual ProcessResults finish(const Results& results) const = 0;
+};
+
+class Process {
+ public:
+  virtual ~Process() = default;
+  virtual std::string name() const = 0;  // process.type
+  /// The section's fields (its variant of the `process` object; `type` is the registry's).
+  virtual const ObjectSchema& schema() const = 0;
+  /// Checks of the validated section that need more than one field, as `process.<field>` issues.
+  virtual void check(const json& section, std::vector<Issue>& issues) const = 0;
+  /// `project` with what the section generates appended (bodies, materials, contacts, conditions, increments).
+  virtual json expand(const json& project) const = 0;
+  /// The files its runs write (tables and charts): an output folder's earlier run is cleared of them.
+  virtual std::vector<std::string> outputs() const = 0;
+  /// The run on `model`, built from expand(project).
+  virtual std::unique_ptr<ProcessRun> start(const json& section, const Model& model) const = 0;
+};
+
+}  // namespace rollsim

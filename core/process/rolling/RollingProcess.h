@@ -1,0 +1,41 @@
+#pragma once
+// The flat-rolling pass, a process (process.type: rolling): from the pass geometry
+// (slab length × width × thickness, roll radius and barrel, reduction) and mesh densities it generates the
+// slab and roll bodies, their materials, the slab–roll contact pair and the symmetry / support conditions, so
+// that the rest of the engine sees an ordinary multi-body project. Symmetry: half thickness always (the slab's
+// mid-plane), half width in 3D. Axes: x rolling direction, y thickness (2D) / width (3D), z thickness (3D).
+#include "base/Schema.h"
+#include "model/Model.h"
+#include "process/Process.h"
+#include "process/rolling/RollingPass.h"
+
+namespace rollsim {
+
+/// The schema of the section (fields, units, defaults: the paper's pass, slab 300 × 350 × 100 mm, roll radius
+/// 300 mm, 13.2 % reduction).
+const ObjectSchema& rolling_process_schema();
+
+/// Checks of the validated section that need more than one field (the grading against slab_nx), as
+/// `process.<field>`.
+void check_rolling(const json& section, std::vector<Issue>& issues);
+
+/// `project` with the bodies, materials, contacts and conditions of its pass appended. The section must already be
+/// validated (defaults filled).
+json expand_rolling(const json& project);
+
+/// The pass as its measures need it (bodies, the hub's rotation, nominal geometry) from the validated `section`, on
+/// `model` built from expand_rolling(project).
+RollingPass rolling_pass(const json& section, const Model& model);
+
+/// The rolling pass as a process of the registry (process.type: rolling).
+class RollingProcess final : public Process {
+ public:
+  std::string name() const override { return "rolling"; }
+  const ObjectSchema& schema() const override { return rolling_process_schema(); }
+  void check(const json& section, std::vector<Issue>& issues) const override { check_rolling(section, issues); }
+  json expand(const json& project) const override { return expand_rolling(project); }
+  std::vector<std::string> outputs() const override;
+  std::unique_ptr<ProcessRun> start(const json& section, const Model& model) const override;
+};
+
+}  // namespace rollsim

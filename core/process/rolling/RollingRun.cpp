@@ -1,0 +1,38 @@
+#include "process/rolling/RollingRun.h"
+
+#include "process/rolling/RollingMeasures.h"
+#include "process/rolling/RollingReport.h"
+#include "process/rolling/RollingTheory.h"
+
+namespace rollsim {
+
+RunStatus RollingRun::refusal() const {
+  // a pass the roll cannot bite is an answer, not a solver failure: nothing is solved
+  if (std::string no_bite = bite_refusal(pass_); !no_bite.empty()) return {Status::no_bite, Reason::none, no_bite};
+  return {};
+}
+
+MeasureTable RollingRun::live_table() const {
+  MeasureTable t = history_table({}, model_.dim);
+  const auto keep = [&](const Measure& m) {
+    return m.name == "travel" || m.name == "roll_force" || m.name == "roll_torque";
+  };
+  std::vector<Measure> live;
+  for (const Measure& m : t.columns)
+    if (keep(m)) live.push_back(m);
+  t.columns = live;
+  return t;
+}
+
+ChartRequest RollingRun::live_chart() const { return history_chart(pass_, model_.dim, {}, false); }
+
+MeasureRow RollingRun::measure(const IncrementResults& increment) const {
+  const RollingIncrement r = roll_load(pass_, model_, increment);
+  return {r.travel, r.roll_force, r.roll_torque};
+}
+
+ProcessResults RollingRun::finish(const Results& results) const {
+  return rolling_results(pass_, model_.dim, measure_rolling(pass_, model_, results));
+}
+
+}  // namespace rollsim

@@ -1,0 +1,23 @@
+#pragma once
+// A rolling pass running on its model: refuses a pass the roll cannot bite, tells the observers each increment's
+// travel, roll force and torque, and measures the whole pass at the end (RollingMeasures, RollingReport).
+#include "process/Process.h"
+#include "process/rolling/RollingPass.h"
+
+namespace rollsim {
+
+class RollingRun final : public ProcessRun {
+ public:
+  RollingRun(RollingPass pass, const Model& model) : pass_(pass), model_(model) {}
+  RunStatus refusal() const override;
+  MeasureTable live_table() const override;
+  ChartRequest live_chart() const override;
+  MeasureRow measure(const IncrementResults& increment) const override;
+  ProcessResults finish(const Results& results) const override;
+
+ private:
+  RollingPass pass_;
+  const Model& model_;
+};
+
+}  // namespace rollsim

@@ -1,0 +1,73 @@
+#include "ProcessPlot.h"
+
+#include <QAbstractAxis>
+#include <QChart>
+#include <QChartView>
+#include <QHBoxLayout>
+
+#include "ChartStyle.h"
+#include "MeasureCharts.h"
+
+namespace rollsim::ui {
+
+using namespace QtCharts;
+
+namespace {
+constexpr int kViews = 2;  // the history and one more (a pass's arc)
+}
+
+ProcessPlot::ProcessPlot(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  for (int i = 0; i < kViews; ++i) {
+    auto* v = new QChartView;
+    v->setRenderHint(QPainter::Antialiasing);
+    v->setObjectName(i == 0 ? QStringLiteral("processHistory") : QStringLiteral("processProfile"));
+    v->hide();
+    layout->addWidget(v);
+    views_.push_back(v);
+  }
+  hide();
+}
+
+void ProcessPlot::clear() {
+  live_ = MeasureTable{};
+  increments_ = 0;
+  for (QChartView* v : views_) v->hide();
+  hide();
+}
+
+void ProcessPlot::show_chart(QChartView* view, QChart* chart, const std::string& title) {
+  make_compact(chart);
+  chart->setTitle(QString::fromStdString(title));  // the units in the title: a short vertical axis title is elided
+  for (QAbstractAxis* a : chart->axes(Qt::Vertical)) a->setTitleVisible(false);
+  QChart* old = view->chart();
+  view->setChart(chart);  // the view releases the old chart without deleting it
+  delete old;
+  view->show();
+  show();
+}
+
+void ProcessPlot::begin(const MeasureTable& columns, const ChartRequest& chart) {
+  clear();
+  live_ = columns;
+  live_chart_ = chart;
+}
+
+void ProcessPlot::add_row(const QVector<double>& row) {
+  live_.rows.emplace_back(row.begin(), row.end());
+  increments_ = static_cast<int>(live_.rows.size());
+  show_chart(views_[0], make_chart(live_chart_, live_), live_chart_.short_title);
+}
+
+void ProcessPlot::set_results(const ProcessResults& results) {
+  for (size_t i = 0; i < results.charts.size() && i < views_.size(); ++i) {
+    const ChartRequest& c = results.charts[i];
+    const MeasureTable* t = results.table(c.table);
+    if (!t || t->rows.empty()) continue;
+    if (i == 0) increments_ = static_cast<int>(t->rows.size());  // every increment, the last one included
+    show_chart(views_[i], make_chart(c, *t), c.short_title);
+  }
+}
+
+}  // namespace rollsim::ui
