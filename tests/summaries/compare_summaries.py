@@ -3,9 +3,10 @@
 
   compare_summaries.py run BIN OUT [CASE…] run every sample (and a few solver variants of the main job) with BIN into
                                           OUT/<case>/, one thread, long passes shortened (CASES below)
-  compare_summaries.py compare OLD NEW    compare OUT folders of two runs: every value equal to the last digit, except
-                                          what measures the machine (times, rates, memory, the BLAS's name) — exit 1
-                                          and the differing paths when any differs
+  compare_summaries.py compare OLD NEW    compare OUT folders of two runs: every summary.json value equal to the last
+                                          digit, except what measures the machine (times, rates, memory, the BLAS's
+                                          name), and every CSV byte for byte — exit 1 and the differing paths when any
+                                          differs (keys only the new run writes are listed, not counted)
 
 A refactoring is run as: build the commit before, `run` into A; build after, `run` into B; `compare A B`. The
 shortening is the same on both sides, so the comparison is exact; it only keeps the whole set within minutes.
@@ -116,6 +117,7 @@ def compare(old, new):
     bad = 0
     compared = 0
     added = {}
+    tables = 0
     for case in sorted(p.name for p in old.iterdir() if p.is_dir()):
         for f in ("exit_code", "summary.json"):
             a, b = old / case / f, new / case / f
@@ -140,9 +142,15 @@ def compare(old, new):
             for d in diffs[:20]:
                 print(f"{case}: {d}")
             bad += bool(diffs)
+        for table in sorted((old / case).glob("*.csv")):  # convergence.csv and a process's tables, byte for byte
+            other = new / case / table.name
+            tables += 1
+            if not other.exists() or other.read_bytes() != table.read_bytes():
+                print(f"{case}/{table.name}: {'missing' if not other.exists() else 'differs'} in {new}")
+                bad += 1
     for key, n in sorted(added.items()):
         print(f"added: {key} (in {n} summaries)")
-    print(f"{compared} summaries compared, {bad} differ")
+    print(f"{compared} summaries and {tables} CSV files compared, {bad} differ")
     return 1 if bad or compared == 0 else 0
 
 
