@@ -12,10 +12,6 @@
 
 namespace rollsim {
 
-namespace {
-constexpr int kMaxInterfaceIterations = 10000;
-}  // namespace
-
 MixedStrategy::MixedStrategy(SolverOptions options, bool subdomains, std::string factorization)
     : options_(std::move(options)),
       subdomains_(subdomains),
@@ -162,7 +158,7 @@ ProjectedCGResult MixedStrategy::solve_interface(const BlockSystem& sys, Interfa
   const bool krylov_gmres = problem.unsymmetric || any_indefinite();
   if (preconditioner_ && options_.projector == ProjectorMetric::Preconditioner && problem.Gs.cols() && !krylov_gmres)
     problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
-  ProjectedCGOptions cg{options_.cg_tolerance, kMaxInterfaceIterations, {}, solve};
+  ProjectedCGOptions cg{options_.cg_tolerance, options_.max_interface_iterations, {}, solve};
   if (preconditioner_) cg.preconditioner = [&](const Eigen::VectorXd& w) { return preconditioner_->apply(sys, w); };
   gmres_solves_ += krylov_gmres;
   return krylov_gmres ? projected_gmres(problem, cg, observer) : projected_cg(problem, cg, observer);
@@ -196,7 +192,8 @@ BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   stats_.cg_lambda_max = last_.lambda_max;
   BlockSolution out;
   out.lambda = last_.lambda;
-  out.status = cg_status(last_, ProjectedCGOptions{options_.cg_tolerance, kMaxInterfaceIterations, {}, solve});
+  out.status =
+      cg_status(last_, ProjectedCGOptions{options_.cg_tolerance, options_.max_interface_iterations, {}, solve});
   if (options_.interface_solver == InterfaceSolver::Dense && !last_.converged) {
     char what[300];
     std::snprintf(what, sizeof what,

@@ -59,7 +59,8 @@ struct SolverOptions {
   InterfaceStart interface_start = InterfaceStart::Zero;  // Previous: from BlockSystem::lambda_start
   InterfaceSolver interface_solver = InterfaceSolver::Krylov;
   PetscMethod petsc_method = PetscMethod::Bddc;
-  std::string petsc_options;  // petsc: options passed through to PETSc, e.g. "-ksp_monitor"
+  std::string petsc_options;             // petsc: options passed through to PETSc, e.g. "-ksp_monitor"
+  int max_interface_iterations = 10000;  // mixed / feti: iterations of one interface CG / GMRES before it gives up
 };
 
 /// The solver section's option fields, in the order shown to users.
@@ -117,6 +118,12 @@ inline const std::vector<BoundField<SolverOptions>>& solver_option_fields() {
                       1.0),
                 "cg-tolerance"),
            &S::cg_tolerance),
+      bind(flag(count("max_interface_iterations",
+                      "iterations one interface CG / GMRES of `mixed` and `feti` may take; a solve still short of "
+                      "cg_tolerance after them ends not_converged (iteration_limit), or cuts a Newton step back",
+                      1e6),
+                "max-interface-iterations"),
+           &S::max_interface_iterations),
   };
   return table;
 }

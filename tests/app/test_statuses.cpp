@@ -100,6 +100,21 @@ TEST(RunStatuses, DenseInterfaceSolverRunsAndIsRecorded) {
   for (const ProjectRun* r : {&cg, &dense, &bad}) fs::remove_all(r->dir);
 }
 
+// solver.max_interface_iterations (--max-interface-iterations, a flag the schema gives it): a feti solve that needs
+// more interface iterations than allowed ends not_converged (iteration_limit), exit 3; the resolved configuration in
+// summary.json says what was asked.
+TEST(RunStatuses, InterfaceIterationLimitIsAnOption) {
+  const ProjectRun capped = run_project(sample("block-indent-dd-2d-50x30"), {"--max-interface-iterations", "3"});
+  EXPECT_EQ(capped.result.exit_code, 3) << capped.result.err;
+  EXPECT_EQ(capped.summary.value("reason", ""), "iteration_limit");
+  EXPECT_EQ(capped.summary["config"]["solver"].value("max_interface_iterations", 0), 3);
+  const ProjectRun free = run_project(sample("block-indent-dd-2d-50x30"), {});
+  EXPECT_EQ(free.result.exit_code, 0) << free.result.err;
+  EXPECT_EQ(free.summary["config"]["solver"].value("max_interface_iterations", 0), 10000);
+  EXPECT_GT(free.summary["solver"].value("cg_iterations_total", 0), 3);
+  for (const ProjectRun* r : {&capped, &free}) fs::remove_all(r->dir);
+}
+
 // The reported case: an active set still changing at its limit said "diverged" and exited 0.
 TEST(RunStatuses, ActiveSetAtItsIterationLimitIsNotConvergedWithExitThree) {
   json j = sample("cylinder-indent-2d");  // its frictionless active set settles after several solves
