@@ -11,7 +11,7 @@
 
 namespace rollsim {
 
-inline constexpr int kPetscModuleAbi = 2;                                 // 2: SolverOptions holds enums
+inline constexpr int kPetscModuleAbi = 3;  // 2: SolverOptions holds enums; 3: max_interface_iterations
 inline constexpr const char* kPetscModuleFile = "rollsim_petsc.so";       // beside the executable
 inline constexpr const char* kPetscModuleEnv = "ROLLSIM_PETSC_MODULE";    // overrides where it is
 inline constexpr const char* kPetscModuleEntry = "rollsim_petsc_module";  // its one exported symbol
