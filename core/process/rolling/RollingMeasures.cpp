@@ -22,6 +22,7 @@ const std::vector<RollingMeasure>& rolling_measures() {
       {{"spread", "spread at the widest point", "mm"}, "mm", &R::spread},
       {{"mean_spread", "spread of the mean width", "mm"}, "mm", &R::mean_spread},
       {{"volume_change", "slab volume change", "-"}, "-", &R::volume_change},
+      {{"mean_pressure", "mean roll pressure", "MPa"}, "MPa", &R::mean_pressure},
   };
   return table;
 }
@@ -228,6 +229,7 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
     if (!out.bite_increment && dt > 0 && rear - rear_before >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
       out.bite_increment = static_cast<int>(out.increments.size()) + 1;
     r.volume_change = volume(slab, u) / volume0 - 1;
+    r.mean_pressure = r.contact_length > 0 ? r.roll_force / r.contact_length : 0.0;  // p̄ = F / (L b)
     rear_before = rear, travel_before = r.travel;
     out.increments.push_back(r);
   }

@@ -19,6 +19,7 @@ struct RollingIncrement {
   // 3D: the same with the section's mean width: the side face's position averaged over the thickness (0 in 2D) [length]
   double mean_spread = 0;
   double volume_change = 0;  // the slab's current volume (area in 2D) / its initial one − 1 [-]
+  double mean_pressure = 0;  // roll force / contact length (2D) or area (3D): the mean pressure on the arc [stress]
 };
 
 /// One slab node in contact along the arc, in the rolling plane (3D: every node of the contact zone, across the

@@ -38,6 +38,11 @@ TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
   EXPECT_GT(last.forward_slip, 0.0);
   EXPECT_LT(last.forward_slip, 0.15);
   EXPECT_EQ(last.spread, 0.0);  // plane strain
+  // the mean pressure on the arc, F / L: about the plane-strain flow stress 2k = 115 MPa times Sims's Q_p
+  EXPECT_DOUBLE_EQ(last.mean_pressure, last.roll_force / last.contact_length);
+  EXPECT_GT(last.mean_pressure, 100.0);
+  EXPECT_LT(last.mean_pressure, 150.0);
+  EXPECT_EQ(table->columns[table->column("mean_pressure")].unit, "MPa");
   // the arc: every contact node of the last increment, entry first, pressed, its friction within k = σ_0/√3; the
   // pressure integrated along x (each node's share: half-way to its neighbours) carries the roll force
   const std::vector<ArcPoint>& arc = roll.profile;
