@@ -44,7 +44,7 @@ void add_project_flags(CLI::App& cmd, rollsim::Overrides& overrides) {
       "(the reference: rollsim schema)");
   cmd.add_option_function<std::string>(
       "--partition", [&overrides](const std::string& v) { overrides.partition = v; },
-      "[BODY=]SPEC: subdomains for feti, e.g. 4x4, 2x2x1, metis:16 (default body: the first; a rolling pass: the "
+      "[BODY=]SPEC: subdomains for feti, e.g. 4x4, 2x2x1, metis:16 (default body: the first; a process: the "
       "slab)");
 }
 }  // namespace
