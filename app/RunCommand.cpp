@@ -51,15 +51,6 @@ int invalid(const std::string& message) {
   return 2;
 }
 
-/// The project with the command line's overrides, and a strategy this build and the options can make (petsc
-/// without PETSc is invalid input); throws ProjectError or std::invalid_argument.
-Project checked_project(const RunOptions& o) {
-  Project project = load_project(o.project, o.overrides);
-  const RunConfig config = project.config();
-  if (config.solver_mode != kAutoSolver) make_solver(config.solver_mode, config.solver);
-  return project;
-}
-
 /// The analysis, its failure to start an error status; a petsc run cannot be cancelled (its ranks would stop at
 /// different iterations and wait for each other in PETSc).
 Results analyse(const RunConfig& config, const Model& model, StderrProgress& progress) {
@@ -98,14 +89,16 @@ int report(const Project& project, const Results& results, const RunInfo& info, 
 int run_command(const RunOptions& o) {
   Stopwatch wall;
   Project project;
-  try {
-    project = checked_project(o);
+  RunConfig config;
+  try {  // the project with the command line's overrides, and a strategy this build and the options can make
+    project = load_project(o.project, o.overrides);
+    config = project.config();
+    if (config.solver_mode != kAutoSolver) make_solver(config.solver_mode, config.solver);
   } catch (const ProjectError& e) {
     return invalid(e.what());
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::invalid_argument& e) {  // petsc in a build without PETSc
     return invalid(e.what());
   }
-  const RunConfig config = project.config();
   // solver `petsc` under mpirun: every rank builds the model and its own subdomain; rank 0 reports and writes
   if (config.solver_mode == "petsc") start_processes();
   const bool writer = process_rank() == 0;

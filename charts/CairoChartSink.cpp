@@ -29,7 +29,7 @@ struct Axis {
 
 Axis nice_axis(double lo, double hi) {
   if (!(hi > lo)) hi = lo + (lo == 0 ? 1 : std::abs(lo) * 0.1);
-  const double raw = (hi - lo) / 5;
+  const double raw = (hi - lo) / 8;  // 5 to 10 ticks
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
   double step = magnitude;
   for (const double m : {1.0, 2.0, 5.0, 10.0})
