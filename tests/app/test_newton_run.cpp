@@ -188,7 +188,8 @@ TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {
   EXPECT_GT(rolling["roll_force"].get<double>(), 4000.0);
   EXPECT_EQ(rolling["units"]["roll_force"], "N/mm (per unit width)");
   EXPECT_EQ(rolling["bite_increment"], 1);
-  // the closed forms beside (analysis/RollingTheory): Sims's 6.78 MN/m and 213 kN·m/m, printed and in the summary
+  // the closed forms beside (process/rolling/RollingTheory): Sims's 6.78 MN/m and 213 kN·m/m, printed and in the
+  // summary
   EXPECT_TRUE(contains(r.result.err,
                        "Sims (sticking friction): roll force 6781 N/mm, torque 2.127e+05 N·mm/mm, forward slip 2.47 %"))
       << r.result.err;
