@@ -37,7 +37,8 @@ void add_project_flags(CLI::App& cmd, rollsim::Overrides& overrides) {
       [&overrides](const std::vector<std::string>& sets) {
         for (const std::string& s : sets) {
           const auto eq = s.find('=');
-          overrides.sets.push_back({s.substr(0, eq), eq == std::string::npos ? "" : s.substr(eq + 1), "--set"});
+          if (eq == std::string::npos) throw CLI::ValidationError("--set", "expects PATH=VALUE, got '" + s + "'");
+          overrides.sets.push_back({s.substr(0, eq), s.substr(eq + 1), "--set"});
         }
       },
       "PATH=VALUE: set any project field, e.g. --set analysis.max_iterations=40 --set bodies[0].partition=2x2 "

@@ -30,7 +30,9 @@ json* node_at(json& root, const std::string& path) {
     std::string key = path.substr(at, end - at);
     std::optional<size_t> item;
     if (const auto open = key.find('['); open != std::string::npos) {
-      item = std::stoul(key.substr(open + 1));
+      const std::string digits = key.substr(open + 1, key.size() - open - 2);
+      if (digits.size() > 9) return nullptr;  // beyond any array a project holds
+      item = std::stoul(digits);
       key.resize(open);
     }
     if (node->is_null()) *node = json::object();
