@@ -13,7 +13,6 @@
 #include "project/ModelLimits.h"
 #include "project/PrescribedConflicts.h"
 #include "project/ProjectSchema.h"
-#include "solve/UpdatePolicy.h"
 
 namespace rollsim {
 

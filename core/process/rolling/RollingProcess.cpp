@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/SchemaFields.h"
 #include "mesh/StructuredBlock.h"
 #include "process/rolling/RollingReport.h"
 #include "process/rolling/RollingRun.h"
@@ -10,25 +11,16 @@
 namespace rollsim {
 
 namespace {
-Field number(std::string name, std::string unit, double def, double min, double max, std::string doc) {
-  Field f;
-  f.name = std::move(name);
-  f.kind = Kind::Number;
-  f.unit = std::move(unit);
-  f.default_value = def;
-  f.min = min, f.max = max;
+using namespace schema;
+
+/// A number in (lo, hi] with its default.
+Field number(std::string name, std::string unit, double d, double lo, double hi, std::string doc) {
+  Field f = def(bounded(num(std::move(name), std::move(unit), std::move(doc)), lo, hi), d);
   f.min_exclusive = true;
-  f.doc = std::move(doc);
   return f;
 }
-Field count(std::string name, int def, std::string doc) {
-  Field f;
-  f.name = std::move(name);
-  f.kind = Kind::Integer;
-  f.default_value = def;
-  f.min = 1, f.max = 1e5;
-  f.doc = std::move(doc);
-  return f;
+Field count(std::string name, int d, std::string doc) {
+  return def(schema::count(std::move(name), std::move(doc), 1e5), d);
 }
 }  // namespace
 
@@ -88,79 +80,38 @@ const ObjectSchema& rolling_process_schema() {
          return f;
        }(),
        number("slab_nu", "-", 0.3, -1, 0.5, "slab Poisson's ratio"),
-       [] {
-         Field f;
-         f.name = "roll";
-         f.kind = Kind::Choice;
-         f.choices = {"elastic", "rigid"};
-         f.default_value = "elastic";
-         f.doc =
-             "the roll: elastic (its hub turned, the ring deforms: roll flattening) or rigid (every node of the ring "
-             "turned as one body; nothing of the roll is factored: faster, and beside an elastic run a measure of "
-             "what flattening changes)";
-         return f;
-       }(),
-       [] {
-         Field f;
-         f.name = "width_symmetry";
-         f.kind = Kind::Boolean;
-         f.default_value = true;
-         f.doc =
-             "3D: model half the width, with a symmetry plane at y = 0 (the pass is symmetric about it). false: the "
-             "whole width, slab and roll mirrored (twice the elements of slab_nw and roll_n_axial), held in y only "
-             "along the slab's centre line — what the symmetry saves, and a check of it";
-         return f;
-       }(),
+       choice("roll", {"elastic", "rigid"}, "elastic",
+              "the roll: elastic (its hub turned, the ring deforms: roll flattening) or rigid (every node of the ring "
+              "turned as one body; nothing of the roll is factored: faster, and beside an elastic run a measure of "
+              "what flattening changes)"),
+       def(boolean(
+               "width_symmetry",
+               "3D: model half the width, with a symmetry plane at y = 0 (the pass is symmetric about it). false: the "
+               "whole width, slab and roll mirrored (twice the elements of slab_nw and roll_n_axial), held in y only "
+               "along the slab's centre line — what the symmetry saves, and a check of it"),
+           true),
        number("roll_E", "stress", 2.1e5, 0, 1e12, "roll Young's modulus"),
        number("roll_nu", "-", 0.3, -1, 0.5, "roll Poisson's ratio"),
-       [] {
-         Field f;
-         f.name = "friction";
-         f.kind = Kind::Choice;
-         f.choices = {"sticking", "coulomb", "frictionless"};
-         f.default_value = "sticking";
-         f.doc =
-             "roll–slab friction: sticking (the paper's: a point in contact holds to the roll and never slips; "
-             "the friction stress is limited by the slab's surface layer yielding in shear at k = σ_0/√3, as the "
-             "slab method's sticking friction assumes), coulomb (μ = friction_coefficient, capped at k) or "
-             "frictionless. A pass whose μ is below tan α (the bite "
-             "angle: cos α = 1 − Δh / 2R), or frictionless, ends `no_bite` before anything is solved";
-         return f;
-       }(),
+       choice("friction", {"sticking", "coulomb", "frictionless"}, "sticking",
+              "roll–slab friction: sticking (the paper's: a point in contact holds to the roll and never slips; "
+              "the friction stress is limited by the slab's surface layer yielding in shear at k = σ_0/√3, as the "
+              "slab method's sticking friction assumes), coulomb (μ = friction_coefficient, capped at k) or "
+              "frictionless. A pass whose μ is below tan α (the bite "
+              "angle: cos α = 1 − Δh / 2R), or frictionless, ends `no_bite` before anything is solved"),
        [] {
          Field f = number("friction_coefficient", "-", 0.3, 0, 10, "Coulomb's μ (friction: coulomb)");
          f.min_exclusive = false;
          return f;
        }(),
-       [] {
-         Field f;
-         f.name = "sliding";
-         f.kind = Kind::Choice;
-         f.choices = {"large", "large_every_iteration"};
-         f.default_value = "large";
-         f.doc =
-             "the roll–slab pair's large sliding (contacts[].sliding): searched where each step begins, or at every "
-             "Newton iteration (then with the contact's geometric stiffness, analysis.contact_tangent)";
-         return f;
-       }(),
+       choice("sliding", {"large", "large_every_iteration"}, "large",
+              "the roll–slab pair's large sliding (contacts[].sliding): searched where each step begins, or at every "
+              "Newton iteration (then with the contact's geometric stiffness, analysis.contact_tangent)"),
        number("travel", "length", 100, 0, 1e6,
               "distance the roll's surface travels over the analysis (the roll turns travel / R)"),
        number("travel_increment", "length", 2, 0, 1e6, "roll surface travel per increment"),
-       [] {
-         Field f;
-         f.name = "slab_partition";
-         f.kind = Kind::String;
-         f.doc = "subdomains of the slab for `feti` (as bodies[].partition)";
-         return f;
-       }(),
-       [] {
-         Field f;
-         f.name = "slab_partition_map";
-         f.kind = Kind::Vector;
-         f.vector_size = -1;
-         f.doc = "explicit element → subdomain map of the slab (as bodies[].partition_map, e.g. painted in the window)";
-         return f;
-       }()},
+       str("slab_partition", "subdomains of the slab for `feti` (as bodies[].partition)"),
+       vec("slab_partition_map", "",
+           "explicit element → subdomain map of the slab (as bodies[].partition_map, e.g. painted in the window)", -1)},
       "",
       {}};
   return s;
