@@ -15,6 +15,7 @@ struct RunOptions {
   std::optional<std::string> out;
   Overrides overrides;  // the schema's flags (--solver, --threads, …), --set PATH=VALUE and --partition
   bool quiet = false;
+  std::string command;  // the command line as typed (summary.json's run.command)
 };
 
 struct BenchOptions {

@@ -12,12 +12,16 @@
 #include "analysis/AnalysisError.h"
 #include "base/Blas.h"
 #include "base/DgemmPeak.h"
+#include "base/Memory.h"
 #include "base/Stopwatch.h"
-#include "io/OutputFolder.h"
+#include "io/AtomicFile.h"
+#include "io/OutputFields.h"
+#include "io/RunFolder.h"
 #include "io/RunWriter.h"
 #include "process/ProcessRegistry.h"
 #include "project/ModelBuilder.h"
 #include "project/RunProject.h"
+#include "solve/Factorization.h"
 #include "solve/PetscStrategy.h"
 #include "solve/SolverStrategy.h"
 
@@ -36,7 +40,8 @@ class StderrProgress final : public AnalysisObserver {
   void on_cutback(int increment, const std::string& cause) override {
     say("increment " + std::to_string(increment) + " cut back (step halved): " + cause);
   }
-  bool cancel_requested() const override { return InterruptScope::requested(); }
+  bool cancel_requested() const override { return interrupt_ && interrupt_->requested(); }
+  void listen(const InterruptScope* interrupt) { interrupt_ = interrupt; }
 
  private:
   void say(const std::string& what) const {
@@ -44,6 +49,7 @@ class StderrProgress final : public AnalysisObserver {
   }
   bool quiet_;
   Stopwatch clock_;
+  const InterruptScope* interrupt_ = nullptr;
 };
 
 int invalid(const std::string& message) {
@@ -51,30 +57,45 @@ int invalid(const std::string& message) {
   return 2;
 }
 
-/// The analysis, its failure to start an error status; a petsc run cannot be cancelled (its ranks would stop at
-/// different iterations and wait for each other in PETSc).
+/// A run that ended in `error` before it had results.
+Results failed(const std::string& message, StderrProgress& progress) {
+  progress.listen(nullptr);
+  Results r;
+  r.status = {Status::error, Reason::none, message};
+  return r;
+}
+
+/// The analysis, its failure to start (or to get memory) an error status; a petsc run cannot be cancelled (its ranks
+/// would stop at different iterations and wait for each other in PETSc).
 Results analyse(const RunConfig& config, const Model& model, StderrProgress& progress) {
   try {
     std::optional<InterruptScope> interrupt;
     if (config.solver_mode != "petsc") interrupt.emplace();
-    return run_project(config, model, &progress);
+    progress.listen(interrupt ? &*interrupt : nullptr);
+    Results results = run_project(config, model, &progress);
+    progress.listen(nullptr);
+    return results;
   } catch (const AnalysisError& e) {
-    Results failed;
-    failed.status = {Status::error, Reason::none, e.what()};
-    return failed;
+    return failed(e.what(), progress);
+  } catch (const OutOfMemory& e) {
+    return failed(e.what(), progress);
+  } catch (const std::bad_alloc&) {
+    return failed("out of memory: an allocation failed (" + gigabytes(memory_left_bytes()) + " left to this run by " +
+                      memory_left_source() + ") — a coarser mesh, or a machine with more memory",
+                  progress);
   }
 }
 
 /// What the run says on stderr as it ends: its process's report, its status or where the results went.
-int report(const Project& project, const Results& results, const RunInfo& info, const std::filesystem::path& dir,
-           bool quiet) {
+int report(const Project& project, const Results& results, const RunStatus& ended, const RunInfo& info,
+           const std::filesystem::path& dir, bool quiet) {
   const auto summary = (dir / "summary.json").string();
   if (!quiet && results.process)  // a pass that stopped still says what it measured up to there
     for (const std::string& line : results.process->report) std::cerr << "rollsim: " << line << "\n";
-  if (!results.status.ok()) {
-    std::cerr << "rollsim: " << to_string(results.status.status) << ": " << results.status.message
-              << " (summary written to " << summary << ")\n";
-    return exit_code(results.status.status);
+  if (!ended.ok()) {
+    std::cerr << "rollsim: " << to_string(ended.status) << ": " << ended.message << " (summary written to " << summary
+              << ")\n";
+    return exit_code(ended.status);
   }
   if (!quiet)
     std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s%s, %.3f s; results in %s/\n", project.name().c_str(),
@@ -82,6 +103,42 @@ int report(const Project& project, const Results& results, const RunInfo& info, 
                  dir.string().c_str());
   std::cout << summary << "\n";
   return 0;
+}
+
+/// What the results will take on disk at least: result.vtu and, when every increment is written, one VTU each.
+double output_bytes(const Model& model, const RunConfig& config) {
+  if (!config.output.vtu) return 0;
+  const double files = 1 + (config.output.all_increments ? config.steps.increments : 0);
+  return files * vtu_bytes(model, config.output.fields);
+}
+
+/// The run's files through the run writer, Ctrl-C meaning "stop after this file"; then the report.
+int write_results(const Project& project, const RunConfig& config, const Model& model, Results& results,
+                  const std::filesystem::path& dir, const nlohmann::json& stamp, const RunOptions& o,
+                  const Stopwatch& wall, StderrProgress& progress) {
+  RunInfo info;
+  info.project = project.name();
+  info.mode = results.auto_choice ? results.auto_choice->mode : config.solver_mode;
+  info.config = to_json(config);
+  info.blas = blas_description();
+  info.fields = config.output.fields;
+  info.run = stamp;
+  if (results.solver.factor_flops_total > 0) {  // the yardstick of factor_gflops, after the analysis: ~10 ms
+    const DgemmPeak peak = measure_dgemm_peak(config.solver.threads, 256);
+    info.dgemm_peak_gflops = peak.gflops, info.peak_probe_s = peak.seconds;
+  }
+  const VtkFieldWriter fields(config.output.compression);
+  const charts::CairoChartSink charts;
+  const InterruptScope interrupt(InterruptScope::Phase::writing);
+  progress.on_stage("write results");  // from here a signal ends the writing between two files
+  try {
+    results.timing.total_s = wall.seconds();
+    const RunStatus ended =
+        write_run(dir, model, results, info, config.output, {&fields, &charts, [&] { return interrupt.requested(); }});
+    return report(project, results, ended, info, dir, o.quiet);
+  } catch (const WriteError& e) {
+    return invalid("cannot write the results into " + dir.string() + ": " + e.what());
+  }
 }
 
 }  // namespace
@@ -113,29 +170,19 @@ int run_command(const RunOptions& o) {
   if (writer)
     for (const auto& w : model.warnings) std::fprintf(stderr, "rollsim: warning: %s\n", w.c_str());
   const auto dir = output_dir(project, o);
-  std::error_code ec;
-  if (writer) std::filesystem::create_directories(dir, ec);
-  if (ec) return invalid("cannot create output directory " + dir.string() + ": " + ec.message());
+  const nlohmann::json stamp = RunStamp{o.command, o.project}.to_json();
+  std::optional<RunFolder> folder;  // the folder is this run's, and writable, before any work
+  try {
+    if (writer) {
+      folder.emplace(dir, stamp, process_outputs());
+      check_free_space(dir, output_bytes(model, config));
+    }
+  } catch (const FolderError& e) {
+    return invalid(e.what());
+  }
   Results results = analyse(config, model, progress);
   if (!writer) return exit_code(results.status.status);  // the other ranks of a petsc run: rank 0 writes
-  RunInfo info{project.name(), results.auto_choice ? results.auto_choice->mode : config.solver_mode, to_json(config),
-               blas_description()};
-  info.fields = config.output.fields;
-  if (results.solver.factor_flops_total > 0) {  // the yardstick of factor_gflops, after the analysis: ~10 ms
-    const DgemmPeak peak = measure_dgemm_peak(config.solver.threads, 256);
-    info.dgemm_peak_gflops = peak.gflops, info.peak_probe_s = peak.seconds;
-  }
-  progress.on_stage("write results");
-  const VtkFieldWriter fields;
-  const charts::CairoChartSink charts;
-  try {
-    clear_run_outputs(dir, process_outputs());  // the folder holds this run only
-    results.timing.total_s = wall.seconds();
-    write_run(dir, model, results, info, config.output, {&fields, &charts});
-  } catch (const std::exception& e) {
-    return invalid("cannot write the results into " + dir.string() + ": " + e.what());
-  }
-  return report(project, results, info, dir, o.quiet);
+  return write_results(project, config, model, results, dir, stamp, o, wall, progress);
 }
 
 }  // namespace rollsim::app

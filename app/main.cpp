@@ -18,6 +18,16 @@ int rollsim::app::gui_command(GuiOptions) {
 #endif
 
 namespace {
+/// `word` as a shell would need it typed again: quoted when it holds anything but plain characters.
+std::string shell_word(const std::string& word) {
+  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                                              "-_./=:,+@%") == std::string::npos)
+    return word;
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 /// The flags the project schema marks (Field::flag), `--set PATH=VALUE` and `--partition`: each becomes an override
 /// of the project, checked by its validation.
 void add_project_flags(CLI::App& cmd, rollsim::Overrides& overrides) {
@@ -61,6 +71,7 @@ int main(int argc, char** argv) {
   cli.add_flag("--version", version, "print the version and the BLAS in use");
 
   RunOptions run;
+  for (int i = 0; i < argc; ++i) run.command += (i ? " " : "") + shell_word(argv[i]);
   auto* cmd_run = cli.add_subcommand("run", "solve a project and write summary.json and result.vtu");
   cmd_run->add_option("project", run.project, "project file (JSON)")->required();
   cmd_run->add_option("--out", run.out, "output directory (default: the project's output.dir or results/<name>)");

@@ -4,7 +4,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
-  nlohmann-json3-dev libcli11-dev libgtest-dev
+  nlohmann-json3-dev libcli11-dev libgtest-dev libssl-dev
   libcairo2-dev qtbase5-dev libqt5charts5-dev libvtk9-dev libvtk9-qt-dev libopenmpi-dev openmpi-bin
   libpetsc-real-dev
   xvfb xauth libgl1-mesa-dri

@@ -13,7 +13,8 @@ std::string blas_description() {
   using Core = char* (*)();
   auto config = reinterpret_cast<Config>(dlsym(RTLD_DEFAULT, "openblas_get_config"));
   if (!config) return "reference BLAS (not OpenBLAS: expect slow factorizations)";
-  std::string s = std::string("OpenBLAS ") + config();
+  std::string s = config();  // "OpenBLAS 0.3.21 NO_LAPACKE DYNAMIC_ARCH ..."
+  if (s.rfind("OpenBLAS", 0) != 0) s = "OpenBLAS " + s;
   if (auto core = reinterpret_cast<Core>(dlsym(RTLD_DEFAULT, "openblas_get_corename")))
     s += " core=" + std::string(core());
   return s;

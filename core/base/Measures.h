@@ -63,8 +63,19 @@ struct ChartRequest {
 
 /// What a process reports of a run: tables (the first per increment), the charts, its section of summary.json and
 /// the lines a front end shows when the run ends.
+/// The process's own time axis for the result files (ParaView's time): its value at load factor λ is
+/// λ · per_load_factor — a rolling pass's roll travel [length]. Unknown (0): the load factor is the time.
+struct ProcessClock {
+  std::string name;  // "travel"
+  std::string unit;  // "length"
+  double per_load_factor = 0;
+  bool known() const { return per_load_factor > 0; }
+  double at(double load_factor) const { return known() ? load_factor * per_load_factor : load_factor; }
+};
+
 struct ProcessResults {
   std::string process;  // the registry name, the key of summary.json's results.<process>
+  ProcessClock clock;   // the time of the increments' result files
   std::vector<MeasureTable> tables;
   std::vector<ChartRequest> charts;
   nlohmann::json summary;           // results.<process>: steady values, units, closed forms

@@ -12,6 +12,7 @@ struct OutputConfig {
   bool vtu = false;                 // write result.vtu
   bool all_increments = false;      // and results.pvd with one VTU per increment (output.increments: all)
   std::vector<std::string> fields;  // output.fields as given (`all`, or names; empty: every one)
+  std::string compression = "lz4";  // output.compression of the VTU files: lz4, zlib or none
 };
 
 }  // namespace rollsim

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "material/Material.h"
+#include "mesh/ElementQuality.h"
 
 namespace rollsim {
 
@@ -37,7 +38,16 @@ void element_von_mises(const Model&, size_t, const BodyResults& r, int e, double
 void plastic_strain(const Model&, size_t, const BodyResults& r, int e, double* out) {
   out[0] = static_cast<size_t>(e) < r.plastic_strain.size() ? r.plastic_strain[e] : 0.0;
 }
+void jacobian_ratio(const Model& m, size_t b, const BodyResults& r, int e, double* out) {
+  const Mesh& mesh = m.bodies[b].mesh;
+  const bool displaced = r.displacement.size() == static_cast<Eigen::Index>(mesh.num_nodes()) * mesh.dim;
+  out[0] = displaced ? corner_jacobian_ratio(mesh, r.displacement.data(), e) : 1.0;
+}
 bool has_contact(const Model& m) { return !m.contacts.empty(); }
+bool has_finite_strain(const Model& m) {
+  return std::any_of(m.bodies.begin(), m.bodies.end(),
+                     [](const Body& b) { return b.kinematics == Kinematics::Finite; });
+}
 bool has_plasticity(const Model& m) {
   return std::any_of(m.bodies.begin(), m.bodies.end(), [](const Body& b) { return b.material.plastic(); });
 }
@@ -58,6 +68,8 @@ const std::vector<OutputField>& output_fields() {
       {"von_mises", "von Mises stress (element mean)", "von Mises", "stress", L::Cell, 1, false, {}, element_von_mises},
       {"plastic_strain", "equivalent plastic strain (element mean)", "plastic strain", "-", L::Cell, 1, true,
        has_plasticity, plastic_strain},
+      {"jacobian_ratio", "element quality: smallest corner Jacobian, deformed / undeformed (≤ 0: folded)", "J ratio",
+       "-", L::Cell, 1, true, has_finite_strain, jacobian_ratio},
   };
   return fields;
 }
@@ -77,5 +89,15 @@ bool is_selected(const OutputField& field, const std::vector<std::string>& names
 }
 
 const char* to_string(FieldLocation location) { return location == FieldLocation::Node ? "node" : "cell"; }
+
+double vtu_bytes(const Model& model, const std::vector<std::string>& selected) {
+  const double nodes = static_cast<double>(model.total_nodes()), cells = static_cast<double>(model.total_elements());
+  const int corners = model.dim == 2 ? 4 : 8;
+  double values = nodes * 3 + cells * (corners + 1);  // points; connectivity and offsets (types: a byte each)
+  for (const OutputField& f : output_fields())
+    if (is_present(f, model) && is_selected(f, selected))
+      values += f.components * (f.location == FieldLocation::Node ? nodes : cells);
+  return values * 8 + cells;
+}
 
 }  // namespace rollsim

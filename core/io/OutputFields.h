@@ -43,6 +43,10 @@ inline constexpr const char* kAllFields = "all";
 /// `all` is, or there are none.
 bool is_selected(const OutputField& field, const std::vector<std::string>& names);
 
+/// Bytes of one VTU of `model` holding the selected fields, unencoded (points, cells and the arrays, 8 bytes a value):
+/// a lower bound of what the writer puts on disk, for checking free space before a run.
+double vtu_bytes(const Model& model, const std::vector<std::string>& selected);
+
 /// "node" or "cell".
 const char* to_string(FieldLocation location);
 

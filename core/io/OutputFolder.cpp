@@ -1,8 +1,11 @@
 #include "io/OutputFolder.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "io/AtomicFile.h"
 
 namespace rollsim {
 
@@ -17,7 +20,8 @@ bool is_result_increment(const std::string& name) {  // results_0001.vtu
 }
 
 bool is_final_output(const std::string& name, const std::vector<std::string>& others) {
-  static const char* const names[] = {"summary.json", "result.vtu", "results.pvd", "convergence.csv"};
+  static const char* const names[] = {"summary.json", "result.vtu", "results.pvd", "convergence.csv",
+                                      "last_converged.vtu"};
   return std::find(std::begin(names), std::end(names), name) != std::end(names) ||
          std::find(others.begin(), others.end(), name) != others.end() || is_result_increment(name);
 }
@@ -25,10 +29,8 @@ bool is_final_output(const std::string& name, const std::vector<std::string>& ot
 
 bool is_run_output(const std::filesystem::path& path, const std::vector<std::string>& others) {
   const std::string name = path.filename().string();
-  const std::string tmp = ".tmp";
-  if (name.size() > tmp.size() + 1 && name[0] == '.' && name.compare(name.size() - tmp.size(), tmp.size(), tmp) == 0)
-    return is_final_output(name.substr(1, name.size() - tmp.size() - 1), others);
-  return is_final_output(name, others);
+  const std::optional<std::string> temporary = temporary_for(name);
+  return is_final_output(temporary ? *temporary : name, others);
 }
 
 void clear_run_outputs(const std::filesystem::path& dir, const std::vector<std::string>& others) {

@@ -9,7 +9,8 @@
 
 namespace rollsim {
 
-/// True for the names a run writes (above, `others` among them), results_<digits>.vtu and `.<any of those>.tmp`.
+/// True for the names a run writes (above, `others` among them), results_<digits>.vtu and the temporaries of
+/// write_file_atomically for any of those.
 bool is_run_output(const std::filesystem::path& name, const std::vector<std::string>& others = {});
 
 /// Removes the run outputs (is_run_output) directly inside `dir`; throws std::runtime_error naming a file that

@@ -101,6 +101,7 @@ json increments_section(const Model& m, const Results& r) {
                   {"active_set_iterations", inc.active_set_iterations},
                   {"cg_iterations", inc.cg_iterations},
                   {"contact", contact}};
+    if (r.process && r.process->clock.known()) entry[r.process->clock.name] = r.process->clock.at(inc.load_factor);
     if (!r.update_policy.empty()) {  // the Newton driver
       entry["newton_iterations"] = inc.newton_iterations;
       entry["cutbacks"] = inc.cutbacks;
@@ -121,6 +122,8 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
             {"units", "consistent, as in the project file"}};
   if (r.status.reason != Reason::none) s["reason"] = to_string(r.status.reason);
   if (!r.status.message.empty()) s["message"] = r.status.message;
+  if (!run.run.is_null()) s["run"] = run.run;
+  if (!model.warnings.empty()) s["warnings"] = model.warnings;
   s["model"] = model_section(model, r);
   const json options = run.config.is_object() ? run.config.value("solver", json::object()) : json::object();
   s["solver"] = {

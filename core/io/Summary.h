@@ -18,6 +18,7 @@ struct RunInfo {
   // what measuring it cost
   double dgemm_peak_gflops = 0, peak_probe_s = 0;
   std::vector<std::string> fields = {};  // output.fields: the arrays result.vtu holds (empty: every one)
+  nlohmann::json run = {};               // which run made the results (io/RunFolder's RunStamp): echoed as `run`
 };
 
 nlohmann::json make_summary(const Model& model, const Results& results, const RunInfo& run);

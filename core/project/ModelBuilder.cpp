@@ -5,6 +5,7 @@
 #include <limits>
 #include <set>
 
+#include "model/Conditioning.h"
 #include "model/RigidModes.h"
 #include "partition/PartitionCheck.h"
 #include "partition/PartitionSpec.h"
@@ -255,6 +256,13 @@ void check_analysis_type(const json& d, std::vector<Issue>& issues) {
     issues.push_back({"analysis.type", why + ": it needs the newton analysis"});
 }
 
+/// Whether the project's solver factors each body whole (every mode but `feti` and `petsc`, which factor
+/// subdomains or hand them to PETSc).
+bool factors_bodies_whole(const json& d) {
+  const std::string mode = d.contains("solver") ? d["solver"].value("mode", "direct") : "direct";
+  return mode != "feti" && mode != "petsc";
+}
+
 void check_references(const Project& project, std::vector<Issue>& issues) {
   if (const Process* process = process_of(project.data)) process->check(project.data.at("process"), issues);
   if (!issues.empty()) return;  // the generated bodies would repeat the process's problem under their own paths
@@ -285,7 +293,7 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
                                     " elements, more than this build accepts (" +
                                     std::to_string(static_cast<long long>(kMaxElements)) + ")"});
   else
-    check_model_limits(elements, dim, "bodies", issues);
+    check_model_limits(elements, dim, "bodies", issues, factors_bodies_whole(d));
   if (!issues.empty()) return;
   for (size_t i = 0; i < d.at("boundary_conditions").size(); ++i)
     check_condition(d["boundary_conditions"][i], at("boundary_conditions", i), d.at("bodies"), dim, issues);
@@ -529,6 +537,7 @@ Model build_model(const Project& project) {
     }
     model.probes.push_back(std::move(probe));
   }
+  for (std::string& w : conditioning_warnings(model)) model.warnings.push_back(std::move(w));
   return model;
 }
 

@@ -1,11 +1,11 @@
 #include "project/ModelLimits.h"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string>
+
+#include "base/Memory.h"
 
 namespace rollsim {
 
@@ -21,17 +21,13 @@ StiffnessEstimate estimate_stiffness(double elements, int dim) {
   return e;
 }
 
-double physical_memory_bytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && size > 0 ? static_cast<double>(pages) * static_cast<double>(size) : 0.0;
+double estimate_factor_nonzeros(double elements, int dim) {
+  const double dofs = elements * dim;  // structured: about one node per element
+  if (dofs < 2) return dofs;
+  return dim == 3 ? 16 * std::pow(dofs, 4.0 / 3.0) : 4.5 * dofs * std::log2(dofs);
 }
 
 namespace {
-std::string gigabytes(double bytes) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.1f GB", bytes / 1e9);
-  return s;
-}
 std::string count(double v) {
   char s[32];
   std::snprintf(s, sizeof s, "%.3g", v);
@@ -39,7 +35,8 @@ std::string count(double v) {
 }
 }  // namespace
 
-void check_model_limits(double elements, int dim, const std::string& path, std::vector<Issue>& issues) {
+void check_model_limits(double elements, int dim, const std::string& path, std::vector<Issue>& issues,
+                        bool factored_whole) {
   const StiffnessEstimate e = estimate_stiffness(elements, dim);
   const double index_limit = std::numeric_limits<int>::max();
   if (e.nonzeros > index_limit) {
@@ -50,10 +47,21 @@ void check_model_limits(double elements, int dim, const std::string& path, std::
     return;
   }
   const double memory = physical_memory_bytes();
-  if (memory > 0 && e.bytes > memory)
+  if (memory > 0 && e.bytes > memory) {
     issues.push_back({path, count(elements) + " elements need about " + gigabytes(e.bytes) +
                                 " to assemble the stiffness alone (factoring it needs more), and this machine has " +
                                 gigabytes(memory)});
+    return;
+  }
+  const double factor = estimate_factor_nonzeros(elements, dim) * sizeof(double);
+  if (factored_whole && memory > 0 && e.bytes + factor > memory)
+    issues.push_back({path, count(elements) + " elements need about " + gigabytes(e.bytes + factor) +
+                                " to assemble and factor the stiffness (its Cholesky factor about " +
+                                count(factor / sizeof(double)) +
+                                " entries, a nested-dissection estimate), and this "
+                                "machine has " +
+                                gigabytes(memory) +
+                                ": a coarser mesh, or `feti` with subdomains (each factored on its own)"});
 }
 
 }  // namespace rollsim

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "project/DuplicateKeys.h"
 #include "project/ModelBuilder.h"
 #include "project/ProjectSchema.h"
 
@@ -99,6 +100,7 @@ Project parse_project(const std::string& text, const std::string& source, const 
     throw ProjectError(source, {{"", std::string("not valid JSON: ") + e.what()}});
   }
   if (!p.data.is_object()) throw ProjectError(source, {{"", "the top level must be a JSON object"}});
+  if (std::vector<Issue> twice = duplicate_keys(text); !twice.empty()) throw ProjectError(source, twice);
   if (std::vector<Issue> asked = apply_overrides(p.data, overrides); !asked.empty()) throw ProjectError(source, asked);
   // the dimension is needed to check vectors, so it is checked first
   const auto d = p.data.find("dimension");

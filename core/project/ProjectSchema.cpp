@@ -386,6 +386,9 @@ const ObjectSchema kOutput{"output",
                             choice("increments", {"all", "last"}, "all",
                                    "with analysis.increments > 1: all — results.pvd and one VTU per increment beside "
                                    "result.vtu; last — result.vtu only"),
+                            choice("compression", {"lz4", "zlib", "none"}, "lz4",
+                                   "how the VTU files' binary arrays are compressed (ParaView reads each): lz4 (fast, "
+                                   "about half the size), zlib (smaller, slower to write), none"),
                             [] {
                               Field f;
                               f.name = "fields";

@@ -33,6 +33,7 @@ RunConfig read_run_config(const json& p) {
   c.output.vtu = out.at("vtu").get<bool>();
   c.output.all_increments = out.at("increments").get<std::string>() == "all";
   c.output.fields = out.at("fields").get<std::vector<std::string>>();
+  c.output.compression = out.at("compression").get<std::string>();
   c.process = process_of(p);
   if (c.process) c.process_section = p.at("process");
   return c;

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/Memory.h"
 #include "base/Stopwatch.h"
 #include "solve/CholmodView.h"
 #include "solve/NodeOrdering.h"
@@ -92,6 +93,8 @@ void CholmodFactorization::analyze(const SparseMatrix& A) {
       factor_ = cholmod_analyze(&s, &common_);
     }
   }
+  if (!factor_ && common_.status == CHOLMOD_OUT_OF_MEMORY)
+    throw OutOfMemory("out of memory in CHOLMOD's analysis of a matrix of " + std::to_string(A.rows()) + " rows", 0);
   if (!factor_) throw std::runtime_error("CHOLMOD analysis failed (status " + std::to_string(common_.status) + ")");
   const int ord = common_.method[common_.selected].ordering;
   stats_.ordering = ord == CHOLMOD_GIVEN     ? "METIS-nodes"
@@ -104,7 +107,10 @@ void CholmodFactorization::analyze(const SparseMatrix& A) {
   stats_.flops = common_.fl;
   stats_.nnz_factor = common_.lnz;
   stats_.analyze_s += t.seconds();
+  check_factor_fits(factor_bytes(), A.rows(), "the Cholesky factor (CHOLMOD's symbolic analysis)");
 }
+
+double CholmodFactorization::factor_bytes() const { return common_.lnz * (sizeof(double) + sizeof(int) / 4.0); }
 
 void CholmodFactorization::factorize(const SparseMatrix& A) {
   if (!factor_) analyze(A);
@@ -119,7 +125,12 @@ void CholmodFactorization::factorize(const SparseMatrix& A) {
     const int col = (perm && factor_->minor < factor_->n) ? perm[factor_->minor] : -1;
     throw NotPositiveDefinite("matrix is not positive definite", col);
   }
-  if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorization failed");
+  if (common_.status == CHOLMOD_OUT_OF_MEMORY)
+    throw OutOfMemory("out of memory: the Cholesky factor of " + std::to_string(A.rows()) + " rows needs at least " +
+                          gigabytes(factor_bytes()) + " (CHOLMOD could not allocate it)",
+                      factor_bytes());
+  if (common_.status < CHOLMOD_OK)
+    throw std::runtime_error("CHOLMOD factorization failed (status " + std::to_string(common_.status) + ")");
   const auto [ratio, col] = smallest_pivot_ratio(*factor_, A);
   stats_.min_pivot_ratio = ratio;
   if (!(ratio > kMinPivotRatio)) {

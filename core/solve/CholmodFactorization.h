@@ -51,6 +51,7 @@ class CholmodFactorization final : public Factorization {
 
  private:
   void check_factored() const;
+  double factor_bytes() const;  // of the analysed factor: its values and (supernodal, a fraction) indices
   /// cholmod_solve2 of `system` (CHOLMOD_A, CHOLMOD_L, …) with the columns of B: the result, in X_
   const double* solve_block(int system, const Eigen::MatrixXd& B);
   CholmodSettings settings_;

@@ -25,6 +25,18 @@ struct SingularMatrix : std::runtime_error {
   int column;
 };
 
+/// Thrown when a factorization cannot have the memory it needs: refused before the numeric factorization when the
+/// symbolic analysis's size exceeds what this process can still take (base/Memory.h), or reported by the library.
+/// `bytes`: what it asked for (0: unknown).
+struct OutOfMemory : std::runtime_error {
+  OutOfMemory(const std::string& what, double asked) : std::runtime_error(what), bytes(asked) {}
+  double bytes;
+};
+
+/// Throws OutOfMemory when a factor of `bytes` (of a matrix of `rows` rows; `what`: which factor, for the message)
+/// cannot fit in what this process can still take.
+void check_factor_fits(double bytes, long rows, const std::string& what);
+
 class Factorization {
  public:
   virtual ~Factorization() = default;

@@ -68,6 +68,7 @@ void SkylineFactorization::analyze(const SparseMatrix& A) {
   diag_.resize(static_cast<size_t>(n_));
   long next = 0;
   for (int j = 0; j < n_; ++j) diag_[j] = (next += j - first_[j] + 1) - 1;
+  check_factor_fits(static_cast<double>(next) * sizeof(double), n_, "the skyline profile");
   a_.assign(static_cast<size_t>(next), 0.0);
   stats_.ordering = keep_given ? "natural (mesh numbering, smaller profile than RCM)" : "RCM";
   stats_.nnz_factor = static_cast<double>(next);

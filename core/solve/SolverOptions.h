@@ -9,6 +9,7 @@
 #include "base/BoundField.h"
 #include "base/SchemaFields.h"
 #include "base/Words.h"
+#include "solve/PetscOptionsCheck.h"
 
 namespace rollsim {
 
@@ -107,11 +108,17 @@ inline const std::vector<BoundField<SolverOptions>>& solver_option_fields() {
                     "subdomain per rank"),
                 "petsc-method"),
            &S::petsc_method),
-      bind(flag(str("petsc_options",
-                    "`petsc`: options passed through to PETSc (e.g. \"-ksp_monitor -pc_bddc_use_faces\"); an option "
-                    "PETSc does not use is refused"),
-                "petsc-options"),
-           &S::petsc_options),
+      bind(
+          [] {
+            Field f = flag(str("petsc_options",
+                               "`petsc`: options passed through to PETSc (e.g. \"-ksp_monitor -pc_bddc_use_faces\"); "
+                               "an option PETSc does not use is refused, and so is one that names a file or starts a "
+                               "program (`-ksp_monitor ascii:FILE`, `-log_view :FILE`, `-options_file`, debuggers)"),
+                           "petsc-options");
+            f.check = [](const nlohmann::json& v) { return petsc_options_problem(v.get<std::string>()); };
+            return f;
+          }(),
+          &S::petsc_options),
       bind(flag(below(positive("cg_tolerance", "-",
                                "relative residual tolerance of the interface CG (mixed/feti; petsc: its Krylov "
                                "solver's rtol)"),

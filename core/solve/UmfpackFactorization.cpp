@@ -2,6 +2,7 @@
 
 #include <umfpack.h>
 
+#include "base/Memory.h"
 #include "base/Stopwatch.h"
 
 namespace rollsim {
@@ -32,9 +33,13 @@ void UmfpackFactorization::analyze(const SparseMatrix& A) {
   double info[UMFPACK_INFO];
   const int status = umfpack_di_symbolic(static_cast<int>(A_.rows()), static_cast<int>(A_.cols()), A_.outerIndexPtr(),
                                          A_.innerIndexPtr(), A_.valuePtr(), &symbolic_, control_, info);
+  if (status == UMFPACK_ERROR_out_of_memory)
+    throw OutOfMemory("out of memory in UMFPACK's analysis of a matrix of " + std::to_string(A_.rows()) + " rows", 0);
   if (status != UMFPACK_OK) throw std::runtime_error("UMFPACK analysis failed (status " + std::to_string(status) + ")");
   stats_.ordering = "AMD (UMFPACK symmetric strategy)";
   stats_.analyze_s += t.seconds();
+  factor_bytes_ = info[UMFPACK_NUMERIC_SIZE_ESTIMATE] * info[UMFPACK_SIZE_OF_UNIT];
+  check_factor_fits(factor_bytes_, A_.rows(), "the LU factors (UMFPACK's symbolic analysis)");
 }
 
 void UmfpackFactorization::factorize(const SparseMatrix& A) {
@@ -49,6 +54,10 @@ void UmfpackFactorization::factorize(const SparseMatrix& A) {
   stats_.factorize_s += t.seconds();
   ++stats_.factorizations;
   if (status == UMFPACK_WARNING_singular_matrix) throw SingularMatrix("matrix is singular", -1);
+  if (status == UMFPACK_ERROR_out_of_memory)
+    throw OutOfMemory("out of memory: the LU factors of " + std::to_string(A_.rows()) + " rows need at least " +
+                          gigabytes(factor_bytes_) + " (UMFPACK could not allocate them)",
+                      factor_bytes_);
   if (status != UMFPACK_OK)
     throw std::runtime_error("UMFPACK factorization failed (status " + std::to_string(status) + ")");
   stats_.nnz_factor = info[UMFPACK_LNZ] + info[UMFPACK_UNZ];

@@ -33,6 +33,7 @@ class UmfpackFactorization final : public Factorization {
   double control_[20]{};
   FactorStats stats_;
   double rcond_ = 0;
+  double factor_bytes_ = 0;  // the symbolic analysis's estimate of the numeric factors [bytes]
   long refinement_steps_ = 0;
 };
 

@@ -98,16 +98,26 @@ RunResult run_program(const std::string& program, const std::vector<std::string>
 
 RunResult run_program_interrupted(const std::string& program, const std::vector<std::string>& args,
                                   const std::string& marker, int timeout_s) {
+  return run_program_on_marker(
+      program, args, marker, [](int pid) { kill(pid, SIGINT); }, timeout_s);
+}
+
+RunResult run_program_on_marker(const std::string& program, const std::vector<std::string>& args,
+                                const std::string& marker, const std::function<void(int pid)>& on_marker,
+                                int timeout_s) {
   const std::string dir = make_temp_dir("io");
   const std::string out = dir + "/stdout", err = dir + "/stderr";
   RunResult r;
   const auto start = Clock::now();
   const pid_t pid = spawn(program, args, out, err);
-  bool sent = marker.empty();
-  const auto interrupt_on_marker = [&] {
-    if (!sent && read_text(err).find(marker) != std::string::npos) sent = kill(pid, SIGINT) == 0;
+  bool done = marker.empty();
+  const auto act_on_marker = [&] {
+    if (!done && read_text(err).find(marker) != std::string::npos) {
+      done = true;
+      on_marker(pid);
+    }
   };
-  const int status = wait_with_timeout(pid, timeout_s, r.timed_out, interrupt_on_marker);
+  const int status = wait_with_timeout(pid, timeout_s, r.timed_out, act_on_marker);
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!r.timed_out && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);

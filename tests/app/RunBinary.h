@@ -1,5 +1,6 @@
 #pragma once
 // Runs the real rollsim binary with arguments, capturing exit status, output and time; kills it after a timeout.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,12 @@ RunResult run_program(const std::string& program, const std::vector<std::string>
 /// The same, sending SIGINT (Ctrl-C) once `marker` appears in the program's stderr (never if empty).
 RunResult run_program_interrupted(const std::string& program, const std::vector<std::string>& args,
                                   const std::string& marker, int timeout_s = 60);
+
+/// The same, calling `on_marker` (with the program's pid) once `marker` appears in its stderr: a signal of one's
+/// choice, or a second run started while the first computes.
+RunResult run_program_on_marker(const std::string& program, const std::vector<std::string>& args,
+                                const std::string& marker, const std::function<void(int pid)>& on_marker,
+                                int timeout_s = 60);
 
 /// A fresh empty directory under the system temp dir.
 std::string make_temp_dir(const std::string& tag);

@@ -386,6 +386,27 @@ std::vector<Case> value_cases() {
           "must be greater than start_angle"),
       set("grading out of range", "/bodies/0/mesh", with(kPlate, "grading", 3), "bodies[0].mesh.grading", "in [1, 2]"),
       set("cg tolerance 1", "/solver/cg_tolerance", 1, "solver.cg_tolerance", "in (0, 1)"),
+      // a project may not make PETSc write files (the reported: -ksp_monitor ascii:PATH replaced PATH)
+      set("petsc monitor into a file", "/solver/petsc_options", "-ksp_monitor ascii:/tmp/rollsim-victim",
+          "solver.petsc_options", "names the file '/tmp/rollsim-victim': a project may not make PETSc open files"),
+      set("petsc log into a file", "/solver/petsc_options", "-log_view :/tmp/rollsim-victim", "solver.petsc_options",
+          "names the file '/tmp/rollsim-victim'"),
+      // a key given twice: JSON keeps the last silently
+      subst("key given twice", "\"E\": 1000, \"nu\": 0.3}", "\"E\": 1000, \"nu\": 0.3, \"E\": 10}", "materials[0].E",
+            "is given twice in one object"),
+      // the rolling pass's Poisson's ratios (0.5 crashed the slab's update and made the roll's residual NaN)
+      edit(
+          "rolling slab nu 0.5",
+          [](json& j) {
+            j = {{"dimension", 2}, {"process", {{"type", "rolling"}, {"slab_nu", 0.5}}}};
+          },
+          "process.slab_nu", "must be a finite number in (-1, 0.49], got 0.5"),
+      edit(
+          "rolling roll nu 0.5",
+          [](json& j) {
+            j = {{"dimension", 2}, {"process", {{"type", "rolling"}, {"roll_nu", 0.5}}}};
+          },
+          "process.roll_nu", "in (-1, 0.49]"),
       bad_round_bar("round bar taper longer than the bar", "taper_length", 5, "must not exceed length"),
       bad_round_bar("round bar neck too deep", "neck_ratio", 0.3, "in [0.5, 1]"),
       bad_round_bar("round bar neck wider than the bar", "neck_ratio", 1.1, "in [0.5, 1]"),
@@ -530,7 +551,11 @@ TEST(BadInputOutput, UnusableOutputDirectoryIsRefused) {
   r = run_rollsim({"run", file, "--out", dir + "/out", "--quiet"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(r.signal, 0);
-  EXPECT_NE(r.err.find("rollsim: error: cannot write the results into " + dir + "/out"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("rollsim: error: cannot write into the output folder " + dir +
+                       "/out (checked before the "
+                       "analysis)"),
+            std::string::npos)
+      << r.err;
   fs::remove_all(dir);
 }
 

@@ -110,3 +110,49 @@ TEST(InputBounds, EmptySubdomainsAreOneMessage) {
                        "2, 3, 4: 4 in all)"))
       << r.err;
 }
+
+// The reported case: a 120³ block passed `check` (the estimate covered assembly only) — its Cholesky factor alone
+// needs about 120 GB; a 30³ block's (0.6 GB) fits.
+TEST(InputBounds, ABodyWhoseFactorCannotFitIsRefusedByCheck) {
+  if (machine_memory_gb() > 150) GTEST_SKIP() << "this machine could factor a 120³ block";
+  json j = sample(ROLLSIM_SOURCE_DIR "/samples/cantilever-3d-16x16x16.json");
+  j["bodies"][0]["mesh"]["nx"] = 120, j["bodies"][0]["mesh"]["ny"] = 120, j["bodies"][0]["mesh"]["nz"] = 120;
+  const RunResult big = expect_refused(j, {}, "120³ hexahedra, direct");
+  EXPECT_TRUE(contains(big.err, "to assemble and factor the stiffness")) << big.err;
+  EXPECT_TRUE(contains(big.err, "`feti` with subdomains")) << big.err;
+  const std::string dir = make_temp_dir("factor-fits"), file = dir + "/p.json";
+  json feti = j;
+  feti["solver"]["mode"] = "feti", feti["bodies"][0]["partition"] = "4x4x4";
+  write_text(file, feti.dump());
+  const RunResult split = run_rollsim({"check", file});
+  EXPECT_EQ(split.exit_code, 0) << "feti factors subdomains, never the whole body: " << split.err;
+  j["bodies"][0]["mesh"]["nx"] = 30, j["bodies"][0]["mesh"]["ny"] = 30, j["bodies"][0]["mesh"]["nz"] = 30;
+  write_text(file, j.dump());
+  const RunResult small = run_rollsim({"check", file});
+  EXPECT_EQ(small.exit_code, 0) << small.err;
+  fs::remove_all(dir);
+}
+
+// The reported case: under an address-space limit a 30³ block with `direct` ended "internal error: CHOLMOD
+// factorization failed" (exit 1). CHOLMOD's symbolic analysis gives the factor's size before it is allocated.
+TEST(InputBounds, AFactorBeyondTheAddressSpaceLimitIsOutOfMemoryWithItsSize) {
+  json j = sample(ROLLSIM_SOURCE_DIR "/samples/cantilever-3d-16x16x16.json");
+  j["bodies"][0]["mesh"]["nx"] = 30, j["bodies"][0]["mesh"]["ny"] = 30, j["bodies"][0]["mesh"]["nz"] = 30;
+  j["probes"] = json::array();
+  const std::string dir = make_temp_dir("oom"), file = dir + "/p.json", out = dir + "/out";
+  write_text(file, j.dump());
+  const RunResult r = run_program("/bin/sh",
+                                  {"-c", "ulimit -v 1000000; exec '" ROLLSIM_BINARY "' run '" + file + "' --out '" +
+                                             out + "' --solver direct --quiet"},
+                                  120);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  const std::string text = read_text(out + "/summary.json");
+  ASSERT_FALSE(text.empty()) << r.err;
+  const json s = json::parse(text);
+  EXPECT_EQ(s.value("status", ""), "error");
+  const std::string m = s.value("message", "");
+  EXPECT_TRUE(contains(m, "out of memory: the Cholesky factor")) << m;
+  EXPECT_TRUE(contains(m, "needs at least 0.")) << m;  // 0.6–0.7 GB
+  EXPECT_TRUE(contains(m, "the address-space limit (ulimit -v)")) << m;
+  fs::remove_all(dir);
+}

@@ -51,6 +51,11 @@ NewtonOutcome run(const json& project, std::vector<std::string> extra = {}) {
 }
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+size_t count(const std::string& text, const std::string& part) {
+  size_t n = 0;
+  for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
 }  // namespace
 
 TEST(NewtonRun, PlasticProjectRunsNewtonAndWritesItsOutputs) {
@@ -78,7 +83,13 @@ TEST(NewtonRun, NoEquilibriumIsDivergedWithExitCode4) {
   EXPECT_TRUE(contains(r.result.err, "diverged: increment")) << r.result.err;
   EXPECT_TRUE(contains(r.summary["message"].get<std::string>(), "2 cut-backs"));
   EXPECT_FALSE(read_text(r.out + "/convergence.csv").empty());
-  EXPECT_TRUE(read_text(r.out + "/result.vtu").empty()) << "no fields of a run that failed";
+  EXPECT_TRUE(read_text(r.out + "/result.vtu").empty()) << "no result of a run that failed";
+  // what it computed before the failure is kept: the last converged increment's fields, the load factor with them
+  ASSERT_FALSE(r.summary["increments"].empty()) << "the case must converge an increment before it diverges";
+  const std::string last = read_text(r.out + "/last_converged.vtu");
+  EXPECT_TRUE(contains(last, "Name=\"load_factor\"")) << last.substr(0, 2000);
+  if (r.summary["increments"].size() > 1)  // and every converged increment, for ParaView to step through
+    EXPECT_EQ(count(read_text(r.out + "/results.pvd"), "<DataSet "), r.summary["increments"].size());
 }
 
 TEST(NewtonRun, BadPlasticityInputIsRefusedWithItsPath) {

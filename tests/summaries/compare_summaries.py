@@ -23,7 +23,8 @@ ROOT = Path(__file__).resolve().parents[2]
 
 # keys whose values measure the machine or the moment, not the computation (compared by presence only)
 MACHINE_KEYS = {"timing", "blas", "dgemm_peak_gflops", "peak_probe_s", "factor_gflops", "factor_peak_fraction",
-                "choice_s", "memory", "peak_memory_mb", "seconds", "wall_s", "cpu_s", "total_s", "time_s"}
+                "choice_s", "memory", "peak_memory_mb", "seconds", "wall_s", "cpu_s", "total_s", "time_s",
+                "run"}  # run: which run made the results (its start, command, pid, host)
 
 
 def cases():

@@ -1,5 +1,7 @@
 // The document behind the window: edits validated as `rollsim run` validates files, the model rebuilt off the
 // GUI thread with its counts, save -> open round trips, and a saved project runs unchanged with `rollsim run`.
+#include <sys/stat.h>
+
 #include <QDir>
 #include <QFile>
 #include <QProcess>
@@ -9,6 +11,7 @@
 
 #include "ProjectDocument.h"
 #include "Resources.h"
+#include "io/AtomicFile.h"
 #include "project/ModelBuilder.h"
 
 using namespace rollsim;
@@ -16,6 +19,12 @@ using namespace rollsim::ui;
 
 namespace {
 const QString kSample = QStringLiteral(ROLLSIM_SOURCE_DIR "/samples/plate-hole-2d.json");
+
+unsigned mode_of(const QString& file) {
+  struct stat s {};
+  ::stat(file.toLocal8Bit().constData(), &s);
+  return s.st_mode & 07777;
+}
 
 QByteArray read(const QString& file) {
   QFile f(file);
@@ -153,6 +162,42 @@ class TestProjectDocument : public QObject {
     QVERIFY_EXCEPTION_THROWN(doc.open(bad), ProjectError);
     QCOMPARE(doc.text(), before);
     QCOMPARE(doc.file(), kSample);
+  }
+
+  // The reported risks of the window's Save (io/AtomicFile): a read-only target was replaced, 0600 widened to 0644,
+  // a symlink replaced by a file, and a planted `.NAME.tmp` symlink followed.
+  void save_keeps_the_target_safe() {
+    QTemporaryDir dir;
+    ProjectDocument doc;
+    doc.open(kSample);
+    const QString file = dir.filePath(QStringLiteral("p.json"));
+    doc.save_as(file);
+    QVERIFY(::chmod(file.toLocal8Bit().constData(), 0600) == 0);
+    QVERIFY(doc.propose("/solver/threads", 2).empty());
+    doc.save_as(file);
+    QCOMPARE(mode_of(file), 0600u);
+
+    const QString link = dir.filePath(QStringLiteral("link.json"));
+    QVERIFY(QFile::link(file, link));
+    QVERIFY(doc.propose("/solver/threads", 3).empty());
+    doc.save_as(link);
+    QVERIFY(QFileInfo(link).isSymLink());
+    QCOMPARE(read(file).toStdString(), doc.text());
+
+    const QByteArray before = read(file);
+    QVERIFY(::chmod(file.toLocal8Bit().constData(), 0444) == 0);
+    QVERIFY(doc.propose("/solver/threads", 4).empty());
+    QVERIFY_EXCEPTION_THROWN(doc.save_as(file), WriteError);
+    QVERIFY(doc.modified());
+    QCOMPARE(read(file), before);
+
+    const QString victim = dir.filePath(QStringLiteral("victim"));
+    QFile v(victim);
+    QVERIFY(v.open(QIODevice::WriteOnly) && v.write("keep me") == 7);
+    v.close();
+    QVERIFY(QFile::link(victim, dir.filePath(QStringLiteral(".q.json.tmp"))));
+    doc.save_as(dir.filePath(QStringLiteral("q.json")));
+    QCOMPARE(read(victim), QByteArray("keep me"));
   }
 };
 

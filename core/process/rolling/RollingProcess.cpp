@@ -19,6 +19,12 @@ Field number(std::string name, std::string unit, double d, double lo, double hi,
   f.min_exclusive = true;
   return f;
 }
+/// Poisson's ratio of a body of the pass. Metals are 0.26–0.35; the bound keeps a margin from 0.5, where the bulk
+/// modulus is infinite (ν = 0.5 crashed the slab's Hencky update and made the roll's residual non-finite): at 0.49
+/// the bulk modulus is 50 times the shear modulus. The slab's plastic flow is isochoric whatever ν (F-bar).
+Field poisson(std::string name, std::string doc) {
+  return number(std::move(name), "-", 0.3, -1, 0.49, std::move(doc) + " (−1 < ν ≤ 0.49; metals 0.26–0.35)");
+}
 Field count(std::string name, int d, std::string doc) {
   return def(schema::count(std::move(name), std::move(doc), 1e5), d);
 }
@@ -79,7 +85,7 @@ const ObjectSchema& rolling_process_schema() {
          f.min_exclusive = false;
          return f;
        }(),
-       number("slab_nu", "-", 0.3, -1, 0.5, "slab Poisson's ratio"),
+       poisson("slab_nu", "slab Poisson's ratio"),
        choice("roll", {"elastic", "rigid"}, "elastic",
               "the roll: elastic (its hub turned, the ring deforms: roll flattening) or rigid (every node of the ring "
               "turned as one body; nothing of the roll is factored: faster, and beside an elastic run a measure of "
@@ -91,7 +97,7 @@ const ObjectSchema& rolling_process_schema() {
                "along the slab's centre line — what the symmetry saves, and a check of it"),
            true),
        number("roll_E", "stress", 2.1e5, 0, 1e12, "roll Young's modulus"),
-       number("roll_nu", "-", 0.3, -1, 0.5, "roll Poisson's ratio"),
+       poisson("roll_nu", "roll Poisson's ratio"),
        choice("friction", {"sticking", "coulomb", "frictionless"}, "sticking",
               "roll–slab friction: sticking (the paper's: a point in contact holds to the roll and never slips; "
               "the friction stress is limited by the slab's surface layer yielding in shear at k = σ_0/√3, as the "

@@ -148,6 +148,7 @@ std::vector<std::string> rolling_report(const RollingPass& pass, int dim, const 
 ProcessResults rolling_results(const RollingPass& pass, int dim, const RollingResults& r) {
   ProcessResults p;
   p.process = "rolling";
+  p.clock = {"travel", "length", pass.travel};
   p.tables = {history_table(r, dim), profile_table(r)};
   p.charts = {history_chart(pass, dim, r, true), profile_chart()};
   p.summary = rolling_summary(pass, dim, r);

@@ -26,9 +26,10 @@ void touch(const fs::path& p) { std::ofstream(p) << "x"; }
 }  // namespace
 
 TEST(OutputFolder, RecognisesWhatARunWrites) {
-  for (const char* name : {"summary.json", "result.vtu", "results.pvd", "results_0001.vtu", "results_12345.vtu",
-                           ".summary.json.tmp", ".results_0002.vtu.tmp", "convergence.csv", "rolling.csv",
-                           "contact_profile.csv", "rolling.png", "contact_profile.png", ".rolling.png.tmp"})
+  for (const char* name :
+       {"summary.json", "result.vtu", "results.pvd", "results_0001.vtu", "results_12345.vtu", ".summary.json.tmp",
+        ".results_0002.vtu.tmp", ".result.vtu.4242-7.tmp", "convergence.csv", "rolling.csv", "contact_profile.csv",
+        "rolling.png", "contact_profile.png", ".rolling.png.tmp"})
     EXPECT_TRUE(is_run_output(name, {"rolling.csv", "contact_profile.csv", "rolling.png", "contact_profile.png"}))
         << name;
   EXPECT_FALSE(is_run_output("rolling.csv"));  // a process's file is one only when the caller names it
@@ -55,9 +56,9 @@ TEST(OutputFolder, FailedAtomicWriteLeavesNoTemporary) {
   const fs::path d = fresh_dir("atomic");
   fs::create_directories(d / "summary.json" / "occupied");  // the rename onto a non-empty folder fails
   EXPECT_THROW(write_file_atomically(d / "summary.json", "{}\n"), std::runtime_error);
-  EXPECT_FALSE(fs::exists(d / ".summary.json.tmp"));
   write_file_atomically(d / "other.json", "{}\n");
   EXPECT_TRUE(fs::exists(d / "other.json"));
-  EXPECT_FALSE(fs::exists(d / ".other.json.tmp"));
+  for (const auto& e : fs::directory_iterator(d))
+    EXPECT_NE(e.path().filename().string()[0], '.') << "a temporary was left: " << e.path();
   fs::remove_all(d);
 }
