@@ -33,8 +33,9 @@ class Process {
   virtual std::string name() const = 0;  // process.type
   /// The section's fields (its variant of the `process` object; `type` is the registry's).
   virtual const ObjectSchema& schema() const = 0;
-  /// Checks of the validated section that need more than one field, as `process.<field>` issues.
-  virtual void check(const json& section, std::vector<Issue>& issues) const = 0;
+  /// Checks of the validated project's section that need more than one field or more of the project (keys the
+  /// process would ignore), as issues at the user's paths (`process.<field>`), never a generated body's.
+  virtual void check(const json& project, std::vector<Issue>& issues) const = 0;
   /// `project` with what the section generates appended (bodies, materials, contacts, conditions, increments).
   virtual json expand(const json& project) const = 0;
   /// The files its runs write (tables and charts): an output folder's earlier run is cleared of them.
