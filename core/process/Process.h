@@ -38,6 +38,9 @@ class Process {
   virtual void check(const json& project, std::vector<Issue>& issues) const = 0;
   /// `project` with what the section generates appended (bodies, materials, contacts, conditions, increments).
   virtual json expand(const json& project) const = 0;
+  /// How the user makes its steps smaller, in the section's terms with the current value (a diverged run's advice;
+  /// NewtonOptions::smaller_steps).
+  virtual std::string smaller_steps(const json& section) const = 0;
   /// The files its runs write (tables and charts): an output folder's earlier run is cleared of them.
   virtual std::vector<std::string> outputs() const = 0;
   /// The run on `model`, built from expand(project).

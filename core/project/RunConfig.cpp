@@ -43,6 +43,7 @@ RunConfig read_run_config(const json& p) {
   c.output.fields = out.at("fields").get<std::vector<std::string>>();
   c.process = process_of(p);
   if (c.process) c.process_section = p.at("process");
+  if (c.process) c.newton.smaller_steps = c.process->smaller_steps(c.process_section);
   return c;
 }
 

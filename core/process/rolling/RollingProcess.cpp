@@ -322,6 +322,10 @@ RollingPass rolling_pass(const json& p, const Model& model) {
   return pass;
 }
 
+std::string RollingProcess::smaller_steps(const json& section) const {
+  return "a smaller process.travel_increment (now " + mm(section.at("travel_increment").get<double>()) + ")";
+}
+
 std::vector<std::string> RollingProcess::outputs() const {
   return {kHistoryTable + std::string(".csv"), kHistoryTable + std::string(".png"), kProfileTable + std::string(".csv"),
           kProfileTable + std::string(".png")};
