@@ -127,6 +127,11 @@ class TestPropertyEditor : public QObject {
     retype(tol, QStringLiteral("2"));  // cleared (unset, accepted), then "2" refused
     QVERIFY(editor->message().startsWith(QStringLiteral("solver.cg_tolerance: must be")));
     QVERIFY(!doc.project().data["solver"].contains("cg_tolerance"));
+    QVERIFY(editor->message_for("/solver/cg_tolerance").startsWith(QStringLiteral("solver.cg_tolerance: must be")));
+    QVERIFY(doc.refused_edit("/solver/cg_tolerance"));  // what blocks Save and Run
+    retype(tol, QStringLiteral("1e-6"));
+    QVERIFY(editor->message_for("/solver/cg_tolerance").isEmpty());
+    QVERIFY(!doc.refused_edit("/solver/cg_tolerance"));
     auto* threads = qobject_cast<QLineEdit*>(editor->editor_for("/solver/threads"));
     retype(threads, QStringLiteral("2"));
     QCOMPARE(doc.document()["solver"]["threads"].get<int>(), 2);
