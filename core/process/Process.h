@@ -41,6 +41,9 @@ class Process {
   /// How the user makes its steps smaller, in the section's terms with the current value (a diverged run's advice;
   /// NewtonOptions::smaller_steps).
   virtual std::string smaller_steps(const json& section) const = 0;
+  /// How far a run is at load factor `fraction` (0…1), in the section's terms ("travel 12.5 of 120 mm"): a
+  /// progress that counts the process, not the increments (whose count grows with every cut-back).
+  virtual std::string progress(const json& section, double fraction) const = 0;
   /// The files its runs write (tables and charts): an output folder's earlier run is cleared of them.
   virtual std::vector<std::string> outputs() const = 0;
   /// The run on `model`, built from expand(project).

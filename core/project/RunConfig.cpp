@@ -1,5 +1,7 @@
 #include "project/RunConfig.h"
 
+#include <cstdio>
+
 #include "process/ProcessRegistry.h"
 #include "project/ModelBuilder.h"
 
@@ -55,6 +57,13 @@ json to_json(const RunConfig& c) {
   analysis.update(echo(newton_option_fields(), c.newton));
   analysis["type"] = c.analysis;
   return {{"analysis", analysis}, {"solver", solver}};
+}
+
+std::string progress_text(const RunConfig& c, double fraction) {
+  if (c.process) return c.process->progress(c.process_section, fraction);
+  char s[64];
+  std::snprintf(s, sizeof s, "load factor %.4g of 1", fraction);
+  return s;
 }
 
 }  // namespace rollsim

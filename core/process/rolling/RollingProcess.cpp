@@ -326,6 +326,13 @@ std::string RollingProcess::smaller_steps(const json& section) const {
   return "a smaller process.travel_increment (now " + mm(section.at("travel_increment").get<double>()) + ")";
 }
 
+std::string RollingProcess::progress(const json& section, double fraction) const {
+  const double travel = section.at("travel").get<double>();
+  char s[96];
+  std::snprintf(s, sizeof s, "travel %.4g of %g mm", fraction * travel, travel);
+  return s;
+}
+
 std::vector<std::string> RollingProcess::outputs() const {
   return {kHistoryTable + std::string(".csv"), kHistoryTable + std::string(".png"), kProfileTable + std::string(".csv"),
           kProfileTable + std::string(".png")};

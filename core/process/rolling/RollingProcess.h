@@ -37,6 +37,7 @@ class RollingProcess final : public Process {
   void check(const json& project, std::vector<Issue>& issues) const override { check_rolling(project, issues); }
   json expand(const json& project) const override { return expand_rolling(project); }
   std::string smaller_steps(const json& section) const override;
+  std::string progress(const json& section, double fraction) const override;
   std::vector<std::string> outputs() const override;
   std::unique_ptr<ProcessRun> start(const json& section, const Model& model) const override;
 };

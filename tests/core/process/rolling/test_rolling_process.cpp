@@ -273,3 +273,10 @@ TEST(RollingProcess, GeometryThatCannotBeBuiltIsRefusedAtTheProcesssPath) {
   EXPECT_EQ(hub.find("bodies["), std::string::npos) << hub;
 }
 
+// The run's progress in the pass's own terms (rollsim run's progress line): the roll's travel done, of the whole.
+TEST(RollingProcess, ProgressCountsTheTravel) {
+  json j = {{"dimension", 2}, {"process", {{"type", "rolling"}, {"travel", 120.0}, {"travel_increment", 1.0}}}};
+  const RunConfig c = parse_project(j.dump(), "pass").config();
+  EXPECT_EQ(progress_text(c, 0.0), "travel 0 of 120 mm");
+  EXPECT_EQ(progress_text(c, 0.125), "travel 15 of 120 mm");
+}
