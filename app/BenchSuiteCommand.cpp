@@ -111,7 +111,8 @@ std::function<std::optional<int>()> add_bench_suites(CLI::App& bench) {
     CLI::App* cmd = bench.add_subcommand(
         suite, suite == "accuracy" ? "run time against error for every solver mode, preconditioner and update policy"
                                    : "the stability stress suite: each case converged, or failed with a reason");
-    cmd->add_option("--size", options->size, "tiny (seconds), quick (minutes) or full (the committed tables)");
+    cmd->add_option("--size", options->size,
+                    "tiny (seconds), quick (about one CPU minute) or full (the committed tables)");
     cmd->add_option("--out", options->out, "output directory for SUITE.csv, SUITE.md and the plots");
     cmd->add_option("--family", options->family, "only this family of cases");
     cmd->add_option("--timeout", options->timeout, "seconds before a case is killed")->check(CLI::PositiveNumber);

@@ -11,6 +11,7 @@
 #include "partition/PartitionReport.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
+#include "project/RunProject.h"
 
 namespace rollsim::app {
 
@@ -45,6 +46,11 @@ int check_command(const std::string& file) {
   try {
     const Project p = load_project(file);
     const Model m = build_model(p);
+    // every test that needs no solve: a pass the roll cannot bite is refused here as `run` would refuse it
+    if (const RunStatus refused = process_refusal(p.config(), m); !refused.ok()) {
+      std::cerr << "rollsim: " << to_string(refused.status) << ": " << refused.message << "\n";
+      return exit_code(refused.status);
+    }
     std::cout << file << ": valid (" << m.bodies.size() << " bodies, " << m.total_nodes() << " nodes, "
               << m.total_elements() << " elements)\n";
     return 0;

@@ -32,11 +32,12 @@ namespace {
 /// Progress on stderr: stage names with the elapsed time; Ctrl-C cancels (InterruptScope).
 class StderrProgress final : public AnalysisObserver {
  public:
-  explicit StderrProgress(bool quiet) : quiet_(quiet) {}
+  StderrProgress(bool quiet, const RunConfig& config) : quiet_(quiet), config_(config) {}
   void on_stage(const std::string& stage) override { say(stage); }
-  void on_increment_begin(int increment, int count) override {
-    if (count > 1) say("increment " + std::to_string(increment) + " of " + std::to_string(count));
+  void on_increment_begin(int increment, int count) override {  // how far, not "of n": n grows with each cut-back
+    if (count > 1) say("increment " + std::to_string(increment) + ", " + progress_text(config_, done_) + " done");
   }
+  void on_progress(double fraction) override { done_ = fraction; }
   void on_cutback(int increment, const std::string& cause) override {
     say("increment " + std::to_string(increment) + " cut back (step halved): " + cause);
   }
@@ -48,6 +49,8 @@ class StderrProgress final : public AnalysisObserver {
     if (!quiet_) std::fprintf(stderr, "rollsim: [%7.3f s] %s\n", clock_.seconds(), what.c_str());
   }
   bool quiet_;
+  const RunConfig& config_;
+  double done_ = 0;  // the load factor of the last completed increment
   Stopwatch clock_;
   const InterruptScope* interrupt_ = nullptr;
 };
@@ -159,7 +162,7 @@ int run_command(const RunOptions& o) {
   // solver `petsc` under mpirun: every rank builds the model and its own subdomain; rank 0 reports and writes
   if (config.solver_mode == "petsc") start_processes();
   const bool writer = process_rank() == 0;
-  StderrProgress progress(o.quiet || !writer);
+  StderrProgress progress(o.quiet || !writer, config);
   Model model;
   try {
     progress.on_stage("build model");

@@ -105,6 +105,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(editor_, &PropertyEditor::refused, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   connect(doc_, &ProjectDocument::modelChanged, this, &MainWindow::model_changed);
   connect(doc_, &ProjectDocument::fileStateChanged, this, &MainWindow::refresh_title);
+  connect(doc_, &ProjectDocument::refusedEditsChanged, this, &MainWindow::refresh_actions);
 
   connect(run_panel_, &RunPanel::runRequested, this, &MainWindow::start_run);
   connect(run_panel_, &RunPanel::cancelRequested, this, &MainWindow::cancel_run);
@@ -139,8 +140,8 @@ void MainWindow::build_menus() {
       QKeySequence::New);
   file->addAction(tr("&Open..."), this, &MainWindow::open_dialog, QKeySequence::Open);
   recent_menu_ = file->addMenu(tr("Open &Recent"));
-  file->addAction(tr("&Save"), this, &MainWindow::save, QKeySequence::Save);
-  file->addAction(tr("Save &As..."), this, &MainWindow::save_as_dialog, QKeySequence::SaveAs);
+  write_actions_.push_back(file->addAction(tr("&Save"), this, &MainWindow::save, QKeySequence::Save));
+  write_actions_.push_back(file->addAction(tr("Save &As..."), this, &MainWindow::save_as_dialog, QKeySequence::SaveAs));
   file->addSeparator();
   file->addAction(tr("Export &VTU..."), this, &MainWindow::export_vtu);
   file->addAction(tr("Export run increments as PV&D..."), this, &MainWindow::export_pvd);
@@ -156,7 +157,7 @@ void MainWindow::build_menus() {
   redo->setShortcut(QKeySequence::Redo);
   edit->addAction(redo);
   QMenu* run = menuBar()->addMenu(tr("&Run"));
-  run->addAction(tr("&Run"), this, &MainWindow::start_run, QKeySequence(Qt::Key_F5));
+  write_actions_.push_back(run->addAction(tr("&Run"), this, &MainWindow::start_run, QKeySequence(Qt::Key_F5)));
   run->addAction(tr("&Cancel"), this, &MainWindow::cancel_run, QKeySequence(Qt::Key_Escape));
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(tr("&Reset camera"), view_, &MeshView::reset_camera, QKeySequence(Qt::Key_R));
@@ -192,7 +193,27 @@ void MainWindow::open_dialog() {
   if (!open_file(file, &error)) QMessageBox::warning(this, tr("Invalid project"), error);
 }
 
+bool MainWindow::refused_while_invalid(const QString& action) {
+  const QString why = doc_->refused_edits();
+  if (why.isEmpty()) return false;
+  const QString m = tr("%1 refused: a field holds a value that is not valid (correct it, or clear it for the "
+                       "default) — %2")
+                        .arg(action, why);
+  log_->error(m);
+  statusBar()->showMessage(m, 8000);
+  return true;
+}
+
+void MainWindow::refresh_actions() {
+  const QString why = doc_->refused_edits();
+  for (QAction* a : write_actions_) {
+    a->setEnabled(why.isEmpty());
+    a->setStatusTip(why);
+  }
+}
+
 bool MainWindow::save() {
+  if (refused_while_invalid(tr("Save"))) return false;
   if (doc_->file().isEmpty()) return save_as_dialog();
   return save_to(doc_->file());
 }
@@ -211,6 +232,7 @@ bool MainWindow::save_to(const QString& file) {
 }
 
 bool MainWindow::save_as_dialog() {
+  if (refused_while_invalid(tr("Save"))) return false;
   const QString file = QFileDialog::getSaveFileName(this, tr("Save project"), doc_->file(), tr(kProjectFilter));
   return !file.isEmpty() && save_to(file);
 }
@@ -276,7 +298,7 @@ void MainWindow::model_changed() {
 }
 
 bool MainWindow::start_run() {
-  if (worker_->running()) return false;
+  if (worker_->running() || refused_while_invalid(tr("Run"))) return false;
   partition_->flush();
   plot_->clear();
   log_->info(tr("run %1 with solver %2")

@@ -4,9 +4,11 @@
 // ProjectDocument, the AnalysisWorker and the widgets; each widget refreshes itself from the document.
 #include <QMainWindow>
 #include <QStringList>
+#include <vector>
 
 #include "AnalysisWorker.h"
 
+class QAction;
 class QLabel;
 class QMenu;
 
@@ -35,10 +37,11 @@ class MainWindow : public QMainWindow {
   bool open_file(const QString& file, QString* error = nullptr);
   /// The default project (samples/rolling-2d-36x6.json, embedded as :/rollsim/default-project.json), untitled.
   void new_project();
-  /// Save / Save As; false when cancelled or failed (the message is logged).
+  /// Save / Save As; false when cancelled or failed (the message is logged) or while a field holds a refused value.
   bool save();
   bool save_to(const QString& file);
-  /// Starts a run of the current project in the worker thread; false if one is running.
+  /// Starts a run of the current project in the worker thread; false if one is running or a field holds a refused
+  /// value.
   bool start_run();
   void cancel_run();
   /// Colours the view and shows the residual plot exactly as after an interactive run (for --screenshot).
@@ -71,6 +74,11 @@ class MainWindow : public QMainWindow {
   void open_dialog();
   bool save_as_dialog();
   bool maybe_save();
+  /// True (the refusal logged and shown in the status bar) while a field holds a value validation refused: `action`
+  /// would otherwise write or solve the document's last accepted value, which the user did not type.
+  bool refused_while_invalid(const QString& action);
+  /// Save, Save As and Run enabled only while no field holds a refused value.
+  void refresh_actions();
   void export_vtu();
   void export_pvd();
   void export_png();
@@ -95,6 +103,7 @@ class MainWindow : public QMainWindow {
   QLabel* counts_;
   QLabel* status_;
   QMenu* recent_menu_ = nullptr;
+  std::vector<QAction*> write_actions_;  // Save, Save As, Run: refused while a field holds a refused value
   QString run_status_ = QStringLiteral("not run");
 };
 

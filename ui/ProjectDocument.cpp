@@ -2,6 +2,7 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QStringList>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "Resources.h"
@@ -56,9 +57,12 @@ void ProjectDocument::load_text(const std::string& text, const QString& file, co
   set_modified(false);
   model_ = std::move(model);
   counts_ = count(*model_);
+  const bool had_refused = !refused_.empty();
+  refused_.clear();
   emit changed();
   emit fileStateChanged();
   emit modelChanged();
+  if (had_refused) emit refusedEditsChanged();
 }
 
 void ProjectDocument::open(const QString& file) {
@@ -111,6 +115,26 @@ std::vector<Issue> ProjectDocument::propose(const std::vector<std::pair<std::str
     return e.issues();
   }
   return {};
+}
+
+void ProjectDocument::refuse_edit(const std::string& pointer, const QString& text, const QString& message) {
+  refused_[pointer] = {text, message};
+  emit refusedEditsChanged();
+}
+
+void ProjectDocument::withdraw_refused_edit(const std::string& pointer) {
+  if (refused_.erase(pointer)) emit refusedEditsChanged();
+}
+
+const ProjectDocument::RefusedEdit* ProjectDocument::refused_edit(const std::string& pointer) const {
+  const auto it = refused_.find(pointer);
+  return it == refused_.end() ? nullptr : &it->second;
+}
+
+QString ProjectDocument::refused_edits() const {
+  QStringList lines;
+  for (const auto& [pointer, edit] : refused_) lines << edit.message;
+  return lines.join('\n');
 }
 
 void ProjectDocument::set_modified(bool m) { modified_ = m; }

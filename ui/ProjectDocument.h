@@ -5,6 +5,7 @@
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -46,6 +47,21 @@ class ProjectDocument : public QObject {
   /// Several edits validated together as one change (e.g. a painted map replacing a partition spec).
   std::vector<Issue> propose(const std::vector<std::pair<std::string, Document>>& edits);
 
+  /// A value the user typed that validation refused: the field's text and why. The document keeps its last accepted
+  /// value; while any refused edit is left, Save and Run are refused (MainWindow, RunPanel), so that the window never
+  /// writes or solves a value the user did not type (e.g. the prefix 0.9 of a refused 0.95).
+  struct RefusedEdit {
+    QString text;
+    QString message;
+  };
+  void refuse_edit(const std::string& pointer, const QString& text, const QString& message);
+  /// The field's refused value withdrawn: its edit was accepted (or the document was replaced).
+  void withdraw_refused_edit(const std::string& pointer);
+  /// The refused edit at a JSON pointer, or null.
+  const RefusedEdit* refused_edit(const std::string& pointer) const;
+  /// Every refused edit's message, one a line ("" when none): why Save and Run are refused.
+  QString refused_edits() const;
+
   const Document& document() const { return doc_; }
   /// The document as saved: 2-space indented JSON with a final newline.
   std::string text() const;
@@ -69,6 +85,8 @@ class ProjectDocument : public QObject {
   void buildRefused(const QString& message);
   /// The file name or the modified flag changed.
   void fileStateChanged();
+  /// A refused edit was recorded or withdrawn.
+  void refusedEditsChanged();
 
  private:
   struct Build {
@@ -93,6 +111,7 @@ class ProjectDocument : public QObject {
   unsigned long generation_ = 0;
   bool rebuild_pending_ = false;
   QFutureWatcher<Build> watcher_;
+  std::map<std::string, RefusedEdit> refused_;  // by JSON pointer
 };
 
 /// Validates a document exactly as `rollsim run` validates the file. Throws ProjectError.

@@ -154,8 +154,19 @@ void PropertyEditor::add_rows(QFormLayout* form, const ObjectSchema& schema, con
     }
     QWidget* editor = make_editor(f, p);
     editor->setToolTip(field_help(f));
-    form->addRow(label, editor);
-    rows_.push_back({p, f, editor});
+    auto* cell = new QWidget;  // the field and, under it, its refused value's message
+    auto* column = new QVBoxLayout(cell);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(2);
+    auto* note = new QLabel;
+    note->setWordWrap(true);
+    note->setStyleSheet(QStringLiteral("color: #b00000;"));
+    note->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    note->hide();
+    column->addWidget(editor);
+    column->addWidget(note);
+    form->addRow(label, cell);
+    rows_.push_back({p, f, editor, note});
   }
 }
 
@@ -190,10 +201,22 @@ QWidget* PropertyEditor::make_editor(const Field& f, const std::string& p) {
   return editor;
 }
 
+QString PropertyEditor::message_for(const std::string& pointer) const {
+  for (const Row& r : rows_)
+    if (r.pointer == pointer) return r.note->isHidden() ? QString() : r.note->text();
+  return {};
+}
+
 void PropertyEditor::show_value(const Row& r) {
   const json user = user_value(r.pointer), effective = effective_value(r.pointer);
   r.editor->setStyleSheet(QString());
-  if (auto* line = qobject_cast<QLineEdit*>(r.editor)) {
+  const ProjectDocument::RefusedEdit* refused = doc_->refused_edit(r.pointer);
+  show_note(r);
+  auto* line = qobject_cast<QLineEdit*>(r.editor);
+  if (refused && line) {  // what the user typed stays, refused, until it is corrected
+    line->setText(refused->text);
+    line->setStyleSheet(QString::fromLatin1(kRefusedStyle));
+  } else if (line) {
     line->setText(value_text(user));
     line->setPlaceholderText(value_text(effective.is_null() ? r.field.default_value : effective));
   } else if (auto* combo = qobject_cast<QComboBox*>(r.editor)) {
@@ -220,15 +243,28 @@ void PropertyEditor::commit(const std::string& pointer, const json& value, QWidg
   editing_ = pointer;
   const std::vector<Issue> issues = doc_->propose(pointer, Document::parse(value.dump()));
   editing_.clear();
+  auto* line = qobject_cast<QLineEdit*>(editor);
   if (issues.empty()) {
     editor->setStyleSheet(QString());
     message_->clear();
+    doc_->withdraw_refused_edit(pointer);
+    for (const Row& r : rows_)
+      if (r.pointer == pointer) show_note(r);
     emit accepted(QString::fromStdString(pointer));
     return;
   }
   editor->setStyleSheet(QString::fromLatin1(kRefusedStyle));
   message_->setText(join(issues));
+  if (line) doc_->refuse_edit(pointer, line->text(), message_->text());  // a choice is never a value not typed
+  for (const Row& r : rows_)
+    if (r.pointer == pointer) show_note(r);
   emit refused(message_->text());
+}
+
+void PropertyEditor::show_note(const Row& r) {
+  const ProjectDocument::RefusedEdit* refused = doc_->refused_edit(r.pointer);
+  r.note->setText(refused ? refused->message : QString());
+  r.note->setVisible(refused != nullptr);
 }
 
 void PropertyEditor::refresh() {

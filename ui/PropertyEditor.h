@@ -1,7 +1,8 @@
 #pragma once
 // Edits one object of the project (a body, a material, the solver section, ...) as a form generated from the
 // declared schema. Every keystroke is proposed to the ProjectDocument, which validates it as `rollsim run` would;
-// a refused value is shown in red with the validator's message and the project keeps its old value.
+// a refused value stays in its field, red, with the validator's message under it, and is recorded as the document's
+// refused edit (which blocks Save and Run) while the project keeps its old value.
 #include <QLabel>
 #include <QWidget>
 #include <string>
@@ -29,6 +30,8 @@ class PropertyEditor : public QWidget {
   QWidget* editor_for(const std::string& pointer) const;
   /// The message of the last refused value ("" after an accepted one).
   QString message() const { return message_->text(); }
+  /// The message shown under the field at a JSON pointer ("" when its value is not refused).
+  QString message_for(const std::string& pointer) const;
 
  signals:
   void refused(const QString& message);
@@ -39,6 +42,7 @@ class PropertyEditor : public QWidget {
     std::string pointer;
     Field field;
     QWidget* editor = nullptr;
+    QLabel* note = nullptr;  // the refused value's message, under the field
   };
   void rebuild();
   void refresh();
@@ -47,6 +51,8 @@ class PropertyEditor : public QWidget {
   QWidget* make_editor(const Field& field, const std::string& pointer);
   void commit(const std::string& pointer, const json& value, QWidget* editor);
   void show_value(const Row& row);
+  /// The field's note from the document's refused edit (shown under it, or hidden when there is none).
+  void show_note(const Row& row);
   json user_value(const std::string& pointer) const;
   json effective_value(const std::string& pointer) const;
 

@@ -43,7 +43,15 @@ RunPanel::RunPanel(ProjectDocument* document, QWidget* parent) : QWidget(parent)
   connect(run_, &QPushButton::clicked, this, &RunPanel::runRequested);
   connect(cancel_, &QPushButton::clicked, this, &RunPanel::cancelRequested);
   connect(doc_, &ProjectDocument::changed, this, &RunPanel::refresh_description);
+  connect(doc_, &ProjectDocument::refusedEditsChanged, this, &RunPanel::refresh_run_button);
   refresh_description();
+}
+
+void RunPanel::refresh_run_button() {
+  const QString why = doc_->refused_edits();
+  run_->setEnabled(!running_ && why.isEmpty());
+  run_->setToolTip(why.isEmpty() ? tr("Solve the project in the background (F5)")
+                                 : tr("Not while a field holds a refused value: %1").arg(why));
 }
 
 void RunPanel::refresh_description() {
@@ -60,7 +68,8 @@ void RunPanel::refresh_description() {
 QString RunPanel::status() const { return status_->text(); }
 
 void RunPanel::set_running(bool running) {
-  run_->setEnabled(!running);
+  running_ = running;
+  refresh_run_button();
   cancel_->setEnabled(running);
   if (!running) return;
   progress_->setValue(0);

@@ -40,6 +40,8 @@ class RunPanel : public QWidget {
 
  private:
   void refresh_description();
+  /// Run enabled while no run is going and no field holds a refused value (its message as the button's tooltip).
+  void refresh_run_button();
 
   ProjectDocument* doc_;
   PropertyEditor* editor_;
@@ -48,6 +50,7 @@ class RunPanel : public QWidget {
   QPushButton* cancel_;
   QProgressBar* progress_;
   QLabel* status_;
+  bool running_ = false;
 };
 
 }  // namespace rollsim::ui

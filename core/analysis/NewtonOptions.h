@@ -53,6 +53,9 @@ struct NewtonOptions {
   FirstTangent first_tangent = FirstTangent::Converged;
   ContactTangent contact_tangent = ContactTangent::Groups;
   ConstantTangents constant_tangents = ConstantTangents::Keep;
+  // how the user makes the steps smaller, for a diverged run's advice (a process's own step: "a smaller
+  // process.travel_increment (now 1 mm)"); empty: more analysis.increments
+  std::string smaller_steps;
 };
 
 /// The analysis section's Newton fields, in the order shown to users (analysis.increments is the load steps' field,

@@ -33,6 +33,9 @@ struct Attempt {
   int iterations = 0;
 };
 
+/// The multipliers' accuracy of an exact (direct or dense) solve: a looser one is an interface Krylov solve's.
+constexpr double kExactInterface = 1e-10;
+
 std::string fmt(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
@@ -113,6 +116,17 @@ class NewtonRun {
   std::string line_search(const std::vector<size_t>& tangent, GroupAssembler::Factors at, double& eta);
   /// Stick/slip and active-set update from the last solve (its λ and the iterate); the number of points changed.
   int update_statuses(double lf);
+  /// The first of Newton's checks the iterate fails — the residual ratio, the contact statuses, the correction
+  /// ‖du‖ against the step's displacement — with its value and limit; "" when it passes them (then the projections
+  /// are checked: unmet_projections).
+  std::string unmet_check(bool balanced, double relative, int changed, double correction, double step) const;
+  std::string unmet_projections(double relative, const ProjectionDrift& drift) const;
+  /// For a check an inexact interface solve can fail: its tolerance named as a remedy ("" for an exact solve).
+  std::string interface_hint() const;
+  /// What a run that ran out of cut-backs on an inverted element can change, in the user's settings: smaller steps
+  /// from the start (NewtonOptions::smaller_steps — a process's own step, or analysis.increments); "" for another
+  /// cause (a check that failed names its own remedy; a singular tangent has none in the steps).
+  std::string advice(const std::string& cause) const;
   /// Every group's tangent choice for an iteration: refactored (in `tangent`) or kept, and why — its residual share
   /// against the policy's threshold, `all_why` when no residuals were taken (every group new), or a constant tangent.
   std::vector<TangentChoice> tangent_choices(const std::vector<size_t>& tangent, const std::vector<double>& share,
@@ -324,6 +338,44 @@ std::vector<TangentChoice> NewtonRun::tangent_choices(const std::vector<size_t>&
   return out;
 }
 
+std::string NewtonRun::unmet_check(bool balanced, double relative, int changed, double correction, double step) const {
+  const std::string ratio = "the residual ratio " + fmt(relative);
+  if (!balanced) return ratio + " is above its tolerance " + fmt(opt_.tolerance) + " (analysis.tolerance)";
+  const std::string but = ratio + " is within its tolerance " + fmt(opt_.tolerance) + ", but ";
+  if (!lambda_valid_ || changed)
+    return but + "the contact check failed: " + std::to_string(changed) +
+           " contact points changed status (in or out, stick or slip) in the last iteration";
+  const double limit = opt_.displacement_tolerance * step;
+  if (correction > limit)
+    return but + "the correction check failed: ‖du‖ = " + fmt(correction) + " is above " +
+           fmt(opt_.displacement_tolerance) + " × the step's displacement " + fmt(step) + " = " + fmt(limit) +
+           interface_hint();
+  return "";
+}
+
+std::string NewtonRun::unmet_projections(double relative, const ProjectionDrift& drift) const {
+  return "the residual ratio " + fmt(relative) + " is within its tolerance " + fmt(opt_.tolerance) +
+         ", but the projection check failed: " + std::to_string(drift.moved) +
+         " contact points are off their projection on the master surface by up to " + fmt(drift.largest) + " (limit " +
+         fmt(drift.limit) + ", 1e-8 of the pair's search distance)" + interface_hint();
+}
+
+std::string NewtonRun::interface_hint() const {
+  const double tol = solver_.multiplier_tolerance();
+  if (!(tol > kExactInterface)) return "";
+  return " — the interface solve leaves constraint errors of its tolerance: a tighter solver.cg_tolerance (now " +
+         fmt(tol) + ")";
+}
+
+std::string NewtonRun::advice(const std::string& cause) const {
+  if (cause.find("is inverted") == std::string::npos) return "";
+  const std::string steps = !opt_.smaller_steps.empty()
+                                ? opt_.smaller_steps
+                                : "more analysis.increments (now " + std::to_string(opt_.increments) + ")";
+  return ". An element inverts even in the halved step: take smaller steps from the start — " + steps +
+         " — cut-backs halve only the failing step, not the steps that led there";
+}
+
 Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf) {
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
@@ -332,6 +384,8 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
   const std::vector<size_t> all = all_groups(sys);
   double first = 0, correction = 0;
   int changed = 0;
+  std::string unmet;            // the check the last iterate failed, with its value and limit
+  bool searched_again = false;  // the last iteration only searched the projections again
   for (int k = 1;; ++k) {
     if (obs_.cancel_requested())
       return {{Status::cancelled, Reason::none, "cancelled in increment " + std::to_string(increment)}, "", k - 1};
@@ -383,20 +437,23 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     step = std::sqrt(step);
     if (k > 1) obs_.on_newton_iteration(increment, k - 1, relative);
     const bool balanced = residual == 0.0 || (k > 1 && relative <= opt_.tolerance);
-    if (balanced && lambda_valid_ && changed == 0 && correction <= opt_.displacement_tolerance * step) {
-      if (!step_sliding_ || projections_moved(model_, body_displacements(lf), pairs_) == 0) return {{}, "", k - 1};
-      search_again_ = true;  // converged on the step's first projections: iterate on, projected where it now is
-      changed = 1;
+    // the check this iterate fails, kept for the message: a search again after the projection check counts as it
+    if (!searched_again || !balanced) unmet = unmet_check(balanced, relative, changed, correction, step);
+    searched_again = false;
+    if (unmet.empty()) {
+      const ProjectionDrift drift =
+          step_sliding_ ? projection_drift(model_, body_displacements(lf), pairs_) : ProjectionDrift{};
+      if (drift.moved == 0) return {{}, "", k - 1};
+      unmet = unmet_projections(relative, drift);
+      search_again_ = searched_again = true;  // converged on the step's first projections: iterate on, projected
+      changed = 1;                            // where it now is
       continue;
     }
     if (k > 1 && relative > 1e6)
       return {
           {}, "the residual grew to " + fmt(relative) + " times its scale (the larger of its first two values)", k - 1};
     if (k > opt_.max_iterations)
-      return {{},
-              "no convergence in " + std::to_string(opt_.max_iterations) + " iterations (residual ratio " +
-                  fmt(relative) + ", tolerance " + fmt(opt_.tolerance) + ")",
-              k - 1};
+      return {{}, "no convergence in " + std::to_string(opt_.max_iterations) + " iterations: " + unmet, k - 1};
     obs_.on_tangents(increment, k, choices);  // told only for an iteration that solves (as convergence.csv's rows)
     add_contact_stiffness(lf, tangent);
     mark_updated(sys, tangent);
@@ -463,7 +520,7 @@ Results NewtonRun::run() {
         res.status = {Status::diverged, Reason::none,
                       "increment " + std::to_string(increment + 1) + " (load factor " + fmt(lf) + " to " + fmt(target) +
                           "): " + a.cause + "; " + std::to_string(depth) +
-                          " cut-backs used (analysis.max_cutbacks: the step halved that often)"};
+                          " cut-backs used (analysis.max_cutbacks: the step halved that often)" + advice(a.cause)};
         break;
       }
       obs_.on_cutback(increment + 1, a.cause);

@@ -45,12 +45,23 @@ std::vector<Field> fields_of(const std::vector<BoundField<S>>& table) {
   return fields;
 }
 
-/// S read from a validated section (every field of the table present: validation filled the defaults).
+/// S read from a validated section (validation filled the defaults; a field declared without one — its default a
+/// rule the reader applies, e.g. solver.cg_tolerance's — keeps the member's initializer when absent).
 template <class S>
 S read_bound(const std::vector<BoundField<S>>& table, const json& section) {
   S s{};
-  for (const BoundField<S>& b : table) b.read(section.at(b.field.name), s);
+  for (const BoundField<S>& b : table) {
+    if (!section.contains(b.field.name) && b.field.default_value.is_null()) continue;
+    b.read(section.at(b.field.name), s);
+  }
   return s;
+}
+
+/// `b` without a default filled in by validation: absent, the reader applies its rule (see read_bound).
+template <class S>
+BoundField<S> without_default(BoundField<S> b) {
+  b.field.default_value = nullptr;
+  return b;
 }
 
 }  // namespace rollsim

@@ -127,21 +127,30 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
 }
 
 int projections_moved(const Model& model, const std::vector<Eigen::VectorXd>& u, const std::vector<PairState>& pairs) {
+  return projection_drift(model, u, pairs).moved;
+}
+
+ProjectionDrift projection_drift(const Model& model, const std::vector<Eigen::VectorXd>& u,
+                                 const std::vector<PairState>& pairs) {
   std::vector<PairState> now = pairs;
   follow_contacts(model, u, now, ContactPair::Sliding::Step);
-  int moved = 0;
+  ProjectionDrift d;
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
     if (p.sliding != ContactPair::Sliding::Step) continue;
     std::map<int, double> gap;
     for (size_t j = 0; j < now[i].points.size(); ++j) gap[now[i].points[j].slave_node] = now[i].points[j].gap;
+    const double limit = 1e-8 * p.search_distance;
     for (size_t j = 0; j < pairs[i].points.size(); ++j) {
       if (!pairs[i].active[j]) continue;
       const auto it = gap.find(pairs[i].points[j].slave_node);
-      moved += it == gap.end() || std::abs(it->second) > 1e-8 * p.search_distance;
+      const double off = it == gap.end() ? 0.0 : std::abs(it->second);
+      if (it != gap.end() && off <= limit) continue;
+      ++d.moved;
+      if (off >= d.largest) d.largest = off, d.limit = limit;
     }
   }
-  return moved;
+  return d;
 }
 
 namespace {

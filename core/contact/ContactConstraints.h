@@ -64,6 +64,16 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
 /// A step that converged on its first projections is not done while this is not zero.
 int projections_moved(const Model& model, const std::vector<Eigen::VectorXd>& u, const std::vector<PairState>& pairs);
 
+/// The same count with the largest offset of a moved point and that pair's limit (1e-8 of its search distance), for
+/// a message: a point off the master surface counts as moved with no offset.
+struct ProjectionDrift {
+  int moved = 0;
+  double largest = 0;  // the largest |gap| of a moved point at its new projection [length]
+  double limit = 0;    // the limit that point exceeded [length]
+};
+ProjectionDrift projection_drift(const Model& model, const std::vector<Eigen::VectorXd>& u,
+                                 const std::vector<PairState>& pairs);
+
 /// The rows of the active points, pair by pair, point by point.
 std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<PairState>& pairs);
 

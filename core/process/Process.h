@@ -33,10 +33,17 @@ class Process {
   virtual std::string name() const = 0;  // process.type
   /// The section's fields (its variant of the `process` object; `type` is the registry's).
   virtual const ObjectSchema& schema() const = 0;
-  /// Checks of the validated section that need more than one field, as `process.<field>` issues.
-  virtual void check(const json& section, std::vector<Issue>& issues) const = 0;
+  /// Checks of the validated project's section that need more than one field or more of the project (keys the
+  /// process would ignore), as issues at the user's paths (`process.<field>`), never a generated body's.
+  virtual void check(const json& project, std::vector<Issue>& issues) const = 0;
   /// `project` with what the section generates appended (bodies, materials, contacts, conditions, increments).
   virtual json expand(const json& project) const = 0;
+  /// How the user makes its steps smaller, in the section's terms with the current value (a diverged run's advice;
+  /// NewtonOptions::smaller_steps).
+  virtual std::string smaller_steps(const json& section) const = 0;
+  /// How far a run is at load factor `fraction` (0…1), in the section's terms ("travel 12.5 of 120 mm"): a
+  /// progress that counts the process, not the increments (whose count grows with every cut-back).
+  virtual std::string progress(const json& section, double fraction) const = 0;
   /// The files its runs write (tables and charts): an output folder's earlier run is cleared of them.
   virtual std::vector<std::string> outputs() const = 0;
   /// The run on `model`, built from expand(project).

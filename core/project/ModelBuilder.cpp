@@ -264,7 +264,7 @@ bool factors_bodies_whole(const json& d) {
 }
 
 void check_references(const Project& project, std::vector<Issue>& issues) {
-  if (const Process* process = process_of(project.data)) process->check(project.data.at("process"), issues);
+  if (const Process* process = process_of(project.data)) process->check(project.data, issues);
   if (!issues.empty()) return;  // the generated bodies would repeat the process's problem under their own paths
   const json d = expand_process(project.data);
   const int dim = project.dimension();

@@ -32,6 +32,10 @@ struct RunConfig {
 /// The configuration of a validated project (defaults filled in, process expanded where it sets the increments).
 RunConfig read_run_config(const nlohmann::json& validated_project);
 
+/// How far a run of `config` is at load factor `fraction` (0…1): its process's words ("travel 12.5 of 120 mm"),
+/// else "load factor 0.25 of 1". Monotone over a run, whatever the cut-backs: what the progress line shows.
+std::string progress_text(const RunConfig& config, double fraction);
+
 /// The resolved configuration as summary.json echoes it (every option, defaults included, in the project's words).
 nlohmann::json to_json(const RunConfig& config);
 

@@ -84,6 +84,10 @@ Results run_project(const Project& project, const Model& model, AnalysisObserver
   return run_project(project.config(), model, observer);
 }
 
+RunStatus process_refusal(const RunConfig& config, const Model& model) {
+  return config.process ? config.process->start(config.process_section, model)->refusal() : RunStatus{};
+}
+
 Results run_project(const RunConfig& config, const Model& model, AnalysisObserver* observer) {
   if (config.solver_mode == kAutoSolver) {
     const AutoChoice choice = choose_solver_mode(config, model);

@@ -34,4 +34,8 @@ Results run_project(const Project& project, const Model& model, AnalysisObserver
 /// The same with a configuration of one's own (the project's, changed: the window's solver choice).
 Results run_project(const RunConfig& config, const Model& model, AnalysisObserver* observer = nullptr);
 
+/// Why the project's process refuses to be solved on `model` (e.g. a pass the roll cannot bite: no_bite), or
+/// converged when it may be solved or has no process: what `rollsim check` and run_project both ask before solving.
+RunStatus process_refusal(const RunConfig& config, const Model& model);
+
 }  // namespace rollsim

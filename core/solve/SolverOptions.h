@@ -52,7 +52,8 @@ inline const std::vector<std::string>& words<PetscMethod>() {
 }
 
 struct SolverOptions {
-  double cg_tolerance = 1e-4;  // relative residual of the interface Krylov solve (mixed / feti; petsc's rtol)
+  double cg_tolerance = 1e-4;  // relative residual of the interface Krylov solve (mixed / feti; petsc's rtol); the
+                               // project's unset value under Newton: RunConfig's rule
   int threads = 1;             // groups factored and solved concurrently (mixed / feti), BLAS threads
   Preconditioner preconditioner = Preconditioner::None;
   GlueMultipliers multipliers = GlueMultipliers::NonRedundant;
@@ -119,12 +120,15 @@ inline const std::vector<BoundField<SolverOptions>>& solver_option_fields() {
             return f;
           }(),
           &S::petsc_options),
-      bind(flag(below(positive("cg_tolerance", "-",
-                               "relative residual tolerance of the interface CG (mixed/feti; petsc: its Krylov "
-                               "solver's rtol)"),
-                      1.0),
-                "cg-tolerance"),
-           &S::cg_tolerance),
+      without_default(bind(flag(below(positive("cg_tolerance", "-",
+                                               "relative residual tolerance of the interface CG (mixed/feti; petsc: "
+                                               "its Krylov solver's rtol). Unset: 1e-4 in a linear analysis; under "
+                                               "Newton analysis.tolerance / 100 (1e-10 by default), since the "
+                                               "constraint error a looser solve leaves keeps Newton's checks from "
+                                               "being met (project/RunConfig)"),
+                                      1.0),
+                                "cg-tolerance"),
+                           &S::cg_tolerance)),
       bind(flag(count("max_interface_iterations",
                       "iterations one interface CG / GMRES of `mixed` and `feti` may take; a solve still short of "
                       "cg_tolerance after them ends not_converged (iteration_limit), or cuts a Newton step back",

@@ -179,6 +179,11 @@ TEST(NewtonRun, RollingPassThatCannotBiteExitsSix) {
   EXPECT_TRUE(contains(result.err, "rollsim: no_bite: the roll cannot draw the slab in")) << result.err;
   const json summary = json::parse(read_text(dir + "/out/summary.json"));
   EXPECT_EQ(summary["status"], "no_bite");
+  // `check` runs every test that needs no solve: it finds the same refusal, with the same exit code
+  const auto checked = run_rollsim({"check", dir + "/p.json"});
+  EXPECT_EQ(checked.exit_code, 6) << checked.out << checked.err;
+  EXPECT_TRUE(contains(checked.err, "rollsim: no_bite: the roll cannot draw the slab in")) << checked.err;
+  EXPECT_FALSE(contains(checked.out, "valid")) << checked.out;
 }
 
 TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {

@@ -4,8 +4,11 @@
 // view toolbar's increment selector offers 1…3 and recolours the view with the chosen increment's fields; after a
 // Newton run of a plastic block the view colours its elements by equivalent plastic strain and the log says which
 // groups each iteration refactored and why; a rolling pass plots its roll force and torque as it runs, and the arc.
+// A typed value that validation refuses stays in its field with its message under it, and Save and Run are refused
+// until it is corrected: the window never writes a value the user did not type (the prefix 0.9 of a refused 0.95).
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -34,6 +37,7 @@ using namespace rollsim::ui;
 
 namespace {
 const QString kSample = QStringLiteral(ROLLSIM_SOURCE_DIR "/samples/plate-hole-2d.json");
+const QString kPass = QStringLiteral(ROLLSIM_SOURCE_DIR "/samples/rolling-2d-36x6.json");
 
 /// Standard deviation of the grey level: a blank (one-colour) image has none.
 double grey_spread(const QImage& image) {
@@ -91,6 +95,44 @@ class TestMainWindow : public QObject {
     QVERIFY(w.property_editor()->message().contains(QStringLiteral("must be a positive integer, got 0")));
     QTest::qWait(100);
     QCOMPARE(w.view()->drawn_cells(), 32L * 12);
+  }
+
+  void a_refused_value_blocks_save_and_run_until_corrected() {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("pass.json"));
+    QVERIFY(QFile::copy(kPass, file));
+    const std::string before = read_all(file.toStdString());
+    MainWindow w;
+    QVERIFY(w.open_file(file));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.tree()->select("/process");
+    auto* line = qobject_cast<QLineEdit*>(w.property_editor()->editor_for("/process/reduction"));
+    QVERIFY(line);
+    line->setFocus();
+    QTest::keyClicks(line, QStringLiteral("0.95"));  // 0, 0., 0.9 accepted on the way; 0.95 refused (at most 0.9)
+    QCOMPARE(line->text(), QStringLiteral("0.95"));
+    const QString why = w.property_editor()->message_for("/process/reduction");
+    QVERIFY2(why.startsWith(QStringLiteral("process.reduction: ")), qPrintable(why));
+    QVERIFY(!w.run_panel()->run_button()->isEnabled());
+    QVERIFY(!w.save());
+    QCOMPARE(read_all(file.toStdString()), before);  // nothing written: not the prefix 0.9
+    QVERIFY(!w.start_run());
+    QCOMPARE(w.run_status(), QStringLiteral("not run"));
+    w.tree()->select("");  // away and back: the typed value and its message are still there
+    w.tree()->select("/process");
+    line = qobject_cast<QLineEdit*>(w.property_editor()->editor_for("/process/reduction"));
+    QCOMPARE(line->text(), QStringLiteral("0.95"));
+    QCOMPARE(w.property_editor()->message_for("/process/reduction"), why);
+    line->setFocus();
+    line->selectAll();
+    QTest::keyClicks(line, QStringLiteral("0.2"));
+    QVERIFY(w.property_editor()->message_for("/process/reduction").isEmpty());
+    QVERIFY(w.run_panel()->run_button()->isEnabled());
+    QVERIFY(w.save());
+    nlohmann::json expected = nlohmann::json::parse(before);
+    expected["process"]["reduction"] = 0.2;  // the saved file differs from the sample by what was typed, only
+    QCOMPARE(nlohmann::json::parse(read_all(file.toStdString())), expected);
   }
 
   void run_button_converges_and_shows_results() {

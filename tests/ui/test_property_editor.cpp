@@ -118,15 +118,20 @@ class TestPropertyEditor : public QObject {
     QCOMPARE(doc.document()["solver"]["mode"].get<std::string>(), std::string("mixed"));
     auto* tol = qobject_cast<QLineEdit*>(editor->editor_for("/solver/cg_tolerance"));
     QVERIFY(tol);
-    QCOMPARE(tol->placeholderText(), QStringLiteral("0.0001"));  // the schema default, shown not written
+    QCOMPARE(tol->placeholderText(), QString());  // no default: a rule (1e-4, or Newton's tolerance / 100)
     retype(tol, QStringLiteral("1e-6"));
     QCOMPARE(doc.project().data["solver"]["cg_tolerance"].get<double>(), 1e-6);
     QTest::keyClicks(tol, QStringLiteral("x"));  // "1e-6x": refused, the project keeps 1e-6
     QVERIFY(editor->message().startsWith(QStringLiteral("solver.cg_tolerance: must be a finite number")));
     QCOMPARE(doc.project().data["solver"]["cg_tolerance"].get<double>(), 1e-6);
-    retype(tol, QStringLiteral("2"));  // cleared (the default, accepted), then "2" refused
+    retype(tol, QStringLiteral("2"));  // cleared (unset, accepted), then "2" refused
     QVERIFY(editor->message().startsWith(QStringLiteral("solver.cg_tolerance: must be")));
-    QCOMPARE(doc.project().data["solver"]["cg_tolerance"].get<double>(), 1e-4);
+    QVERIFY(!doc.project().data["solver"].contains("cg_tolerance"));
+    QVERIFY(editor->message_for("/solver/cg_tolerance").startsWith(QStringLiteral("solver.cg_tolerance: must be")));
+    QVERIFY(doc.refused_edit("/solver/cg_tolerance"));  // what blocks Save and Run
+    retype(tol, QStringLiteral("1e-6"));
+    QVERIFY(editor->message_for("/solver/cg_tolerance").isEmpty());
+    QVERIFY(!doc.refused_edit("/solver/cg_tolerance"));
     auto* threads = qobject_cast<QLineEdit*>(editor->editor_for("/solver/threads"));
     retype(threads, QStringLiteral("2"));
     QCOMPARE(doc.document()["solver"]["threads"].get<int>(), 2);

@@ -30,7 +30,7 @@ const std::vector<RollingMeasure>& rolling_measures() {
 Measure RollingMeasure::in(int dim) const {
   Measure m = plane;
   if (dim == 3) m.unit = solid_unit;
-  if (dim == 3 && m.name == "contact_length") m.label = "contact area";
+  if (dim == 3 && m.name == "contact_length") m.name = "contact_area", m.label = "contact area";  // in mm², not mm
   return m;
 }
 

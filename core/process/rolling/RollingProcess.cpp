@@ -1,6 +1,7 @@
 #include "process/rolling/RollingProcess.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "base/SchemaFields.h"
@@ -105,8 +106,11 @@ const ObjectSchema& rolling_process_schema() {
               "frictionless. A pass whose μ is below tan α (the bite "
               "angle: cos α = 1 − Δh / 2R), or frictionless, ends `no_bite` before anything is solved"),
        [] {
-         Field f = number("friction_coefficient", "-", 0.3, 0, 10, "Coulomb's μ (friction: coulomb)");
+         Field f = number("friction_coefficient", "-", 0, 0, 10,
+                          "Coulomb's μ (friction: coulomb only, default 0.3; refused with sticking or frictionless, "
+                          "where it would have no effect)");
          f.min_exclusive = false;
+         f.default_value = nullptr;
          return f;
        }(),
        choice("sliding", {"large", "large_every_iteration"}, "large",
@@ -125,6 +129,9 @@ const ObjectSchema& rolling_process_schema() {
 
 namespace {
 constexpr double kPaperReduction = 0.132;
+constexpr double kDefaultFriction = 0.3;  // Coulomb's μ when process.friction_coefficient is not given
+
+double friction_coefficient(const json& p) { return p.value("friction_coefficient", kDefaultFriction); }
 
 bool half_width(const json& process) { return process.value("width_symmetry", true); }
 
@@ -135,7 +142,51 @@ double exit_thickness(const json& p) {
 }
 }  // namespace
 
-void check_rolling(const json& p, std::vector<Issue>& issues) {
+namespace {
+std::string mm(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%g mm", v);
+  return s;
+}
+
+/// Keys and entries the pass would ignore: refused, so that nothing the user wrote is silently dropped.
+void check_ignored(const json& project, std::vector<Issue>& issues) {
+  const json& p = project.at("process");
+  if (p.contains("friction_coefficient") && p.at("friction") != "coulomb")
+    issues.push_back(
+        {"process.friction_coefficient", "has no effect with process.friction: " + p.at("friction").get<std::string>() +
+                                             " (μ is Coulomb's: set process.friction to coulomb, or remove it)"});
+  const json& materials = project.at("materials");
+  for (size_t i = 0; i < materials.size(); ++i) {
+    const std::string name = materials[i].value("name", "");
+    bool used = false;
+    for (const json& b : project.at("bodies")) used = used || b.value("material", "") == name;
+    if (!used)
+      issues.push_back({"materials[" + std::to_string(i) + "]",
+                        "'" + name +
+                            "' is used by no body: a rolling pass makes its own materials from process.slab_E, "
+                            "slab_nu, slab_yield_stress, slab_hardening, roll_E and roll_nu (set those instead)"});
+  }
+}
+
+/// The generated bodies' geometry, checked in the process's terms (never a generated body's path).
+void check_geometry(const json& project, std::vector<Issue>& issues) {
+  const json& p = project.at("process");
+  const double R = p.at("roll_radius"), hub = p.at("roll_hub_radius");
+  if (hub >= R)
+    issues.push_back({"process.roll_hub_radius", mm(hub) + " must be smaller than process.roll_radius (" + mm(R) +
+                                                     "): the hub is the inner edge of the roll's ring"});
+  const double W = p.at("slab_width"), barrel = p.at("barrel_width");
+  if (project.at("dimension").get<int>() == 3 && W > barrel)
+    issues.push_back({"process.slab_width", mm(W) + " is wider than the roll barrel (process.barrel_width: " +
+                                                mm(barrel) + "): the slab's edges would pass beside the roll"});
+}
+}  // namespace
+
+void check_rolling(const json& project, std::vector<Issue>& issues) {
+  check_ignored(project, issues);
+  check_geometry(project, issues);
+  const json& p = project.at("process");
   const double h0 = p.at("slab_thickness").get<double>();
   if (p.contains("reduction") && p.contains("exit_thickness"))
     issues.push_back({"process.exit_thickness", "give either process.reduction or process.exit_thickness, not both"});
@@ -225,7 +276,7 @@ json expand_rolling(const json& project) {
                              {"sliding", p.at("sliding")}});
   const std::string friction = p.at("friction");
   out["contacts"].back()["type"] = friction;
-  if (friction == "coulomb") out["contacts"].back()["friction"] = p.at("friction_coefficient");
+  if (friction == "coulomb") out["contacts"].back()["friction"] = friction_coefficient(p);
   // Coulomb's friction stress never exceeds the slab's shear yield stress k = σ_0/√3. Sticking has no cap: the slab's
   // surface layer, yielding in shear, is what limits it (a cap made the arc chatter between stick and slip)
   if (friction == "coulomb")
@@ -273,8 +324,19 @@ RollingPass rolling_pass(const json& p, const Model& model) {
   pass.flow_stress = p.at("slab_yield_stress");
   if (p.at("roll") == "elastic") pass.roll_E = p.at("roll_E"), pass.roll_nu = p.at("roll_nu");
   const std::string friction = p.at("friction");
-  if (friction != "sticking") pass.friction = friction == "coulomb" ? p.at("friction_coefficient").get<double>() : 0.0;
+  if (friction != "sticking") pass.friction = friction == "coulomb" ? friction_coefficient(p) : 0.0;
   return pass;
+}
+
+std::string RollingProcess::smaller_steps(const json& section) const {
+  return "a smaller process.travel_increment (now " + mm(section.at("travel_increment").get<double>()) + ")";
+}
+
+std::string RollingProcess::progress(const json& section, double fraction) const {
+  const double travel = section.at("travel").get<double>();
+  char s[96];
+  std::snprintf(s, sizeof s, "travel %.4g of %g mm", fraction * travel, travel);
+  return s;
 }
 
 std::vector<std::string> RollingProcess::outputs() const {

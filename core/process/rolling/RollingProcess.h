@@ -15,9 +15,11 @@ namespace rollsim {
 /// 300 mm, 13.2 % reduction).
 const ObjectSchema& rolling_process_schema();
 
-/// Checks of the validated section that need more than one field (the grading against slab_nx), as
-/// `process.<field>`.
-void check_rolling(const json& section, std::vector<Issue>& issues);
+/// Checks of the validated project's pass that need more than one field (the grading against slab_nx, the hub
+/// inside the roll, the slab within the barrel) or that refuse what the pass would ignore (friction_coefficient
+/// without coulomb friction, entries of `materials` no body uses), named by the user's paths (`process.<field>`,
+/// `materials[i]`).
+void check_rolling(const json& project, std::vector<Issue>& issues);
 
 /// `project` with the bodies, materials, contacts and conditions of its pass appended. The section must already be
 /// validated (defaults filled).
@@ -32,8 +34,10 @@ class RollingProcess final : public Process {
  public:
   std::string name() const override { return "rolling"; }
   const ObjectSchema& schema() const override { return rolling_process_schema(); }
-  void check(const json& section, std::vector<Issue>& issues) const override { check_rolling(section, issues); }
+  void check(const json& project, std::vector<Issue>& issues) const override { check_rolling(project, issues); }
   json expand(const json& project) const override { return expand_rolling(project); }
+  std::string smaller_steps(const json& section) const override;
+  std::string progress(const json& section, double fraction) const override;
   std::vector<std::string> outputs() const override;
   std::unique_ptr<ProcessRun> start(const json& section, const Model& model) const override;
 };

@@ -27,10 +27,6 @@ nlohmann::json theory_section(const RollingPass& pass) {
           {"wusatowski_spread", t.wusatowski_spread}};
 }
 
-/// The key of a measure in summary.json: a 3D contact is an area.
-std::string summary_key(const Measure& m, int dim) {
-  return dim == 3 && m.name == "contact_length" ? "contact_area" : m.name;
-}
 }  // namespace
 
 MeasureTable history_table(const RollingResults& r, int dim) {
@@ -99,8 +95,8 @@ nlohmann::json rolling_summary(const RollingPass& pass, int dim, const RollingRe
   for (const RollingMeasure& m : rolling_measures()) {
     const Measure shown = m.in(dim);
     if (shown.name == "travel") continue;
-    out[summary_key(shown, dim)] = r.steady.*m.field;
-    units[summary_key(shown, dim)] = shown.unit;
+    out[shown.name] = r.steady.*m.field;  // a 3D contact is an area: contact_area (RollingMeasure::in)
+    units[shown.name] = shown.unit;
   }
   out["bite_increment"] = r.bite_increment;
   out["steady_state_increment"] = r.steady_state_increment;

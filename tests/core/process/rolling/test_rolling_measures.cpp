@@ -116,3 +116,18 @@ TEST(RollingMeasures, SpreadAtTheWidestPointAndOfTheMeanWidth) {
   EXPECT_NEAR(r.increments[0].spread, 2 * c * 50, 1e-9);
   EXPECT_NEAR(r.increments[0].mean_spread, 2 * c * 25, 1e-9);
 }
+
+// A column is named for what it holds: the contact's arc length in plane strain [mm], its area in 3D [mm²] —
+// rolling.csv's header and summary.json's key alike (RollingReport writes both from Measure::name).
+TEST(RollingMeasures, ContactIsALengthIn2DAndAnAreaIn3D) {
+  auto contact = [](int dim) {
+    for (const RollingMeasure& m : rolling_measures())
+      if (m.field == &RollingIncrement::contact_length) return m.in(dim);
+    return Measure{};
+  };
+  EXPECT_EQ(contact(2).name, "contact_length");
+  EXPECT_EQ(contact(2).unit, "mm");
+  EXPECT_EQ(contact(3).name, "contact_area");
+  EXPECT_EQ(contact(3).unit, "mm²");
+  EXPECT_EQ(contact(3).label, "contact area");
+}

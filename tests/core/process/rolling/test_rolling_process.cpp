@@ -1,6 +1,8 @@
 // The rolling process section: the paper's pass generates a pre-bitten slab (its front end at the exit plane, its
 // top cut to the roll's polygon over the arc) and a roll, half thickness (and half width in 3D) by symmetry;
 // bad process values are refused with their JSON path; grading toward the roll gap moves the slab's nodes only.
+// What the pass would ignore (a material no body uses, μ without Coulomb friction) or cannot build (a slab wider than
+// the barrel, a hub outside the roll) is refused at the user's own path, never a generated body's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,8 +40,9 @@ std::vector<double> x_planes(const Mesh& m) {
   return x;
 }
 
-std::string refusal(const json& process) {
-  json j = {{"dimension", 2}, {"process", process}};
+std::string refusal(const json& process, int dim = 2, json extra = json::object()) {
+  json j = {{"dimension", dim}, {"process", process}};
+  j.update(extra);
   try {
     parse_project(j.dump(), "bad");
   } catch (const ProjectError& e) {
@@ -238,4 +241,42 @@ TEST(RollingProcess, WholeWidthMirrorsSlabAndRollAndHoldsTheCentreLine) {
   EXPECT_TRUE(pass_of(3, small).half_width);
   EXPECT_FALSE(pass_of(3, whole_spec).half_width);
   EXPECT_FALSE(pass_of(2, {{"width_symmetry", false}}).half_width);  // plane strain has no width
+}
+
+TEST(RollingProcess, WhatThePassWouldIgnoreIsRefusedNamingIt) {
+  const json steel = {{"name", "steel"}, {"E", 210000.0}, {"nu", 0.3}};
+  const std::string material = refusal({{"type", "rolling"}}, 2, {{"materials", {steel}}});
+  EXPECT_NE(material.find("materials[0]: 'steel' is used by no body: a rolling pass makes its own materials from "
+                          "process.slab_E"),
+            std::string::npos)
+      << material;
+  for (const std::string friction : {"sticking", "frictionless"}) {
+    const std::string mu = refusal({{"type", "rolling"}, {"friction", friction}, {"friction_coefficient", 0.35}});
+    EXPECT_NE(mu.find("process.friction_coefficient: has no effect with process.friction: " + friction),
+              std::string::npos)
+        << mu;
+  }
+  EXPECT_EQ(refusal({{"type", "rolling"}, {"friction", "coulomb"}, {"friction_coefficient", 0.35}}), "accepted");
+  EXPECT_EQ(pass_of(2, {{"friction", "coulomb"}}).friction, 0.3);  // μ's default under Coulomb friction
+}
+
+TEST(RollingProcess, GeometryThatCannotBeBuiltIsRefusedAtTheProcesssPath) {
+  const std::string wide = refusal({{"type", "rolling"}, {"slab_width", 600.0}, {"barrel_width", 400.0}}, 3);
+  EXPECT_NE(wide.find("process.slab_width: 600 mm is wider than the roll barrel (process.barrel_width: 400 mm)"),
+            std::string::npos)
+      << wide;
+  EXPECT_EQ(refusal({{"type", "rolling"}, {"slab_width", 600.0}, {"barrel_width", 400.0}}), "accepted");  // 2D
+  const std::string hub = refusal({{"type", "rolling"}, {"roll_radius", 300.0}, {"roll_hub_radius", 350.0}});
+  EXPECT_NE(hub.find("process.roll_hub_radius: 350 mm must be smaller than process.roll_radius (300 mm)"),
+            std::string::npos)
+      << hub;
+  EXPECT_EQ(hub.find("bodies["), std::string::npos) << hub;
+}
+
+// The run's progress in the pass's own terms (rollsim run's progress line): the roll's travel done, of the whole.
+TEST(RollingProcess, ProgressCountsTheTravel) {
+  json j = {{"dimension", 2}, {"process", {{"type", "rolling"}, {"travel", 120.0}, {"travel_increment", 1.0}}}};
+  const RunConfig c = parse_project(j.dump(), "pass").config();
+  EXPECT_EQ(progress_text(c, 0.0), "travel 0 of 120 mm");
+  EXPECT_EQ(progress_text(c, 0.125), "travel 15 of 120 mm");
 }
