@@ -1,6 +1,7 @@
 #pragma once
-// The output folder of `rollsim run` holds one run: before a run writes, every file an earlier run wrote there
-// (summary.json, result.vtu, results.pvd and its results_NNNN.vtu, convergence.csv, the files a process writes —
+// The output folder of `rollsim run` holds one run: when a run takes the folder (io/RunFolder, before its analysis),
+// every file an earlier run wrote there (summary.json, result.vtu, last_converged.vtu, results.pvd and its
+// results_NNNN.vtu, convergence.csv, the files a process writes —
 // named by the caller, from the process registry — and the hidden temporaries of an interrupted write) is removed,
 // so a failed run never leaves an older result beside its own summary. Other files are kept.
 #include <filesystem>
