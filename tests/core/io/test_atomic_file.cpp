@@ -12,18 +12,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "../../common/FreshDir.h"
 #include "io/AtomicFile.h"
 
 using namespace rollsim;
 namespace fs = std::filesystem;
 
 namespace {
-fs::path fresh_dir(const std::string& tag) {
-  const fs::path d = fs::temp_directory_path() / ("rollsim-atomic-" + tag + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 std::string read(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream s;
@@ -46,7 +41,7 @@ mode_t mode_of(const fs::path& p) {
 
 // The reported case: under `ulimit -f 50` (SIGXFSZ ignored) the cut-off file was renamed into place as complete.
 TEST(AtomicFile, AWriteCutOffByTheFileSizeLimitFailsAndPublishesNothing) {
-  const fs::path d = fresh_dir("fsize");
+  const fs::path d = fresh_dir("atomic-fsize");
   const std::string big(200 * 1024, 'x');
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
@@ -75,7 +70,7 @@ TEST(AtomicFile, AWriteCutOffByTheFileSizeLimitFailsAndPublishesNothing) {
 }
 
 TEST(AtomicFile, AnExistingTargetKeepsItsPermissions) {
-  const fs::path d = fresh_dir("mode");
+  const fs::path d = fresh_dir("atomic-mode");
   put(d / "project.json", "{}");
   fs::permissions(d / "project.json", fs::perms::owner_read | fs::perms::owner_write);
   write_file_atomically(d / "project.json", "{\"a\": 1}\n");
@@ -85,7 +80,7 @@ TEST(AtomicFile, AnExistingTargetKeepsItsPermissions) {
 }
 
 TEST(AtomicFile, AReadOnlyTargetIsRefusedAndKept) {
-  const fs::path d = fresh_dir("readonly");
+  const fs::path d = fresh_dir("atomic-readonly");
   put(d / "project.json", "original");
   fs::permissions(d / "project.json", fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
   try {
@@ -100,7 +95,7 @@ TEST(AtomicFile, AReadOnlyTargetIsRefusedAndKept) {
 }
 
 TEST(AtomicFile, ASymlinkedTargetIsWrittenThroughAndStaysALink) {
-  const fs::path d = fresh_dir("link");
+  const fs::path d = fresh_dir("atomic-link");
   fs::create_directories(d / "real");
   put(d / "real" / "project.json", "old");
   fs::create_symlink("real/project.json", d / "project.json");
@@ -111,7 +106,7 @@ TEST(AtomicFile, ASymlinkedTargetIsWrittenThroughAndStaysALink) {
 }
 
 TEST(AtomicFile, APlantedTemporaryNameIsNeverFollowed) {
-  const fs::path d = fresh_dir("planted");
+  const fs::path d = fresh_dir("atomic-planted");
   put(d / "victim", "keep me");
   fs::create_symlink(d / "victim", d / ".project.json.tmp");  // the old fixed temporary name
   write_file_atomically(d / "project.json", "saved");

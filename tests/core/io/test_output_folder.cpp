@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "../../common/FreshDir.h"
 #include "io/AtomicFile.h"
 #include "io/OutputFolder.h"
 
@@ -16,12 +17,6 @@ using namespace rollsim;
 namespace fs = std::filesystem;
 
 namespace {
-fs::path fresh_dir(const std::string& tag) {
-  const fs::path d = fs::temp_directory_path() / ("rollsim-" + tag + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 void touch(const fs::path& p) { std::ofstream(p) << "x"; }
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../../common/FreshDir.h"
 #include "io/RunFolder.h"
 
 using namespace rollsim;
@@ -15,12 +16,6 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
-fs::path fresh_dir(const std::string& tag) {
-  const fs::path d = fs::temp_directory_path() / ("rollsim-runfolder-" + tag + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 json read_json(const fs::path& p) {
   std::ifstream in(p);
   return json::parse(in);
@@ -36,7 +31,7 @@ std::string message_of(const std::function<void()>& f) {
 }  // namespace
 
 TEST(RunFolder, TakesTheFolderRemovesTheEarlierRunAndSaysRunning) {
-  const fs::path d = fresh_dir("take") / "out";
+  const fs::path d = fresh_dir("runfolder-take") / "out";
   fs::create_directories(d);
   std::ofstream(d / "result.vtu") << "an earlier run's";
   std::ofstream(d / "notes.txt") << "the user's";
@@ -54,7 +49,7 @@ TEST(RunFolder, TakesTheFolderRemovesTheEarlierRunAndSaysRunning) {
 }
 
 TEST(RunFolder, ASecondOwnerIsRefusedNamingTheFirstUntilItEnds) {
-  const fs::path d = fresh_dir("busy");
+  const fs::path d = fresh_dir("runfolder-busy");
   const json stamp = RunStamp{"rollsim run first.json", "first.json"}.to_json();
   {
     const RunFolder first(d, stamp, {});
@@ -70,7 +65,7 @@ TEST(RunFolder, ASecondOwnerIsRefusedNamingTheFirstUntilItEnds) {
 }
 
 TEST(RunFolder, AReadOnlyFolderIsRefused) {
-  const fs::path d = fresh_dir("readonly");
+  const fs::path d = fresh_dir("runfolder-readonly");
   fs::permissions(d, fs::perms::owner_read | fs::perms::owner_exec);
   const std::string m = message_of([&] { RunFolder f(d, json::object(), {}); });
   EXPECT_NE(m.find("read-only"), std::string::npos) << m;
@@ -80,7 +75,7 @@ TEST(RunFolder, AReadOnlyFolderIsRefused) {
 }
 
 TEST(RunFolder, FreeSpaceIsComparedWithWhatTheResultsNeed) {
-  const fs::path d = fresh_dir("space");
+  const fs::path d = fresh_dir("runfolder-space");
   EXPECT_EQ(message_of([&] { check_free_space(d, 1e3); }), "");
   const std::string m = message_of([&] { check_free_space(d, 1e18); });
   EXPECT_NE(m.find("the results need at least 1000000000000.0 MB"), std::string::npos) << m;
@@ -89,7 +84,7 @@ TEST(RunFolder, FreeSpaceIsComparedWithWhatTheResultsNeed) {
 }
 
 TEST(RunFolder, TheProjectHashIsSha256OfItsBytes) {
-  const fs::path d = fresh_dir("hash");
+  const fs::path d = fresh_dir("runfolder-hash");
   std::ofstream(d / "abc") << "abc";
   EXPECT_EQ(file_sha256(d / "abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
   EXPECT_EQ(file_sha256(d / "missing"), "");
