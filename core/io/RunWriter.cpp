@@ -41,21 +41,18 @@ struct PendingFile {
 std::vector<PendingFile> files_of(const std::filesystem::path& dir, const Model& model, const Results& results,
                                   const OutputConfig& output, const RunSinks& sinks, size_t& increments_written) {
   std::vector<PendingFile> files;
-  if (!results.status.ok() && output.vtu && sinks.fields && has_converged_state(model, results)) {
-    files.push_back({kLastConverged, [&, dir] {
-                       sinks.fields->write_state(dir / kLastConverged, model, results, results.increments.size() - 1,
-                                                 output.fields);
-                     }});
-    if (results.increments.size() > 1 && output.all_increments)
-      files.push_back({"results.pvd", [&, dir] {
-                         increments_written = sinks.fields->write_increments(dir / "results.pvd", model, results,
-                                                                             output.fields, sinks.stop);
+  const bool converged = results.status.ok();
+  if (output.vtu && sinks.fields && (converged || has_converged_state(model, results))) {
+    if (converged)
+      files.push_back(
+          {"result.vtu", [&, dir] { sinks.fields->write_result(dir / "result.vtu", model, results, output.fields); }});
+    else
+      files.push_back({kLastConverged, [&, dir] {
+                         sinks.fields->write_state(dir / kLastConverged, model, results, results.increments.size() - 1,
+                                                   output.fields);
                        }});
-  }
-  if (results.status.ok() && output.vtu && sinks.fields) {
-    files.push_back(
-        {"result.vtu", [&, dir] { sinks.fields->write_result(dir / "result.vtu", model, results, output.fields); }});
-    if (results.load_increments > 1 && output.all_increments)
+    const bool several = converged ? results.load_increments > 1 : results.increments.size() > 1;
+    if (several && output.all_increments)
       files.push_back({"results.pvd", [&, dir] {
                          increments_written = sinks.fields->write_increments(dir / "results.pvd", model, results,
                                                                              output.fields, sinks.stop);
