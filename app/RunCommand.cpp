@@ -100,6 +100,8 @@ int report(const Project& project, const Results& results, const RunStatus& ende
               << ")\n";
     return exit_code(ended.status);
   }
+  if (!quiet && !results.status.message.empty())  // converged short of its load: the process ended it, and why
+    std::cerr << "rollsim: " << results.status.message << "\n";
   if (!quiet)
     std::fprintf(stderr, "rollsim: %s: %ld dofs, solver %s%s, %.3f s; results in %s/\n", project.name().c_str(),
                  results.dofs, info.mode.c_str(), results.auto_choice ? " (auto)" : "", results.timing.total_s,

@@ -26,7 +26,7 @@ constexpr double kIncrementsBegin = 0.2, kIncrementsEnd = 0.9;
 /// thread at solver speed. Whatever is pending goes out before any other signal, so the order is kept.
 class ForwardingObserver final : public AnalysisObserver {
  public:
-  explicit ForwardingObserver(AnalysisWorker& worker) : w_(worker) {}
+  ForwardingObserver(AnalysisWorker& worker, RunConfig config) : w_(worker), config_(std::move(config)) {}
   void on_stage(const std::string& stage) override {
     flush();
     emit w_.stageStarted(QString::fromStdString(stage));
@@ -35,6 +35,8 @@ class ForwardingObserver final : public AnalysisObserver {
   void on_increment_begin(int increment, int count) override {
     flush();
     emit w_.incrementStarted(increment, count);
+    emit w_.howFar(QString::fromStdString("increment " + std::to_string(increment) + ", " +
+                                          progress_text(config_, load_done_) + " done"));
   }
   void on_increment_end(int increment, int count) override {
     flush();
@@ -78,6 +80,7 @@ class ForwardingObserver final : public AnalysisObserver {
   }
   void on_progress(double fraction) override {
     flush();
+    load_done_ = fraction;
     advance(kIncrementsBegin + (kIncrementsEnd - kIncrementsBegin) * fraction);
   }
   bool cancel_requested() const override { return w_.cancel_requested(); }
@@ -101,6 +104,8 @@ class ForwardingObserver final : public AnalysisObserver {
     if (fraction > done_) emit w_.progress(done_ = fraction);
   }
   AnalysisWorker& w_;
+  const RunConfig config_;  // the process's terms of progress ("travel 12 of 120 mm")
+  double load_done_ = 0;    // the load factor of the last completed increment
   QVector<CgIteration> pending_;
   Clock::time_point last_batch_ = Clock::now();
   double done_ = 0;
@@ -143,8 +148,8 @@ void AnalysisWorker::thread_done() {
 
 void AnalysisWorker::run(const Project& project) {
   const auto start = std::chrono::steady_clock::now();
-  ForwardingObserver obs(*this);
   RunOutcome out;
+  ForwardingObserver obs(*this, project.config());
   try {
     obs.on_stage("build model");
     auto model = std::make_shared<const Model>(build_model(project));
@@ -154,7 +159,8 @@ void AnalysisWorker::run(const Project& project) {
     } else {
       auto results = std::make_shared<Results>(run_project(project, *model, &obs));
       out.status = QString::fromUtf8(to_string(results->status.status));
-      if (!results->status.ok()) out.error = QString::fromStdString(results->status.message);
+      // a run that did not converge says what stopped it; one the process ended early says why (Results::status)
+      out.message = QString::fromStdString(results->status.message);
       out.dofs = results->dofs;
       out.cg_iterations = results->solver.cg_iterations;
       out.solves = results->solver.solves;
@@ -162,7 +168,7 @@ void AnalysisWorker::run(const Project& project) {
     }
   } catch (const std::exception& e) {  // AnalysisError, ProjectError, std::invalid_argument: said to the user
     out.status = QStringLiteral("error");
-    out.error = QString::fromUtf8(e.what());
+    out.message = QString::fromUtf8(e.what());
   }
   obs.done(out.status == QLatin1String("converged"));
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

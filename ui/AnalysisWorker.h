@@ -24,8 +24,8 @@ struct CgIteration {
 
 /// How a run ended, with what it produced.
 struct RunOutcome {
-  QString status;  // converged / not_converged / diverged / cancelled / error (base/RunStatus.h)
-  QString error;   // what stopped the run, when it did not converge
+  QString status;   // converged / not_converged / diverged / cancelled / error (base/RunStatus.h)
+  QString message;  // what stopped the run when it did not converge; why its process ended it early when it did
   std::shared_ptr<const Model> model;
   // null on error or when cancelled before the first solve; after a cancel, the last iterate's fields
   // (Results::status)
@@ -58,6 +58,9 @@ class AnalysisWorker : public QObject {
   /// Load increment `increment` of `count` starts / is complete (the linear analysis: 1 of 1).
   void incrementStarted(int increment, int count);
   void incrementFinished(int increment, int count);
+  /// How far the run is as an increment starts, in its process's terms: "increment 3, travel 2 of 120 mm done" (the
+  /// load factor without a process) — a total that does not grow with every cut-back, as the increments' count does.
+  void howFar(const QString& text);
   /// Newton iteration of an increment, relative out-of-balance residual (from the nonlinear driver, once it exists).
   void newtonIteration(int increment, int iteration, double residual);
   /// Newton iteration `iteration` of `increment` refactors some groups and keeps the others' factors: `choices` says

@@ -114,7 +114,7 @@ MainWindow::MainWindow(QWidget* parent)
     statusBar()->showMessage(stage);
   });
   plot_->watch(worker_);
-  connect(worker_, &AnalysisWorker::incrementStarted, run_panel_, &RunPanel::set_increment);
+  connect(worker_, &AnalysisWorker::howFar, run_panel_, &RunPanel::set_progress_text);
   connect(worker_, &AnalysisWorker::tangentsChosen, this, [this](int increment, int iteration, const QString& choices) {
     log_->info(tr("increment %1, iteration %2: %3").arg(increment).arg(iteration).arg(choices));
   });
@@ -326,8 +326,8 @@ void MainWindow::run_finished(const RunOutcome& o) {
   const bool failed = o.status != QLatin1String("converged") && o.status != QLatin1String("cancelled");
   if (failed) {
     run_panel_->set_status(o.status);
-    log_->error(tr("run %1: %2").arg(o.status, o.error));
-    statusBar()->showMessage(o.error, 15000);
+    log_->error(tr("run %1: %2").arg(o.status, o.message));
+    statusBar()->showMessage(o.message, 15000);
     return;
   }
   run_panel_->set_status(tr("%1 — %2 dofs, %3 CG iterations, %4 s")
@@ -336,6 +336,7 @@ void MainWindow::run_finished(const RunOutcome& o) {
                              .arg(o.cg_iterations)
                              .arg(o.seconds, 0, 'f', 3));
   statusBar()->showMessage(tr("run %1 in %2 s").arg(o.status).arg(o.seconds, 0, 'f', 3));  // not the last stage
+  if (!o.message.isEmpty()) log_->info(tr("run %1: %2").arg(o.status, o.message));         // ended early by its process
   log_->info(tr("run %1: %2 dofs, %3 CG iterations, %4 s")
                  .arg(o.status)
                  .arg(o.dofs)

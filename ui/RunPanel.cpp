@@ -77,8 +77,8 @@ void RunPanel::set_running(bool running) {
   progress_->setFormat(QString());
 }
 
-void RunPanel::set_increment(int increment, int count) {
-  progress_->setFormat(tr("increment %1 of %2").arg(increment).arg(count));
+void RunPanel::set_progress_text(const QString& text) {
+  progress_->setFormat(text);
   progress_->setTextVisible(true);
 }
 

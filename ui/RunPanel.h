@@ -30,8 +30,8 @@ class RunPanel : public QWidget {
  public slots:
   void set_running(bool running);
   void set_progress(double fraction);
-  /// Shows "increment i of n" on the progress bar (the run's load increments).
-  void set_increment(int increment, int count);
+  /// Shows how far the run is on the progress bar (AnalysisWorker::howFar).
+  void set_progress_text(const QString& text);
   void set_status(const QString& status);
 
  signals:

@@ -507,7 +507,17 @@ Results NewtonRun::run() {
     // the count: the steps done and those left at the current step size (more than N after cut-backs)
     const int expected = increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9));
     obs_.on_increment_begin(increment + 1, std::max(expected, increment + 1));
-    const Attempt a = attempt(increment + 1, attempt_no, lf, target);
+    Attempt a;
+    try {
+      a = attempt(increment + 1, attempt_no, lf, target);
+    } catch (const AnalysisError& e) {  // before any increment, the model as given; after, the increments done stay
+      if (increment == 0) throw;
+      restore();
+      res.status = {Status::error, Reason::none,
+                    "increment " + std::to_string(increment + 1) + " (load factor " + fmt(lf) + " to " + fmt(target) +
+                        "): " + e.what()};
+      break;
+    }
     if (a.status.status == Status::cancelled) {
       restore();
       res.status = a.status;
@@ -551,6 +561,10 @@ Results NewtonRun::run() {
     obs_.on_increment_end(increment, increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9)));
     if (measure_ && lf < 1.0) obs_.on_measured(increment, measure_->measure(res.increments.back()));
     obs_.on_progress(lf);
+    if (std::string over = measure_ && lf < 1.0 ? measure_->over(res.increments.back()) : ""; !over.empty()) {
+      res.status = {Status::converged, Reason::none, over};
+      break;
+    }
     if (attempt_no == 0 && depth > 0) {  // grow back after a cut-back once a step converges at first attempt
       step *= 2;
       --depth;

@@ -21,12 +21,13 @@ std::string measure_csv(const MeasureTable& table) {
 }
 
 namespace {
-/// Whether a run that stopped short of convergence (not_converged, diverged, cancelled) completed an increment whose
-/// fields it kept.
+/// Whether a run that stopped short of convergence (not_converged, diverged, cancelled, or an error met after
+/// completed increments, short of the whole load) completed an increment whose fields it kept.
 bool has_converged_state(const Model& model, const Results& results) {
-  const Status s = results.status.status;  // `error`: the model was not solvable, no increment of it is a state
-  if (s != Status::not_converged && s != Status::diverged && s != Status::cancelled) return false;
+  const Status s = results.status.status;  // an `error` at the whole load: its fields are not a state (not finite)
+  if (results.status.ok() || s == Status::no_bite) return false;
   if (results.increments.empty() || results.increments.back().bodies.size() != model.bodies.size()) return false;
+  if (s == Status::error && results.increments.back().load_factor >= 1.0) return false;
   for (const BodyResults& b : results.increments.back().bodies)  // a state of 1e308 loads overflows: no NaN written
     if (!b.displacement.allFinite()) return false;
   return true;

@@ -1,6 +1,7 @@
 // How `rollsim run` ends when it does not converge (issue: never report a failed solve as a success): the status,
 // its reason and message in summary.json, the exit code (0 only for converged), the message on stderr, no result
-// files; a near-singular stiffness refused naming the body; an output folder holding one run only.
+// files; a near-singular stiffness refused naming the body; an output folder holding one run only; a pass asked
+// to roll past its slab's end converged where the rear end enters the gap.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -210,4 +211,28 @@ TEST(Statuses, EachCutBackIsToldOnTheProgressLineWithItsCause) {
   EXPECT_EQ(done.front(), 0.0);
   for (size_t i = 1; i < done.size(); ++i) EXPECT_GE(done[i], done[i - 1]) << r.err;
   fs::remove_all(dir);
+}
+
+TEST(Statuses, APassLongerThanItsSlabEndsConvergedWhenTheRearEndEntersTheGap) {
+  // issue 38: 500 mm of travel on a 300 mm slab computed 333 increments, then ended `error` ("the system is
+  // singular … add a support") with no increment kept. A 100 mm slab asked for 100 mm of travel: the rear end (at
+  // x = −100) reaches the entry of the arc (−√(R Δh) = −62.9 mm) after about 37 · h0/h1 ≈ 43 mm
+  json p = sample("rolling-2d-36x6");
+  p["process"]["slab_length"] = 100;
+  p["process"]["slab_nx"] = 12;
+  p["process"]["travel"] = 100;
+  p["process"]["travel_increment"] = 2;
+  const ProjectRun r = run_project(p, {});
+  ASSERT_EQ(r.result.exit_code, 0) << r.result.err;
+  EXPECT_EQ(r.summary["status"], "converged");
+  const std::string why = r.summary.value("message", "");
+  EXPECT_NE(why.find("the slab's rear end has entered the roll gap"), std::string::npos) << why;
+  EXPECT_NE(why.find("process.travel asked for 100 mm"), std::string::npos) << why;
+  const json& incs = r.summary["increments"];
+  ASSERT_FALSE(incs.empty());
+  const double travel = incs.back()["travel"];
+  EXPECT_GT(travel, 30.0);
+  EXPECT_LT(travel, 60.0);
+  EXPECT_TRUE(fs::exists(r.out + "/result.vtu"));
+  EXPECT_TRUE(fs::exists(r.out + "/rolling.csv"));
 }

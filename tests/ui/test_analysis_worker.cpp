@@ -1,11 +1,12 @@
 // Runs in the worker thread: stage, increment, progress, CG residual, solve and factorization signals arrive queued
 // on the GUI thread and reach the live plots, the run finishes converged, and a cancel mid-run (before the analysis,
 // between CG iterations) ends it "cancelled" with valid partial results and the worker ready for the next run; a
-// Newton step cut back is signalled with its cause.
+// Newton step cut back is signalled with its cause; a rolling pass's progress counts its travel.
 #include <QSignalSpy>
 #include <QThread>
 #include <QtTest>
 #include <cmath>
+#include <fstream>
 
 #include "../common/BentBeam.h"
 #include "AnalysisWorker.h"
@@ -85,7 +86,7 @@ class TestAnalysisWorker : public QObject {
     QSignalSpy finished(&worker, &AnalysisWorker::finished);
     ProjectDocument doc;
     RunPanel panel(&doc);
-    connect(&worker, &AnalysisWorker::incrementStarted, &panel, &RunPanel::set_increment);
+    connect(&worker, &AnalysisWorker::howFar, &panel, &RunPanel::set_progress_text);
     QVERIFY(panel.progress_text().isEmpty());
     Project p = sample("block-push-2d-50x30.json");  // floating block: projected CG in `mixed`
     p.data["solver"]["mode"] = "mixed";
@@ -108,7 +109,7 @@ class TestAnalysisWorker : public QObject {
     QCOMPARE(increments.count(), 1);
     QCOMPARE(increments.at(0).at(1).toInt(), 1);
     QCOMPARE(increments_done.count(), 1);
-    QCOMPARE(panel.progress_text(), QStringLiteral("increment 1 of 1"));
+    QCOMPARE(panel.progress_text(), QStringLiteral("increment 1, load factor 0 of 1 done"));
     // the plots got every point: after the throttle's last redraw they hold as many as the worker signalled
     QTRY_COMPARE_WITH_TIMEOUT(plots.residual_plot()->points(QStringLiteral("cg")), its.size(),
                               5 * RunPlots::kRefreshMs);
@@ -204,7 +205,7 @@ class TestAnalysisWorker : public QObject {
     QVERIFY(finished.wait(60000));
     const auto outcome = finished.at(0).at(0).value<RunOutcome>();
     QCOMPARE(outcome.status, QStringLiteral("error"));
-    QVERIFY(!outcome.error.isEmpty());
+    QVERIFY(!outcome.message.isEmpty());
   }
 
   void not_converged_is_reported_with_its_reason_and_no_fields() {
@@ -217,7 +218,7 @@ class TestAnalysisWorker : public QObject {
     QVERIFY(finished.wait(60000));
     const auto outcome = finished.at(0).at(0).value<RunOutcome>();
     QCOMPARE(outcome.status, QStringLiteral("not_converged"));
-    QVERIFY2(outcome.error.contains(QStringLiteral("round-off")), qPrintable(outcome.error));
+    QVERIFY2(outcome.message.contains(QStringLiteral("round-off")), qPrintable(outcome.message));
     QVERIFY(!outcome.results);  // nothing to colour the view with
   }
 
@@ -237,6 +238,25 @@ class TestAnalysisWorker : public QObject {
       QVERIFY2(args.at(1).toString().contains(QStringLiteral("no convergence in 4 iterations")),
                qPrintable(args.at(1).toString()));
     }
+  }
+
+  void a_rolling_pass_counts_its_progress_in_travel() {
+    // issue 38: the bar said "increment i of n", whose n grows with every cut-back; a pass counts its travel
+    AnalysisWorker worker;
+    QSignalSpy far(&worker, &AnalysisWorker::howFar);
+    QSignalSpy finished(&worker, &AnalysisWorker::finished);
+    std::ifstream file(ROLLSIM_SOURCE_DIR "/samples/rolling-2d-36x6.json");
+    json j = json::parse(file);
+    j["process"]["travel"] = 3;
+    QVERIFY(worker.start(parse_project(j.dump(), "pass.json")));
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.at(0).at(0).value<RunOutcome>().status, QStringLiteral("converged"));
+    // the first step is cut back (an element folds at the entry): the total stays the pass's 3 mm
+    QCOMPARE(strings(far), (QStringList{QStringLiteral("increment 1, travel 0 of 3 mm done"),
+                                        QStringLiteral("increment 1, travel 0 of 3 mm done"),
+                                        QStringLiteral("increment 2, travel 0.5 of 3 mm done"),
+                                        QStringLiteral("increment 3, travel 1 of 3 mm done"),
+                                        QStringLiteral("increment 4, travel 2 of 3 mm done")}));
   }
 
   void destroying_a_running_worker_cancels_and_joins() {

@@ -110,6 +110,13 @@ double mean_advance(const Mesh& slab, const std::vector<int>& nodes, const Eigen
 
 }  // namespace
 
+double rear_end(const Mesh& slab, const Eigen::VectorXd& u) {
+  const std::vector<int>& rear = slab.node_sets.at("xmin");
+  double x = 0;
+  for (int n : rear) x += current(slab, u, n)[0];
+  return rear.empty() ? 0.0 : x / static_cast<double>(rear.size());
+}
+
 RollingIncrement window_mean(const std::vector<RollingIncrement>& h, double from, double to) {
   RollingIncrement m;
   double weight = 0, before = 0;

@@ -40,6 +40,10 @@ RollingIncrement window_mean(const std::vector<RollingIncrement>& history, doubl
 /// two windows).
 int steady_state_from(const std::vector<RollingIncrement>& history, double window);
 
+/// Where the slab's rear end is along x (the mean of its node set xmin, deformed): the pass is over once it reaches
+/// the entry of the arc of contact.
+double rear_end(const Mesh& slab, const Eigen::VectorXd& u);
+
 /// One increment's travel, roll force and torque (the rest of the measures need the history: measure_rolling).
 RollingIncrement roll_load(const RollingPass& pass, const Model& model, const IncrementResults& increment);
 

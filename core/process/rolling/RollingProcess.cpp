@@ -41,7 +41,8 @@ const ObjectSchema& rolling_process_schema() {
       "`travel_increment` (they set analysis.increments). Entry: the slab starts pre-bitten — its front end lies at "
       "the exit plane with its top cut to the roll's surface over the arc of contact, touching the roll along the "
       "whole arc, as a pusher would leave it once the roll grips; its rear end is free, so only friction draws it "
-      "in. Units: mm and MPa (N/mm²).",
+      "in. The run ends, converged and saying why, once the slab's rear end enters the roll gap, whatever travel "
+      "is left. Units: mm and MPa (N/mm²).",
       {number("slab_length", "length", 300, 0, 1e6, "slab length along x (rolling direction)"),
        number("slab_width", "length", 350, 0, 1e6, "slab width (3D: along y; half is modelled)"),
        number("slab_thickness", "length", 100, 0, 1e6, "entry thickness h0 (half is modelled)"),

@@ -1,5 +1,7 @@
 #include "process/rolling/RollingRun.h"
 
+#include <cstdio>
+
 #include "process/rolling/RollingMeasures.h"
 #include "process/rolling/RollingReport.h"
 #include "process/rolling/RollingTheory.h"
@@ -29,6 +31,21 @@ ChartRequest RollingRun::live_chart() const { return history_chart(pass_, model_
 MeasureRow RollingRun::measure(const IncrementResults& increment) const {
   const RollingIncrement r = roll_load(pass_, model_, increment);
   return {r.travel, r.roll_force, r.roll_torque};
+}
+
+std::string RollingRun::over(const IncrementResults& increment) const {
+  if (increment.bodies.size() != model_.bodies.size()) return {};
+  const size_t slab = static_cast<size_t>(pass_.slab);
+  const double rear = rear_end(model_.bodies[slab].mesh, increment.bodies[slab].displacement);
+  const double entry = -rolling_theory(pass_).contact_length;  // the roll axis is at x = 0, the slab moves along +x
+  if (rear < entry) return {};
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "the pass is complete at travel %.4g mm: the slab's rear end has entered the roll gap (x = %.1f mm, "
+                "the arc of contact starts at x = %.1f mm); process.travel asked for %.4g mm, but the slab, drawn in "
+                "by friction alone, is not followed out of the roll",
+                increment.load_factor * pass_.travel, rear, entry, pass_.travel);
+  return text;
 }
 
 ProcessResults RollingRun::finish(const Results& results) const {

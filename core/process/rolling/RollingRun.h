@@ -1,6 +1,7 @@
 #pragma once
 // A rolling pass running on its model: refuses a pass the roll cannot bite, tells the observers each increment's
-// travel, roll force and torque, and measures the whole pass at the end (RollingMeasures, RollingReport).
+// travel, roll force and torque, ends the analysis once the slab's rear end enters the roll gap, and measures the whole
+// pass at the end (RollingMeasures, RollingReport).
 #include "process/Process.h"
 #include "process/rolling/RollingPass.h"
 
@@ -13,6 +14,7 @@ class RollingRun final : public ProcessRun {
   MeasureTable live_table() const override;
   ChartRequest live_chart() const override;
   MeasureRow measure(const IncrementResults& increment) const override;
+  std::string over(const IncrementResults& increment) const override;
   ProcessResults finish(const Results& results) const override;
 
  private:
