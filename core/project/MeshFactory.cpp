@@ -6,6 +6,7 @@
 
 #include "mesh/Annulus.h"
 #include "mesh/Cylinder.h"
+#include "mesh/MeshImport.h"
 #include "mesh/PlateWithHole.h"
 #include "mesh/RollGap.h"
 #include "mesh/RoundBar.h"
@@ -16,6 +17,11 @@ namespace rollsim {
 namespace {
 double num(const json& j, const char* k) { return j.at(k).get<double>(); }
 bool full_ring(const json& m) { return std::fabs(num(m, "end_angle") - num(m, "start_angle") - 360.0) < 1e-9; }
+
+/// The mesh of an `import` spec (its `file` already resolved against the project's folder: ModelBuilder).
+std::shared_ptr<const Mesh> imported(const json& m, int dim) {
+  return import_mesh(m.at("file").get<std::string>(), dim, m.value("element_set", std::string()));
+}
 
 RoundBarSpec round_bar_spec(const json& m) {
   RoundBarSpec s;
@@ -37,7 +43,13 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
   auto need_dim = [&](int d) {
     if (dim != d) issues.push_back({path + ".type", "'" + type + "' meshes are " + std::to_string(d) + "D only"});
   };
-  if (type == "block") {
+  if (type == "import") {
+    try {
+      imported(m, dim);
+    } catch (const MeshImportError& e) {
+      issues.push_back({path + ".file", e.what()});
+    }
+  } else if (type == "block") {
     for (const char* k : {"nz", "lz"}) {
       if (dim == 3 && !m.contains(k)) issues.push_back({path + "." + k, "is required in a 3D model"});
       if (dim == 2 && m.contains(k)) issues.push_back({path + "." + k, "not allowed in a 2D model"});
@@ -71,6 +83,13 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
 double estimated_elements(const json& m, int dim) {
   const auto type = m.at("type").get<std::string>();
   auto n = [&](const char* k) { return m.contains(k) ? m.at(k).get<double>() : 1.0; };
+  if (type == "import") {
+    try {
+      return imported(m, dim)->num_elements();
+    } catch (const MeshImportError&) {
+      return 0;  // check_mesh_spec says why
+    }
+  }
   if (type == "block") return n("nx") * n("ny") * (dim == 3 ? n("nz") : 1.0);
   if (type == "plate_with_hole" || type == "annulus") return n("n_around") * n("n_radial");
   if (type == "round_bar") return n("n_core") * (n("n_core") + 2.0 * n("n_ring")) * n("n_axial");
@@ -79,6 +98,14 @@ double estimated_elements(const json& m, int dim) {
 
 std::set<std::string> generator_set_names(const json& m, int dim) {
   const auto type = m.at("type").get<std::string>();
+  if (type == "import") {
+    std::set<std::string> s;
+    try {
+      for (const auto& [name, facets] : imported(m, dim)->surfaces) s.insert(name);
+    } catch (const MeshImportError&) {  // none: check_mesh_spec says why
+    }
+    return s;
+  }
   if (type == "block") {
     std::set<std::string> s{"xmin", "xmax", "ymin", "ymax"};
     if (dim == 3) s.insert({"zmin", "zmax"});
@@ -92,8 +119,19 @@ std::set<std::string> generator_set_names(const json& m, int dim) {
   return s;
 }
 
+std::set<std::string> generator_node_set_names(const json& m, int dim) {
+  if (m.at("type") != "import") return generator_set_names(m, dim);
+  std::set<std::string> s;
+  try {
+    for (const auto& [name, nodes] : imported(m, dim)->node_sets) s.insert(name);
+  } catch (const MeshImportError&) {  // none: check_mesh_spec says why
+  }
+  return s;
+}
+
 Mesh make_mesh(const json& m, int dim) {
   const auto type = m.at("type").get<std::string>();
+  if (type == "import") return *imported(m, dim);
   if (type == "block") {
     BlockSpec s;
     s.dim = dim;

@@ -41,8 +41,19 @@ void check_unique(const json& list, const std::string& path, std::vector<Issue>&
   }
 }
 
+/// `d` with every imported mesh's file resolved against the project file's folder: a relative path in a project is
+/// relative to where the project is, not to where rollsim runs.
+json with_mesh_files_resolved(json d, const std::string& source) {
+  const std::filesystem::path base = std::filesystem::path(source).parent_path();
+  for (json& body : d["bodies"])
+    if (json& m = body["mesh"]; m.value("type", "") == "import")
+      if (const std::filesystem::path f = m.at("file").get<std::string>(); f.is_relative())
+        m["file"] = (base / f).string();
+  return d;
+}
+
 std::set<std::string> node_set_names(const json& body, int dim) {
-  std::set<std::string> names = generator_set_names(body.at("mesh"), dim);
+  std::set<std::string> names = generator_node_set_names(body.at("mesh"), dim);
   names.insert("all");
   for (const auto& s : body.at("node_sets")) names.insert(s.at("name").get<std::string>());
   return names;
@@ -50,7 +61,7 @@ std::set<std::string> node_set_names(const json& body, int dim) {
 
 void check_node_sets(const json& body, const std::string& path, int dim, std::vector<Issue>& issues) {
   check_unique(body.at("node_sets"), path + ".node_sets", issues);
-  std::set<std::string> generated = generator_set_names(body.at("mesh"), dim);
+  std::set<std::string> generated = generator_node_set_names(body.at("mesh"), dim);
   generated.insert("all");
   for (size_t i = 0; i < body.at("node_sets").size(); ++i) {
     const json& s = body["node_sets"][i];
@@ -266,7 +277,7 @@ bool factors_bodies_whole(const json& d) {
 void check_references(const Project& project, std::vector<Issue>& issues) {
   if (const Process* process = process_of(project.data)) process->check(project.data, issues);
   if (!issues.empty()) return;  // the generated bodies would repeat the process's problem under their own paths
-  const json d = expand_process(project.data);
+  const json d = with_mesh_files_resolved(expand_process(project.data), project.source);
   const int dim = project.dimension();
   if (d.at("bodies").empty()) issues.push_back({"bodies", "no body: give `bodies` or a `process`"});
   if (d.at("materials").empty()) issues.push_back({"materials", "no material: give `materials` or a `process`"});
@@ -480,7 +491,7 @@ void add_contacts(Model& model, const json& d) {
 }  // namespace
 
 Model build_model(const Project& project) {
-  const json d = expand_process(project.data);
+  const json d = with_mesh_files_resolved(expand_process(project.data), project.source);
   Model model;
   model.dim = project.dimension();
   std::vector<Issue> issues;

@@ -119,6 +119,21 @@ const ObjectSchema kRoundBar{
     "",
     {}};
 
+const ObjectSchema kImport{
+    "imported mesh",
+    "A mesh read from a file, the reader chosen by its extension: .inp, a CalculiX / Abaqus input deck (*NODE, "
+    "*ELEMENT, *NSET, *ELSET, *SURFACE with TYPE=ELEMENT, *INCLUDE; other keywords are not read). Linear "
+    "quadrilaterals (CPE4, CPS4, CAX4 and their R/H/I variants; z = 0) in 2D, hexahedra (C3D8 and variants) in 3D; "
+    "triangles, tetrahedra, wedges and quadratic elements are refused. The deck's node sets and element-face surfaces "
+    "become the body's sets, named in lower case (CalculiX upper-cases names); each surface is also a node set, and "
+    "`all` holds every node. The element formulation, material and kinematics are the body's, never the deck's.",
+    {req(str("file", "the mesh file; a relative path is relative to the project file's folder")),
+     str("element_set",
+         "the deck's element set holding this body's elements (default: every element), e.g. E_SLAB of a deck "
+         "written by `rollsim export-ccx`")},
+    "",
+    {}};
+
 const ObjectSchema kMesh{"mesh",
                          "Mesh generator of a body, selected by `type`.",
                          {},
@@ -127,7 +142,8 @@ const ObjectSchema kMesh{"mesh",
                           {"plate_with_hole", &kPlate},
                           {"annulus", &kAnnulus},
                           {"cylinder", &kCylinder},
-                          {"round_bar", &kRoundBar}}};
+                          {"round_bar", &kRoundBar},
+                          {"import", &kImport}}};
 
 Field tolerance() {
   Field f = num("tolerance", "length", "distance tolerance of `box` (default: 1e-6 of the body size)");

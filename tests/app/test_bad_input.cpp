@@ -267,7 +267,7 @@ std::vector<Case> field_cases() {
       set("unknown condition field", "/boundary_conditions/0/uxx", 0, "boundary_conditions[0].uxx", "unknown field"),
       set("misspelt E", "/materials/0/e", 1000, "materials[0].e", "unknown field"),
       set("unknown mesh type", "/bodies/0/mesh/type", "sphere", "bodies[0].mesh.type",
-          "must be one of annulus, block, cylinder, plate_with_hole, round_bar, got \"sphere\""),
+          "must be one of annulus, block, cylinder, import, plate_with_hole, round_bar, got \"sphere\""),
       set("unknown condition type", "/boundary_conditions/0/type", "glue", "boundary_conditions[0].type",
           "got \"glue\""),
       set("unknown solver", "/solver/mode", "fast", "solver.mode", "must be one of"),

@@ -1,0 +1,71 @@
+// A mesh imported from a CalculiX deck (`mesh.type: import`): the deck `rollsim export-ccx` writes of a two-body
+// model, read back body by body through its element sets, gives the same model and the same results as the
+// generated meshes it came from; its path is relative to the project file; a deck the importer cannot read is
+// invalid input at the mesh's `file` (exit 2), for `check` as for `run`.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "RunBinary.h"
+
+using json = nlohmann::json;
+
+namespace {
+const std::string kSample = ROLLSIM_SOURCE_DIR "/samples/block-indent-3d-10x6x4.json";
+
+/// The sample with both meshes read from `deck` (each body its element set E_<NAME>) and the deck's set names.
+json imported(const std::string& deck) {
+  json p = json::parse(read_text(kSample));
+  p["bodies"][0]["mesh"] = {{"type", "import"}, {"file", deck}, {"element_set", "E_BASE"}};
+  p["bodies"][1]["mesh"] = {{"type", "import"}, {"file", deck}, {"element_set", "e_block"}};  // any case
+  p["boundary_conditions"][0]["set"] = "n_base_zmin";
+  p["boundary_conditions"][1]["set"] = "n_block_zmax";
+  p["contacts"][0]["slave_surface"] = "s_base_zmax";
+  p["contacts"][0]["master_surface"] = "s_block_zmin";
+  return p;
+}
+}  // namespace
+
+TEST(MeshImport, AnExportedDeckReadBackGivesTheSameResults) {
+  const std::string dir = make_temp_dir("mesh-import");
+  ASSERT_EQ(run_rollsim({"export-ccx", kSample, dir + "/deck.inp"}).exit_code, 0);
+  write_text(dir + "/p.json", imported("deck.inp").dump(1));  // relative to the project file, not to the cwd
+  const RunResult a = run_rollsim({"run", kSample, "--out", dir + "/generated", "--quiet"});
+  const RunResult b = run_rollsim({"run", dir + "/p.json", "--out", dir + "/imported", "--quiet"});
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const json sa = json::parse(read_text(dir + "/generated/summary.json"));
+  const json sb = json::parse(read_text(dir + "/imported/summary.json"));
+  EXPECT_EQ(sa["model"]["nodes"], sb["model"]["nodes"]);
+  EXPECT_EQ(sa["model"]["elements"], sb["model"]["elements"]);
+  const json& ca = sa["results"]["contact"]["block-base"];
+  const json& cb = sb["results"]["contact"]["block-base"];
+  EXPECT_EQ(ca["active_nodes"], cb["active_nodes"]);
+  EXPECT_NEAR(ca["normal_force"].get<double>(), cb["normal_force"].get<double>(),
+              1e-12 * std::abs(ca["normal_force"].get<double>()));
+  const json& pa = sa["results"]["probes"]["base-centre"]["displacement"];
+  const json& pb = sb["results"]["probes"]["base-centre"]["displacement"];
+  for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(pa[k].get<double>(), pb[k].get<double>(), 1e-15);
+}
+
+TEST(MeshImport, AnUnreadableDeckIsInvalidInputAtTheMeshFile) {
+  const std::string dir = make_temp_dir("mesh-import-bad");
+  write_text(dir + "/tets.inp",
+             "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n*ELEMENT, TYPE=C3D4, ELSET=E_BASE\n"
+             "1, 1,2,3,4\n");
+  write_text(dir + "/p.json", imported("tets.inp").dump(1));
+  write_text(dir + "/q.json", imported("nowhere.inp").dump(1));
+  for (const std::vector<std::string>& command : {std::vector<std::string>{"check", dir + "/p.json"},
+                                                  {"run", dir + "/p.json", "--out", dir + "/out", "--quiet"}}) {
+    const RunResult r = run_rollsim(command);
+    EXPECT_EQ(r.exit_code, 2) << command[0] << "\n" << r.err;
+    EXPECT_NE(r.err.find("bodies[0].mesh.file: " + dir + "/tets.inp: element 1 is a C3D4: tetrahedra are not"),
+              std::string::npos)
+        << r.err;
+  }
+  const RunResult r = run_rollsim({"check", dir + "/q.json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("nowhere.inp: cannot be read"), std::string::npos) << r.err;
+}
