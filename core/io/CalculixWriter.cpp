@@ -1,6 +1,8 @@
 // CalculiX .inp writer: *NODE, *ELEMENT, *NSET, *MATERIAL, *BOUNDARY, *CLOAD, *DLOAD, one static step.
 #include "io/CalculixWriter.h"
 
+#include "fem/Loads.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -181,11 +183,32 @@ void write_contacts(std::ostringstream& s, const Model& m, const Offsets& o) {
   }
 }
 
+/// Body forces as CalculiX's own element loads BX, BY, BZ (force per volume) on the body's element set; tractions,
+/// which CalculiX's *DLOAD does not take, as their consistent nodal forces (fem/Loads), node by node.
+void write_body_loads(std::ostringstream& s, const Model& m, const Offsets& o) {
+  if (!m.body_forces.empty()) {
+    s << "*DLOAD\n";
+    for (const BodyForce& f : m.body_forces)
+      for (int c = 0; c < m.dim; ++c)
+        if (f.value[c] != 0.0)
+          s << "E_" << sanitize(m.bodies[f.body].name) << ", B"
+            << "XYZ"[c] << ", " << num(f.value[c]) << "\n";
+  }
+  if (m.tractions.empty()) return;
+  s << "*CLOAD\n";
+  for (const Traction& t : m.tractions) {
+    const Eigen::VectorXd F = traction_nodal_load(m.bodies[t.body].mesh, t);
+    for (Eigen::Index i = 0; i < F.size(); ++i)
+      if (F[i] != 0.0) s << o.node[t.body] + i / m.dim + 1 << ", " << i % m.dim + 1 << ", " << num(F[i]) << "\n";
+  }
+}
+
 void write_step(std::ostringstream& s, const Model& m, const Offsets& o) {
   s << "*STEP\n*STATIC\n";
   write_boundary(s, m);
   write_forces(s, m);
   write_pressures(s, m, o);
+  write_body_loads(s, m, o);
   std::set<std::string> printed;
   for (const auto& bc : m.displacements) {
     const std::string name = calculix_set_name(m, bc.body, bc.set);

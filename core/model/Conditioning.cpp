@@ -6,9 +6,9 @@
 namespace rollsim {
 
 namespace {
-std::string number(double v) {
+std::string number(double v, int digits = 3) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
   return text;
 }
 
@@ -33,7 +33,7 @@ void locking(const Model& model, std::vector<std::string>& warnings) {
   for (const Body& b : model.bodies) {
     const double nu = b.material.nu;
     if (b.formulation != Formulation::Full || nu <= kLockingPoisson) continue;
-    warnings.push_back("body '" + b.name + "' is nearly incompressible (ν = " + number(nu) + ", bulk modulus " +
+    warnings.push_back("body '" + b.name + "' is nearly incompressible (ν = " + number(nu, 6) + ", bulk modulus " +
                        number(2 * (1 + nu) / (3 * (1 - 2 * nu))) +
                        " times the shear modulus) under full integration, which locks: its displacements come out "
                        "far too small — use \"formulation\": \"bbar\"");

@@ -56,6 +56,20 @@ struct Pressure {
   double value = 0.0;
 };
 
+/// Uniform traction on a surface [force / length^2]: a vector per unit area of the undeformed surface (a dead load:
+/// it neither turns nor grows with the surface), in 2D per unit length and unit thickness.
+struct Traction {
+  int body = 0;
+  std::string surface;
+  std::array<double, 3> value{0.0, 0.0, 0.0};
+};
+
+/// Uniform body force [force / length^3] per unit undeformed volume (weight: density × g), in 2D per unit thickness.
+struct BodyForce {
+  int body = 0;
+  std::array<double, 3> value{0.0, 0.0, 0.0};
+};
+
 struct Probe {
   std::string name;
   std::array<double, 3> at{};
@@ -98,6 +112,8 @@ struct Model {
   std::vector<DisplacementBC> displacements;
   std::vector<NodalForce> forces;
   std::vector<Pressure> pressures;
+  std::vector<Traction> tractions;
+  std::vector<BodyForce> body_forces;
   std::vector<Probe> probes;
   std::vector<ContactPair> contacts;
   std::vector<std::string> warnings;  // said to the user, e.g. a partition piece split automatically

@@ -90,6 +90,14 @@ void check_rotation(const json& bc, const std::string& path, int dim, std::vecto
   if (!(n2 > 0)) issues.push_back({path + ".axis", "must not be the zero vector"});
 }
 
+/// The components <p>x, <p>y (, <p>z) of a condition: at least one, no z in 2D.
+void check_components(const json& bc, const std::string& path, const std::string& p, int dim,
+                      std::vector<Issue>& issues) {
+  if (dim == 2 && bc.contains(p + "z")) issues.push_back({path + "." + p + "z", "not allowed in a 2D model"});
+  if (!bc.contains(p + "x") && !bc.contains(p + "y") && !bc.contains(p + "z"))
+    issues.push_back({path, "sets no component (give " + p + "x, " + p + "y" + (dim == 3 ? ", " + p + "z" : "") + ")"});
+}
+
 void check_condition(const json& bc, const std::string& path, const json& bodies, int dim, std::vector<Issue>& issues) {
   const auto body_name = bc.at("body").get<std::string>();
   const int b = find_named(bodies, body_name);
@@ -99,7 +107,12 @@ void check_condition(const json& bc, const std::string& path, const json& bodies
   }
   const json& body = bodies[static_cast<size_t>(b)];
   const auto type = bc.at("type").get<std::string>();
-  if (type == "pressure") {
+  if (type == "body_force") {
+    check_components(bc, path, "b", dim, issues);
+    return;
+  }
+  if (type == "traction") check_components(bc, path, "t", dim, issues);
+  if (type == "pressure" || type == "traction") {
     const auto names = generator_set_names(body.at("mesh"), dim);
     const auto s = bc.at("surface").get<std::string>();
     if (!names.count(s))
@@ -115,13 +128,7 @@ void check_condition(const json& bc, const std::string& path, const json& bodies
   if (type == "symmetry" && dim == 2 && bc.at("normal") == "z")
     issues.push_back({path + ".normal", "must be x or y in a 2D model"});
   if (type == "rotation") check_rotation(bc, path, dim, issues);
-  if (type == "displacement" || type == "force") {
-    const std::string p = type == "force" ? "f" : "u";
-    if (dim == 2 && bc.contains(p + "z")) issues.push_back({path + "." + p + "z", "not allowed in a 2D model"});
-    if (!bc.contains(p + "x") && !bc.contains(p + "y") && !bc.contains(p + "z"))
-      issues.push_back(
-          {path, "sets no component (give " + p + "x, " + p + "y" + (dim == 3 ? ", " + p + "z" : "") + ")"});
-  }
+  if (type == "displacement" || type == "force") check_components(bc, path, type == "force" ? "f" : "u", dim, issues);
 }
 
 // The name is the default output directory results/<name>: it must stay one plain directory name.
@@ -385,17 +392,28 @@ void add_condition(Model& model, const json& bc, const json& bodies, int source)
   const int b = find_named(bodies, bc.at("body").get<std::string>());
   const Mesh& m = model.bodies[static_cast<size_t>(b)].mesh;
   const auto type = bc.at("type").get<std::string>();
+  const char* axes = "xyz";
+  const auto components = [&](char p) {
+    std::array<double, 3> v{0.0, 0.0, 0.0};
+    for (int c = 0; c < 3; ++c) v[c] = bc.value(std::string(1, p) + axes[c], 0.0);
+    return v;
+  };
   if (type == "pressure") {
     model.pressures.push_back({b, bc.at("surface").get<std::string>(), bc.at("value").get<double>()});
     return;
   }
+  if (type == "traction") {
+    model.tractions.push_back({b, bc.at("surface").get<std::string>(), components('t')});
+    return;
+  }
+  if (type == "body_force") {
+    model.body_forces.push_back({b, components('b')});
+    return;
+  }
   const auto set = bc.at("set").get<std::string>();
   const std::vector<int>& nodes = m.node_sets.at(set);
-  const char* axes = "xyz";
   if (type == "force") {
-    NodalForce f{b, set, nodes, {0.0, 0.0, 0.0}};
-    for (int c = 0; c < 3; ++c) f.value[c] = bc.value(std::string("f") + axes[c], 0.0);
-    model.forces.push_back(std::move(f));
+    model.forces.push_back({b, set, nodes, components('f')});
     return;
   }
   DisplacementBC d{b, set, nodes, {}, source, std::nullopt};

@@ -265,6 +265,24 @@ const ObjectSchema kPressure{
     "",
     {}};
 
+const ObjectSchema kTraction{
+    "traction condition",
+    "Uniform traction on a surface: a force per unit area in any direction (shear and normal), on the undeformed "
+    "surface — a dead load, which neither turns nor grows as the surface moves. 2D: force per unit length and unit "
+    "thickness. Unset components: 0.",
+    {req(str("body", "body name")), req(str("surface", "name of a surface of the body")),
+     num("tx", "stress", "x component"), num("ty", "stress", "y component"), num("tz", "stress", "z component (3D)")},
+    "",
+    {}};
+const ObjectSchema kBodyForce{
+    "body force condition",
+    "Uniform body force on every element of a body: force per unit undeformed volume (weight: density × g, e.g. "
+    "7.85e-9 t/mm³ × 9810 mm/s² = 7.7e-5 N/mm³ for steel in mm, N). 2D: per unit thickness. Unset components: 0.",
+    {req(str("body", "body name")), num("bx", "force/volume", "x component"), num("by", "force/volume", "y component"),
+     num("bz", "force/volume", "z component (3D)")},
+    "",
+    {}};
+
 const ObjectSchema kBC{"boundary condition",
                        "Boundary condition or load, selected by `type`.",
                        {},
@@ -273,7 +291,9 @@ const ObjectSchema kBC{"boundary condition",
                         {"symmetry", &kSym},
                         {"rotation", &kRotation},
                         {"force", &kForce},
-                        {"pressure", &kPressure}}};
+                        {"pressure", &kPressure},
+                        {"traction", &kTraction},
+                        {"body_force", &kBodyForce}}};
 
 const ObjectSchema kContact{
     "contact pair",

@@ -1,7 +1,8 @@
 // CalculiX export: the .inp structure of a 2×1 block, element orientation, and (when `ccx` is on PATH) the same
-// total reactions as our analysis on small 2D and 3D cantilevers, with prescribed tips, forces and pressures; 3D
-// contact written as *TIE / *CONTACT PAIR on element-face surfaces and giving CalculiX the same contact force (tied:
-// to 1e-5; frictionless: within the penalty's 3 %), 2D contact refused (it exported unconnected bodies before).
+// total reactions as our analysis on small 2D and 3D cantilevers, with prescribed tips, forces, pressures, body
+// forces and tractions; 3D contact written as *TIE / *CONTACT PAIR on element-face surfaces and giving CalculiX the
+// same contact force (tied: to 1e-5; frictionless: within the penalty's 3 %), 2D contact refused (it exported
+// unconnected bodies before).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -209,6 +210,10 @@ TEST(CalculixWriter, SameReactionsAsCalculix2D) {
                             R"(, {"type": "pressure", "body": "beam", "surface": "ymax", "value": 0.25})";
   expect_same_reactions(cantilever(2, {8, 4, 1}, tip), "2d-tip");
   expect_same_reactions(cantilever(2, {8, 4, 1}, loads), "2d-loads");
+  // a body force (CalculiX integrates its BX, BY itself) and a shear traction (written as our nodal forces)
+  const std::string body = R"(, {"type": "body_force", "body": "beam", "bx": 0.3, "by": -2})"
+                           R"(, {"type": "traction", "body": "beam", "surface": "ymax", "tx": -1, "ty": 0.5})";
+  expect_same_reactions(cantilever(2, {8, 4, 1}, body), "2d-body");
 }
 
 TEST(CalculixWriter, SameReactionsAsCalculix3D) {
@@ -219,6 +224,9 @@ TEST(CalculixWriter, SameReactionsAsCalculix3D) {
                             R"(, {"type": "pressure", "body": "beam", "surface": "ymin", "value": 2})";
   expect_same_reactions(cantilever(3, {4, 2, 2}, tip), "3d-tip");
   expect_same_reactions(cantilever(3, {4, 2, 2}, loads), "3d-loads");
+  const std::string body = R"(, {"type": "body_force", "body": "beam", "by": 0.4, "bz": -2})"
+                           R"(, {"type": "traction", "body": "beam", "surface": "zmax", "tx": -1, "tz": 0.5})";
+  expect_same_reactions(cantilever(3, {4, 2, 2}, body), "3d-body");
 }
 
 namespace {
