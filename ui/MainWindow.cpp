@@ -350,8 +350,13 @@ void MainWindow::run_finished(const RunOutcome& o) {
 
 void MainWindow::show_results_view() {
   if (view_->has_results()) {
-    view_->set_color_by(color_by::Displacement);
-    view_->set_deformation_scale(0);
+    // a process says how its results read first (a rolling pass: deformed, by plastic strain, on the roll gap)
+    const ProcessResults* process =
+        view_->results() && view_->results()->process ? &*view_->results()->process : nullptr;
+    const bool own = process && view_->can_color_by(QString::fromStdString(process->view.field));
+    view_->set_color_by(own ? QString::fromStdString(process->view.field) : color_by::Displacement);
+    view_->set_deformation_scale(process && process->view.deformed ? 1.0 : 0.0);
+    if (process && process->view.box) view_->frame(*process->view.box);
   }
   view_bar_->refresh();
   plot_->flush();

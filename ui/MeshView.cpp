@@ -319,6 +319,16 @@ double MeshView::suggested_deformation_scale() const {
 }
 
 void MeshView::reset_camera() {
+  framed_.reset();
+  fit(bounds());
+}
+
+void MeshView::frame(const std::array<double, 6>& box) {
+  framed_ = box;
+  fit(box);
+}
+
+void MeshView::fit(const std::array<double, 6>& box) {
   vtkCamera* cam = renderer_->GetActiveCamera();
   if (model_ && model_->dim == 2) {
     cam->SetPosition(0, 0, 1);
@@ -331,9 +341,9 @@ void MeshView::reset_camera() {
     cam->SetViewUp(0, 0, 1);
     cam->ParallelProjectionOff();
   }
-  renderer_->ResetCamera();
+  std::array<double, 6> b = box;
+  renderer_->ResetCamera(b.data());
   if (model_ && model_->dim == 2 && width() > 0 && height() > 0) {  // fit width and height, 8 % margin
-    const auto b = bounds();
     // the legend with its names (drawn left of the swatches) takes the right 30 %: the mesh is fitted into and
     // centred on the rest
     constexpr double legend = 0.3;
@@ -354,7 +364,7 @@ void MeshView::reset_camera() {
 
 void MeshView::resizeEvent(QResizeEvent* event) {
   QVTKOpenGLNativeWidget::resizeEvent(event);
-  if (camera_fitted_ && model_) reset_camera();
+  if (camera_fitted_ && model_) framed_ ? fit(*framed_) : reset_camera();
 }
 
 void MeshView::mousePressEvent(QMouseEvent* event) {

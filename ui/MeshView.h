@@ -13,6 +13,7 @@ class vtkIntArray;
 #include <array>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "analysis/Results.h"
 #include "model/Model.h"
@@ -84,6 +85,13 @@ class MeshView : public QVTKOpenGLNativeWidget {
   /// A scale that makes the largest displacement 10 % of the model size (1 without results).
   double suggested_deformation_scale() const;
   void reset_camera();
+  /// Fits the camera to `box` ([min x, max x, min y, max y, min z, max z]: a process's region, e.g. the roll gap)
+  /// instead of the whole model, until reset_camera.
+  void frame(const std::array<double, 6>& box);
+  /// frame()'s box while the camera holds it (empty after reset_camera or once the user turns the camera).
+  std::optional<std::array<double, 6>> framed() const {
+    return camera_fitted_ ? framed_ : std::optional<std::array<double, 6>>{};
+  }
   /// Writes what is shown (model and, after a run, results) as .vtu through vtkio. Throws on failure.
   void export_vtu(const std::filesystem::path& file) const;
   /// Writes the run's increments as a ParaView collection (`file`.pvd and one .vtu per increment beside it) through
@@ -135,6 +143,8 @@ class MeshView : public QVTKOpenGLNativeWidget {
   bool recolour_faces(vtkIntArray& cell_ids);
   void render();
   std::array<double, 6> bounds() const;
+  void fit(const std::array<double, 6>& box);    // the camera on `box`, the view's legend kept clear of it
+  std::optional<std::array<double, 6>> framed_;  // frame()'s box, kept over resizes
 
   vtkNew<vtkGenericOpenGLRenderWindow> window_;
   vtkNew<vtkRenderer> renderer_;

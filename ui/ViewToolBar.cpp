@@ -65,6 +65,11 @@ void ViewToolBar::refresh() {
     if (color_->itemData(i).toString() == view_->color_by()) color_->setCurrentIndex(i);
   deformed_->setEnabled(results);
   scale_->setEnabled(results);
+  {  // the view's deformation as the bar shows it (a process may open its results deformed ×1)
+    const QSignalBlocker a(deformed_), b(scale_);
+    deformed_->setChecked(results && view_->deformation_scale() > 0);
+    if (view_->deformation_scale() > 0) scale_->setValue(view_->deformation_scale());
+  }
   const int count = view_->increment_count();
   const QSignalBlocker quiet(increment_);  // showing the view's state is not a request to change it
   increment_->setRange(1, std::max(count, 1));

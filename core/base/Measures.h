@@ -3,7 +3,9 @@
 // them (per increment, or along a profile), the charts a process asks for, and the process's results. The Newton
 // driver, Results, the observers and the writers speak of these only; what a measure means is its process's
 // (core/process/). A unit is written once, in the measure's declaration.
+#include <array>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,6 +82,14 @@ struct ProcessResults {
   std::vector<ChartRequest> charts;
   nlohmann::json summary;           // results.<process>: steady values, units, closed forms
   std::vector<std::string> report;  // "roll force 7.25e+03 N/mm, …": what a front end prints
+  /// How a view first shows the results, in the process's terms: the box where it happens (x, y, z ranges in the
+  /// model's coordinates, as [min x, max x, min y, max y, min z, max z]; a rolling pass: the roll gap), the field
+  /// (an output field's name, e.g. plastic_strain) and whether deformed ×1; empty box: the whole model.
+  struct View {
+    std::optional<std::array<double, 6>> box;
+    std::string field;
+    bool deformed = false;
+  } view;
   const MeasureTable* table(const std::string& key) const {
     for (const MeasureTable& t : tables)
       if (t.name == key) return &t;

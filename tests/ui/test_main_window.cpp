@@ -253,6 +253,14 @@ class TestMainWindow : public QObject {
     QCOMPARE(rolling->increments(), static_cast<int>(outcome.results->process->table("rolling")->rows.size()));
     QCOMPARE(rolling->increments(), live.count() + 1);
     QVERIFY(rolling->findChild<QWidget*>(QStringLiteral("processProfile"))->isVisible());
+    // the results open as a rolling engineer reads them: deformed ×1, by plastic strain, on the roll gap
+    QCOMPARE(w.view()->color_by(), QStringLiteral("plastic_strain"));
+    QCOMPARE(w.view()->deformation_scale(), 1.0);
+    QVERIFY(w.view()->framed());
+    const double contact = std::sqrt(300.0 * 13.2);  // √(R Δh) of the default pass
+    QCOMPARE((*w.view()->framed())[0], -2 * contact);
+    w.view()->reset_camera();
+    QVERIFY(!w.view()->framed());
     w.plot()->clear();
     QVERIFY(!rolling->isVisible());
   }

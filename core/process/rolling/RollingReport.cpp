@@ -149,6 +149,13 @@ ProcessResults rolling_results(const RollingPass& pass, int dim, const RollingRe
   p.charts = {history_chart(pass, dim, r, true), profile_chart()};
   p.summary = rolling_summary(pass, dim, r);
   p.report = rolling_report(pass, dim, r);
+  // the roll gap: from two contact lengths before the exit plane to one after it, the slab's half thickness and a
+  // margin above it (the roll's lowest part), its whole modelled width
+  const double contact = rolling_theory(pass).contact_length, h = pass.entry_thickness / 2;
+  const double up = h + 0.5 * contact;
+  std::array<double, 6> box{-2 * contact, contact, 0, up, 0, 0};
+  if (dim == 3) box = {-2 * contact, contact, pass.half_width ? 0 : -pass.width / 2, pass.width / 2, 0, up};
+  p.view = {box, "plastic_strain", true};
   return p;
 }
 
