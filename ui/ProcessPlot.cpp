@@ -39,7 +39,8 @@ void ProcessPlot::clear() {
 
 void ProcessPlot::show_chart(QChartView* view, QChart* chart, const std::string& title) {
   make_compact(chart);
-  chart->setTitle(QString::fromStdString(title));  // the units in the title: a short vertical axis title is elided
+  // the units in the title (a short vertical axis title is elided), its parts ("; ") one per line: never cut
+  chart->setTitle(QString::fromStdString(title).toHtmlEscaped().replace(QStringLiteral("; "), QStringLiteral("<br>")));
   for (QAbstractAxis* a : chart->axes(Qt::Vertical)) a->setTitleVisible(false);
   QChart* old = view->chart();
   view->setChart(chart);  // the view releases the old chart without deleting it

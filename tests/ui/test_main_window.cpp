@@ -74,6 +74,18 @@ class TestMainWindow : public QObject {
     QVERIFY(w.windowTitle().startsWith(QStringLiteral("plate-hole-2d.json")));
   }
 
+  void a_generated_pass_says_where_its_bodies_come_from() {
+    // issue 36: the tree showed "materials (0)", "bodies (0)" for the rolling pass, whose process generates them
+    MainWindow w;
+    w.new_project();
+    QStringList sections;
+    for (int i = 0; i < w.tree()->topLevelItem(0)->childCount(); ++i)
+      sections << w.tree()->topLevelItem(0)->child(i)->text(0);
+    QVERIFY2(sections.contains(QStringLiteral("bodies (0 + 2 from the process)")), qPrintable(sections.join(", ")));
+    QVERIFY2(sections.contains(QStringLiteral("materials (0 + 2 from the process)")), qPrintable(sections.join(", ")));
+    QVERIFY2(sections.contains(QStringLiteral("probes (0)")), qPrintable(sections.join(", ")));
+  }
+
   void editing_a_count_regenerates_the_mesh() {
     MainWindow w;
     QVERIFY(w.open_file(kSample));
