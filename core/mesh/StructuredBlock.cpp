@@ -14,10 +14,11 @@ std::array<int, 3> numbering_order(const BlockSpec& s) {
   std::stable_sort(order.begin(), order.begin() + s.dim, [&](int a, int b) { return s.n[a] < s.n[b]; });
   return order;
 }
-// x of node i along the rolling (x) axis: today's uniform expression unchanged when there is no grading.
-double node_x(const BlockSpec& s, int i) {
-  if (s.x_grading == 1.0) return s.origin[0] + s.size[0] * i / s.n[0];
-  return s.origin[0] + s.size[0] * graded_fraction(i, s.n[0], s.x_grading);
+// The coordinate along `axis` of node i: the uniform expression unchanged when there is no grading.
+double node_at(const BlockSpec& s, int axis, int i) {
+  const auto a = static_cast<size_t>(axis);
+  if (s.grading[a] == 1.0) return s.origin[a] + s.size[a] * i / s.n[a];
+  return s.origin[a] + s.size[a] * graded_fraction(i, s.n[a], s.grading[a]);
 }
 }  // namespace
 
@@ -29,8 +30,9 @@ double graded_fraction(int i, int n, double grading) {
 }
 
 Mesh make_block(const BlockSpec& s) {
-  if (!(std::isfinite(s.x_grading) && s.x_grading > 0.0))
-    throw std::invalid_argument("BlockSpec.x_grading must be a positive number");
+  for (int a = 0; a < 3; ++a)
+    if (!(std::isfinite(s.grading[static_cast<size_t>(a)]) && s.grading[static_cast<size_t>(a)] > 0.0))
+      throw std::invalid_argument(std::string("BlockSpec.grading along ") + "xyz"[a] + " must be a positive number");
   Mesh m;
   m.dim = s.dim;
   m.type = s.dim == 2 ? ElementType::Quad4 : ElementType::Hex8;
@@ -49,8 +51,7 @@ Mesh make_block(const BlockSpec& s) {
   for (int k = 0; k < np[2]; ++k)
     for (int j = 0; j < np[1]; ++j)
       for (int i = 0; i < np[0]; ++i) {
-        const double z = s.dim == 3 ? s.origin[2] + s.size[2] * k / s.n[2] : 0.0;
-        m.nodes[node_id(i, j, k)] = {node_x(s, i), s.origin[1] + s.size[1] * j / s.n[1], z};
+        m.nodes[node_id(i, j, k)] = {node_at(s, 0, i), node_at(s, 1, j), s.dim == 3 ? node_at(s, 2, k) : 0.0};
       }
 
   // elements, numbered with the same axis order as the nodes

@@ -12,14 +12,16 @@ struct BlockSpec {
   std::array<int, 3> n{1, 1, 1};              // elements along x, y, z
   std::array<double, 3> size{1.0, 1.0, 1.0};  // edge lengths
   std::array<double, 3> origin{0.0, 0.0, 0.0};
-  double x_grading = 1.0;  // size ratio of each element along x to its neighbour on the +x side (> 1: elements
-                           // shrink geometrically toward x max, < 1: toward x min; 1: uniform)
+  // per axis, the size ratio of each element to its neighbour on the + side (> 1: elements shrink geometrically
+  // toward the max face, < 1: toward the min face; 1: uniform)
+  std::array<double, 3> grading{1.0, 1.0, 1.0};
 };
 
 /// Nodes are numbered along the shortest direction first (the paper's cantilever numbering),
 /// elements likewise. Surfaces and node sets: xmin, xmax, ymin, ymax (, zmin, zmax); element set "all".
-/// Grading moves the nodes along x only (the numbering and connectivity do not change); x_grading = 1 gives
-/// origin + size · i / n exactly. Throws std::invalid_argument naming x_grading if it is not a positive number.
+/// Grading moves the nodes along its axis only (the numbering and connectivity do not change); a grading of 1 gives
+/// origin + size · i / n exactly. Throws std::invalid_argument naming the axis whose grading is not a positive
+/// number.
 Mesh make_block(const BlockSpec& spec);
 
 /// Largest / smallest element size a grading may produce: beyond it the smallest elements approach round-off.
@@ -27,7 +29,7 @@ constexpr double kMaxGradingSpread = 1e6;
 /// Why a geometric grading (size ratio of neighbours) over n elements is refused, or "" when it is accepted.
 std::string grading_problem(double grading, int n);
 
-/// Fraction of the length from x min of node i (0..n) of n elements whose sizes fall by `grading` from each
+/// Fraction of the length from the min face of node i (0..n) of n elements whose sizes fall by `grading` from each
 /// element to the next: size_i ∝ grading^−i, so (1 − q^i) / (1 − q^n) with q = 1 / grading; i / n for grading 1.
 double graded_fraction(int i, int n, double grading);
 

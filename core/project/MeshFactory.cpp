@@ -54,9 +54,13 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
       if (dim == 3 && !m.contains(k)) issues.push_back({path + "." + k, "is required in a 3D model"});
       if (dim == 2 && m.contains(k)) issues.push_back({path + "." + k, "not allowed in a 2D model"});
     }
-    if (m.contains("x_grading"))
-      if (auto why = grading_problem(num(m, "x_grading"), m.at("nx").get<int>()); !why.empty())
-        issues.push_back({path + ".x_grading", why});
+    const std::pair<const char*, const char*> graded[] = {
+        {"x_grading", "nx"}, {"y_grading", "ny"}, {"z_grading", "nz"}};
+    for (const auto& [key, count] : graded)
+      if (m.contains(key) && m.contains(count))
+        if (auto why = grading_problem(num(m, key), m.at(count).get<int>()); !why.empty())
+          issues.push_back({path + "." + key, why});
+    if (dim == 2 && m.contains("z_grading")) issues.push_back({path + ".z_grading", "not allowed in a 2D model"});
   } else if (type == "round_bar") {
     need_dim(3);
     if (m.contains("taper_length") && num(m, "taper_length") > num(m, "length"))
@@ -139,7 +143,9 @@ Mesh make_mesh(const json& m, int dim) {
     s.size = {num(m, "lx"), num(m, "ly"), dim == 3 ? num(m, "lz") : 1.0};
     if (m.contains("origin"))
       for (int k = 0; k < dim; ++k) s.origin[k] = m["origin"][static_cast<size_t>(k)].get<double>();
-    if (m.contains("x_grading")) s.x_grading = num(m, "x_grading");
+    const char* gradings[] = {"x_grading", "y_grading", "z_grading"};
+    for (size_t a = 0; a < static_cast<size_t>(dim); ++a)
+      if (m.contains(gradings[a])) s.grading[a] = num(m, gradings[a]);
     Mesh mesh = make_block(s);
     if (m.contains("roll_cut")) {  // written by the rolling process only: the pre-bitten slab (mesh/RollGap.h)
       const json& c = m.at("roll_cut");

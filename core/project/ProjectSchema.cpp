@@ -16,6 +16,19 @@ namespace {
 
 using namespace schema;
 
+/// A block's geometric grading along `axis` (a bias toward either face).
+Field block_grading(const std::string& axis) {
+  Field f = def(num(axis + "_grading", "-",
+                    "size ratio of each element along " + axis + " to its neighbour on the +" + axis +
+                        " side (1: uniform; > 1: elements shrink geometrically toward " + axis + " max, < 1: toward " +
+                        axis + " min)" + (axis == "z" ? "; 3D only" : "")),
+                1.0);
+  f.min = 0.5;
+  f.max = 2.0;
+  if (axis == "z") f.default_value = nullptr;  // 3D only: a 2D model that gives it is told so
+  return f;
+}
+
 const ObjectSchema kBlock{
     "block mesh",
     "Structured rectangle (Q4) or box (H8) of nx × ny (× nz) elements.",
@@ -23,16 +36,8 @@ const ObjectSchema kBlock{
      count("nz", "elements along z (3D only, required there)", 1e5), req(positive("lx", "length", "extent along x")),
      req(positive("ly", "length", "extent along y")),
      positive("lz", "length", "extent along z (3D only, required there)"),
-     vec("origin", "length", "corner with the smallest coordinates (default: the origin)"),
-     [] {
-       Field f = def(num("x_grading", "-",
-                         "size ratio of each element along x to its neighbour on the +x side (1: uniform; > 1: "
-                         "elements shrink geometrically toward x max, < 1: toward x min)"),
-                     1.0);
-       f.min = 0.5;
-       f.max = 2.0;
-       return f;
-     }()},
+     vec("origin", "length", "corner with the smallest coordinates (default: the origin)"), block_grading("x"),
+     block_grading("y"), block_grading("z")},
     "",
     {}};
 

@@ -201,7 +201,7 @@ TEST(StructuredBlock, GradingAlongXMovesNodesOnlyAndKeepsTheLength) {
   const Mesh uniform = make_block(s);
   for (const double g : {1.3, 1.0 / 1.3}) {
     SCOPED_TRACE(g);
-    s.x_grading = g;
+    s.grading[0] = g;
     const Mesh m = make_block(s);
     EXPECT_EQ(m.connectivity, uniform.connectivity);
     EXPECT_NEAR(mesh_measure(m), mesh_measure(uniform), 1e-12);
@@ -216,8 +216,39 @@ TEST(StructuredBlock, GradingAlongXMovesNodesOnlyAndKeepsTheLength) {
     for (size_t i = 0; i + 2 < x.size(); ++i) EXPECT_NEAR((x[i + 1] - x[i]) / (x[i + 2] - x[i + 1]), g, 1e-12);
   }
   EXPECT_EQ(graded_fraction(3, 6, 1.0), 3.0 / 6);
-  s.x_grading = 0.0;
+  s.grading[0] = 0.0;
   EXPECT_THROW(make_block(s), std::invalid_argument);
+}
+
+TEST(StructuredBlock, GradingAlongYAndZBiasesThoseAxesAlone) {
+  BlockSpec s;
+  s.dim = 3;
+  s.n = {2, 4, 5};
+  s.size = {1.0, 2.0, 3.0};
+  s.grading = {1.0, 1.5, 0.7};
+  const Mesh m = make_block(s);
+  const auto sorted = [&](int axis) {
+    std::vector<double> v;
+    for (const Vec& p : m.nodes) v.push_back(p[static_cast<size_t>(axis)]);
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  };
+  EXPECT_EQ(sorted(0), (std::vector<double>{0.0, 0.5, 1.0}));  // x stays uniform
+  for (const int axis : {1, 2}) {
+    const std::vector<double> c = sorted(axis);
+    ASSERT_EQ(c.size(), static_cast<size_t>(s.n[static_cast<size_t>(axis)] + 1));
+    EXPECT_EQ(c.back(), s.size[static_cast<size_t>(axis)]);
+    for (size_t i = 0; i + 2 < c.size(); ++i)
+      EXPECT_NEAR((c[i + 1] - c[i]) / (c[i + 2] - c[i + 1]), s.grading[static_cast<size_t>(axis)], 1e-12);
+  }
+  s.grading[2] = -1.0;
+  try {
+    make_block(s);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("grading along z"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
