@@ -277,7 +277,8 @@ std::vector<const InpDeck::Element*> body_elements(const InpDeck& deck, const st
     std::string names;
     for (const auto& [name, ids] : deck.element_sets) names += (names.empty() ? "" : ", ") + name;
     throw InpError(source + ": no element set named '" + element_set +
-                   "' (the deck has: " + (names.empty() ? "none" : names) + ")");
+                       "' (the deck has: " + (names.empty() ? "none" : names) + ")",
+                   "element_set");
   }
   std::map<int, const InpDeck::Element*> by_id;
   for (const auto& e : deck.elements) by_id[e.id] = &e;

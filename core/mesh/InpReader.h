@@ -10,16 +10,23 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/Mesh.h"
 
 namespace rollsim {
 
-/// A deck that cannot be read: the message names the file, the line and what is wrong there.
+/// A deck that cannot be read: the message names the file, the line and what is wrong there; `field` is the mesh
+/// spec's field at fault ("file", or "element_set" for a set the deck does not hold).
 class InpError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit InpError(const std::string& what, std::string field = "file")
+      : std::runtime_error(what), field_(std::move(field)) {}
+  const std::string& field() const { return field_; }
+
+ private:
+  std::string field_;
 };
 
 /// What a deck holds, in its own numbering.

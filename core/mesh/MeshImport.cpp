@@ -20,7 +20,7 @@ Mesh read_inp(const std::filesystem::path& file, int dim, const std::string& ele
   try {
     return inp_body_mesh(read_inp_deck(file), dim, element_set, file.string());
   } catch (const InpError& e) {
-    throw MeshImportError(e.what());
+    throw MeshImportError(e.what(), e.field());
   }
 }
 

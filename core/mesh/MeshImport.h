@@ -6,16 +6,23 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/Mesh.h"
 
 namespace rollsim {
 
-/// A mesh file that cannot be read or used: the message names the file (and the line where there is one).
+/// A mesh file that cannot be read or used: the message names the file (and the line where there is one); `field`
+/// is the mesh spec's field at fault ("file" or "element_set").
 class MeshImportError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit MeshImportError(const std::string& what, std::string field = "file")
+      : std::runtime_error(what), field_(std::move(field)) {}
+  const std::string& field() const { return field_; }
+
+ private:
+  std::string field_;
 };
 
 /// What the importer reads: ".inp — CalculiX / Abaqus input deck", one line per reader (for the schema's doc).

@@ -47,7 +47,7 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
     try {
       imported(m, dim);
     } catch (const MeshImportError& e) {
-      issues.push_back({path + ".file", e.what()});
+      issues.push_back({path + "." + e.field(), e.what()});
     }
   } else if (type == "block") {
     for (const char* k : {"nz", "lz"}) {

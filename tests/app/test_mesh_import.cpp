@@ -67,5 +67,16 @@ TEST(MeshImport, AnUnreadableDeckIsInvalidInputAtTheMeshFile) {
   }
   const RunResult r = run_rollsim({"check", dir + "/q.json"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("nowhere.inp: cannot be read"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bodies[0].mesh.file: " + dir + "/nowhere.inp: cannot be read"), std::string::npos) << r.err;
+  // a set the deck does not hold is the element_set's fault, with the deck's sets listed
+  json p = imported("tets.inp");
+  p["bodies"][0]["mesh"]["element_set"] = "E_SLAB";
+  write_text(dir + "/s.json", p.dump(1));
+  const RunResult s = run_rollsim({"check", dir + "/s.json"});
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("bodies[0].mesh.element_set: " + dir +
+                       "/tets.inp: no element set named 'E_SLAB' (the deck "
+                       "has: E_BASE)"),
+            std::string::npos)
+      << s.err;
 }
