@@ -1,5 +1,7 @@
 #include "fem/Loads.h"
 
+#include "fem/SolidElement.h"
+
 #include <cmath>
 
 namespace rollsim {
@@ -42,33 +44,17 @@ void add_facet_load(const Mesh& m, const Facet& f, const Traction& traction, Eig
   }
 }
 
-/// Consistent nodal forces of a uniform body force b on one element: ∫ N b dV by 2×2 (2×2×2) Gauss points.
-void add_element_body_force(const Mesh& m, int e, const V3& b, Eigen::VectorXd& F) {
-  const int* conn = m.element(e);
-  const int d = m.dim, nen = m.nodes_per_elem();
-  const double q = 1.0 / std::sqrt(3.0);
-  static const double corner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                                      {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-  for (int g = 0; g < nen; ++g) {
-    const double p[3] = {q * corner[g][0], q * corner[g][1], d == 3 ? q * corner[g][2] : 0.0};
-    Eigen::Matrix3d J = Eigen::Matrix3d::Identity();  // dx/dξ (the z row stays identity in 2D)
-    J.topLeftCorner(d, d).setZero();
-    std::array<double, 8> N{};
-    for (int k = 0; k < nen; ++k) {
-      double dN[3], n = d == 3 ? 0.125 : 0.25;
-      for (int a = 0; a < d; ++a) n *= 1 + corner[k][a] * p[a];
-      N[static_cast<size_t>(k)] = n;
-      for (int a = 0; a < d; ++a) {
-        dN[a] = d == 3 ? 0.125 : 0.25;
-        for (int c = 0; c < d; ++c) dN[a] *= c == a ? corner[k][c] : 1 + corner[k][c] * p[c];
-      }
-      const V3 x = node_at(m, conn[k]);
-      for (int r = 0; r < d; ++r)
-        for (int a = 0; a < d; ++a) J(r, a) += x[r] * dN[a];
-    }
-    const double volume = J.determinant();  // the Gauss weights are 1
-    for (int k = 0; k < nen; ++k)
-      for (int c = 0; c < d; ++c) F[conn[k] * d + c] += N[static_cast<size_t>(k)] * b[c] * volume;
+/// Consistent nodal forces of a uniform body force b on every element of `m`: b ∫ N_a dV on each node a.
+template <int D>
+void add_body_force(const Mesh& m, const V3& b, Eigen::VectorXd& F) {
+  typename SolidElement<D>::Coords x;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    const int* conn = m.element(e);
+    for (int a = 0; a < SolidElement<D>::NN; ++a)
+      for (int k = 0; k < D; ++k) x(k, a) = m.nodes[static_cast<size_t>(conn[a])][static_cast<size_t>(k)];
+    const auto share = SolidElement<D>::shape_integrals(x);
+    for (int a = 0; a < SolidElement<D>::NN; ++a)
+      for (int k = 0; k < D; ++k) F[conn[a] * D + k] += share[a] * b[k];
   }
 }
 }  // namespace
@@ -97,9 +83,10 @@ Eigen::VectorXd external_nodal_load(const Model& model, int b) {
   for (const Traction& t : model.tractions)
     if (t.body == b) F += traction_nodal_load(m, t);
   for (const BodyForce& f : model.body_forces)
-    if (f.body == b)
-      for (int e = 0; e < m.num_elements(); ++e)
-        add_element_body_force(m, e, V3(f.value[0], f.value[1], f.value[2]), F);
+    if (f.body == b) {
+      const V3 value(f.value[0], f.value[1], f.value[2]);
+      m.dim == 2 ? add_body_force<2>(m, value, F) : add_body_force<3>(m, value, F);
+    }
   return F;
 }
 

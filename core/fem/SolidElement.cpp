@@ -103,6 +103,20 @@ Eigen::Matrix<double, SolidElement<D>::NS, SolidElement<D>::NS> tangent(const Ma
 }  // namespace
 
 template <int D>
+auto SolidElement<D>::shape_integrals(const Coords& x) -> Eigen::Matrix<double, NN, 1> {
+  const double q = 1.0 / std::sqrt(3.0);
+  Eigen::Matrix<double, NN, 1> N, sum = Eigen::Matrix<double, NN, 1>::Zero();
+  Eigen::Matrix<double, D, NN> dNxi;
+  for (int p = 0; p < NGP; ++p) {
+    double xi[3] = {0, 0, 0};
+    for (int i = 0; i < D; ++i) xi[i] = q * natural<D>(p, i);
+    shape<D>(xi, N, dNxi);
+    sum += N * (dNxi * x.transpose()).determinant();  // unit Gauss weights
+  }
+  return sum;
+}
+
+template <int D>
 bool SolidElement<D>::gradients(const Coords& x, std::array<Gradients, NGP>& dN, std::array<double, NGP>& dv,
                                 Gradients& centre) {
   const double q = 1.0 / std::sqrt(3.0);

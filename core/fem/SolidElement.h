@@ -37,6 +37,9 @@ struct SolidElement {
   /// state_size values each; both null for a material without state); false if the element is inverted.
   static bool tangent_and_force(const Coords& x, const Material& mat, Formulation f, const Dofs& ue,
                                 const double* committed, double* trial, Stiffness* Ke, Dofs& fe);
+  /// ∫ N_a dV over the element for every node a (2-point Gauss rule per direction): the consistent nodal share of
+  /// a uniform load per unit volume (a body force b puts b ∫ N_a dV on node a).
+  static Eigen::Matrix<double, NN, 1> shape_integrals(const Coords& x);
   /// Corner-node value from Gauss-point values (bilinear/trilinear extrapolation).
   static double extrapolate_to_node(const std::array<double, NGP>& gp, int node);
 };

@@ -91,7 +91,7 @@ class DeckParser {
 
  private:
   [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-    throw InpError(where + ": " + what);
+    throw MeshImportError(where + ": " + what);
   }
   [[noreturn]] void fail(const std::string& what) const { fail(where_, what); }
 
@@ -256,7 +256,7 @@ InpDeck parse_inp_deck(const std::string& text, const std::string& source) {
 
 InpDeck read_inp_deck(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InpError(file.string() + ": cannot be read");
+  if (!in) throw MeshImportError(file.string() + ": cannot be read");
   std::ostringstream text;
   text << in.rdbuf();
   return parse_inp_deck(text.str(), file.string());
@@ -276,17 +276,17 @@ std::vector<const InpDeck::Element*> body_elements(const InpDeck& deck, const st
   if (set == deck.element_sets.end()) {
     std::string names;
     for (const auto& [name, ids] : deck.element_sets) names += (names.empty() ? "" : ", ") + name;
-    throw InpError(source + ": no element set named '" + element_set +
-                       "' (the deck has: " + (names.empty() ? "none" : names) + ")",
-                   "element_set");
+    throw MeshImportError(source + ": no element set named '" + element_set +
+                              "' (the deck has: " + (names.empty() ? "none" : names) + ")",
+                          "element_set");
   }
   std::map<int, const InpDeck::Element*> by_id;
   for (const auto& e : deck.elements) by_id[e.id] = &e;
   for (int id : std::set<int>(set->second.begin(), set->second.end())) {
     const auto it = by_id.find(id);
     if (it == by_id.end())
-      throw InpError(source + ": element set '" + element_set + "' names element " + std::to_string(id) +
-                     ", which the deck does not define");
+      throw MeshImportError(source + ": element set '" + element_set + "' names element " + std::to_string(id) +
+                            ", which the deck does not define");
     out.push_back(it->second);
   }
   return out;
@@ -296,15 +296,16 @@ void check_types(const std::vector<const InpDeck::Element*>& elements, int dim, 
   for (const InpDeck::Element* e : elements) {
     const int d = element_dimension(e->type);
     if (d == 0)
-      throw InpError(source + ": element " + std::to_string(e->id) + " is a " + e->type + ": " + unsupported(e->type) +
-                     " are not supported (rollsim reads linear quadrilaterals, CPE4/CPS4/CAX4, "
-                     "and hexahedra, C3D8, with their R/H/I variants)");
+      throw MeshImportError(source + ": element " + std::to_string(e->id) + " is a " + e->type + ": " +
+                            unsupported(e->type) +
+                            " are not supported (rollsim reads linear quadrilaterals, CPE4/CPS4/CAX4, "
+                            "and hexahedra, C3D8, with their R/H/I variants)");
     if (d != dim)
-      throw InpError(source + ": element " + std::to_string(e->id) + " is a " + e->type + ", a " + std::to_string(d) +
-                     "D element in a " + std::to_string(dim) + "D model (dimension)");
+      throw MeshImportError(source + ": element " + std::to_string(e->id) + " is a " + e->type + ", a " +
+                            std::to_string(d) + "D element in a " + std::to_string(dim) + "D model (dimension)");
     if (static_cast<int>(e->nodes.size()) != (dim == 2 ? 4 : 8))
-      throw InpError(source + ": element " + std::to_string(e->id) + " (" + e->type + ") has " +
-                     std::to_string(e->nodes.size()) + " nodes, not " + (dim == 2 ? "4" : "8"));
+      throw MeshImportError(source + ": element " + std::to_string(e->id) + " (" + e->type + ") has " +
+                            std::to_string(e->nodes.size()) + " nodes, not " + (dim == 2 ? "4" : "8"));
   }
 }
 
@@ -325,9 +326,9 @@ void check_orientation(const Mesh& mesh, const std::vector<const InpDeck::Elemen
       try {
         check_element_orientation(one);
       } catch (const std::runtime_error& why) {
-        throw InpError(source + ": element " + std::to_string(elements[static_cast<size_t>(e)]->id) +
-                       " is inverted or degenerate (its nodes must run counter-clockwise" +
-                       (mesh.dim == 3 ? " on the face S1 seen from the element's inside" : "") + ")");
+        throw MeshImportError(source + ": element " + std::to_string(elements[static_cast<size_t>(e)]->id) +
+                              " is inverted or degenerate (its nodes must run counter-clockwise" +
+                              (mesh.dim == 3 ? " on the face S1 seen from the element's inside" : "") + ")");
       }
     }
     throw;
@@ -339,7 +340,8 @@ void check_orientation(const Mesh& mesh, const std::vector<const InpDeck::Elemen
 Mesh inp_body_mesh(const InpDeck& deck, int dim, const std::string& element_set, const std::string& source) {
   const std::vector<const InpDeck::Element*> elements = body_elements(deck, element_set, source);
   if (elements.empty())
-    throw InpError(source + ": no element" + (element_set.empty() ? "" : " in element set '" + element_set + "'"));
+    throw MeshImportError(source + ": no element" +
+                          (element_set.empty() ? "" : " in element set '" + element_set + "'"));
   check_types(elements, dim, source);
   Mesh mesh;
   mesh.dim = dim;
@@ -348,16 +350,16 @@ Mesh inp_body_mesh(const InpDeck& deck, int dim, const std::string& element_set,
   for (const InpDeck::Element* e : elements)
     for (int n : e->nodes) {
       if (!deck.nodes.count(n))
-        throw InpError(source + ": element " + std::to_string(e->id) + " names node " + std::to_string(n) +
-                       ", which the deck does not define");
+        throw MeshImportError(source + ": element " + std::to_string(e->id) + " names node " + std::to_string(n) +
+                              ", which the deck does not define");
       local.emplace(n, 0);
     }
   for (auto& [id, index] : local) {
     index = mesh.num_nodes();
     const std::array<double, 3>& x = deck.nodes.at(id);
     if (dim == 2 && x[2] != 0.0)
-      throw InpError(source + ": node " + std::to_string(id) + " has z = " + std::to_string(x[2]) +
-                     " in a 2D model (the plane is z = 0)");
+      throw MeshImportError(source + ": node " + std::to_string(id) + " has z = " + std::to_string(x[2]) +
+                            " in a 2D model (the plane is z = 0)");
     mesh.nodes.push_back(x);
   }
   std::map<int, int> element_index;
@@ -385,8 +387,8 @@ Mesh inp_body_mesh(const InpDeck& deck, int dim, const std::string& element_set,
       const auto it = element_index.find(id);
       if (it == element_index.end()) continue;
       if (face > faces)
-        throw InpError(source + ": surface '" + name + "': element " + std::to_string(id) + " has no face S" +
-                       std::to_string(face) + " (a quadrilateral has S1…S4)");
+        throw MeshImportError(source + ": surface '" + name + "': element " + std::to_string(id) + " has no face S" +
+                              std::to_string(face) + " (a quadrilateral has S1…S4)");
       in.push_back({it->second, face - 1});
     }
     if (!in.empty()) mesh.surfaces[lower(name)] = std::move(in);

@@ -8,26 +8,13 @@
 // tetrahedra, wedges and quadratic elements are refused with the line that holds them.
 #include <filesystem>
 #include <map>
-#include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "mesh/Mesh.h"
+#include "mesh/MeshImport.h"
 
 namespace rollsim {
-
-/// A deck that cannot be read: the message names the file, the line and what is wrong there; `field` is the mesh
-/// spec's field at fault ("file", or "element_set" for a set the deck does not hold).
-class InpError : public std::runtime_error {
- public:
-  explicit InpError(const std::string& what, std::string field = "file")
-      : std::runtime_error(what), field_(std::move(field)) {}
-  const std::string& field() const { return field_; }
-
- private:
-  std::string field_;
-};
 
 /// What a deck holds, in its own numbering.
 struct InpDeck {
@@ -43,7 +30,8 @@ struct InpDeck {
   std::vector<std::string> ignored;                                  // keywords not read, once each, in order
 };
 
-/// Reads `file` (and what it *INCLUDEs, relative to it). Throws InpError.
+/// Reads `file` (and what it *INCLUDEs, relative to it). Throws MeshImportError (the file, the line and what is wrong
+/// there).
 InpDeck read_inp_deck(const std::filesystem::path& file);
 /// The same from text already in memory (`source` names it in messages; *INCLUDE is relative to its folder).
 InpDeck parse_inp_deck(const std::string& text, const std::string& source);
@@ -51,7 +39,8 @@ InpDeck parse_inp_deck(const std::string& text, const std::string& source);
 /// The body of `deck` made of the elements of `element_set` (every element when empty), its nodes numbered
 /// compactly in the order of their ids; the node sets, element sets and surfaces restricted to it (those with
 /// nothing in it dropped), their names in lower case. `dim` 2: quadrilaterals (z must be 0); 3: hexahedra.
-/// Throws InpError (an unknown element set, a mixed or unsupported element type, a missing node).
+/// Throws MeshImportError (an unknown element set — at field element_set —, a mixed or unsupported element type, a
+/// missing node).
 Mesh inp_body_mesh(const InpDeck& deck, int dim, const std::string& element_set, const std::string& source);
 
 }  // namespace rollsim

@@ -17,11 +17,7 @@ struct Reader {
 };
 
 Mesh read_inp(const std::filesystem::path& file, int dim, const std::string& element_set) {
-  try {
-    return inp_body_mesh(read_inp_deck(file), dim, element_set, file.string());
-  } catch (const InpError& e) {
-    throw MeshImportError(e.what(), e.field());
-  }
+  return inp_body_mesh(read_inp_deck(file), dim, element_set, file.string());
 }
 
 const std::vector<Reader>& readers() {

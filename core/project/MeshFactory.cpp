@@ -23,6 +23,23 @@ std::shared_ptr<const Mesh> imported(const json& m, int dim) {
   return import_mesh(m.at("file").get<std::string>(), dim, m.value("element_set", std::string()));
 }
 
+/// The same, or null when the file cannot be used (check_mesh_spec says why).
+std::shared_ptr<const Mesh> readable(const json& m, int dim) {
+  try {
+    return imported(m, dim);
+  } catch (const MeshImportError&) {
+    return nullptr;
+  }
+}
+
+/// The names of a map's entries.
+template <class Map>
+std::set<std::string> names_of(const Map& map) {
+  std::set<std::string> s;
+  for (const auto& entry : map) s.insert(entry.first);
+  return s;
+}
+
 RoundBarSpec round_bar_spec(const json& m) {
   RoundBarSpec s;
   s.radius = num(m, "radius");
@@ -88,11 +105,8 @@ double estimated_elements(const json& m, int dim) {
   const auto type = m.at("type").get<std::string>();
   auto n = [&](const char* k) { return m.contains(k) ? m.at(k).get<double>() : 1.0; };
   if (type == "import") {
-    try {
-      return imported(m, dim)->num_elements();
-    } catch (const MeshImportError&) {
-      return 0;  // check_mesh_spec says why
-    }
+    const auto mesh = readable(m, dim);
+    return mesh ? mesh->num_elements() : 0;
   }
   if (type == "block") return n("nx") * n("ny") * (dim == 3 ? n("nz") : 1.0);
   if (type == "plate_with_hole" || type == "annulus") return n("n_around") * n("n_radial");
@@ -103,12 +117,8 @@ double estimated_elements(const json& m, int dim) {
 std::set<std::string> generator_set_names(const json& m, int dim) {
   const auto type = m.at("type").get<std::string>();
   if (type == "import") {
-    std::set<std::string> s;
-    try {
-      for (const auto& [name, facets] : imported(m, dim)->surfaces) s.insert(name);
-    } catch (const MeshImportError&) {  // none: check_mesh_spec says why
-    }
-    return s;
+    const auto mesh = readable(m, dim);
+    return mesh ? names_of(mesh->surfaces) : std::set<std::string>{};
   }
   if (type == "block") {
     std::set<std::string> s{"xmin", "xmax", "ymin", "ymax"};
@@ -125,12 +135,8 @@ std::set<std::string> generator_set_names(const json& m, int dim) {
 
 std::set<std::string> generator_node_set_names(const json& m, int dim) {
   if (m.at("type") != "import") return generator_set_names(m, dim);
-  std::set<std::string> s;
-  try {
-    for (const auto& [name, nodes] : imported(m, dim)->node_sets) s.insert(name);
-  } catch (const MeshImportError&) {  // none: check_mesh_spec says why
-  }
-  return s;
+  const auto mesh = readable(m, dim);
+  return mesh ? names_of(mesh->node_sets) : std::set<std::string>{};
 }
 
 Mesh make_mesh(const json& m, int dim) {

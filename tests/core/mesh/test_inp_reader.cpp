@@ -61,7 +61,7 @@ InpDeck deck2d() { return parse_inp_deck(kDeck2D, "strip.inp"); }
 std::string refusal(const std::string& text, int dim = 2, const std::string& set = "") {
   try {
     inp_body_mesh(parse_inp_deck(text, "deck.inp"), dim, set, "deck.inp");
-  } catch (const InpError& e) {
+  } catch (const MeshImportError& e) {
     return e.what();
   }
   return "";
