@@ -8,6 +8,8 @@
 
 #include "RunBinary.h"
 
+namespace test_auto_solver {
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -44,3 +46,5 @@ TEST(AutoSolver, WordsThatAreNoModeAreRefused) {
   }
   fs::remove_all(dir);
 }
+
+}  // namespace test_auto_solver

@@ -9,6 +9,8 @@
 
 #include "RunBinary.h"
 
+namespace test_bad_input {
+
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
@@ -640,3 +642,5 @@ TEST(GoodInput, TinyProjectsRunToConvergedResults) {
     fs::remove_all(dir);
   }
 }
+
+}  // namespace test_bad_input

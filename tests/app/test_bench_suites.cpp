@@ -7,6 +7,8 @@
 
 #include "RunBinary.h"
 
+namespace test_bench_suites {
+
 namespace {
 
 bool has(const std::vector<std::string>& names, const std::string& name) {
@@ -43,3 +45,5 @@ TEST(BenchSuites, BadSizeOrFamilyOrNothingIsRefused) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("accuracy, stability"), std::string::npos) << r.err;
 }
+
+}  // namespace test_bench_suites

@@ -9,6 +9,8 @@
 
 #include "RunBinary.h"
 
+namespace test_contact_input {
+
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
@@ -153,3 +155,5 @@ TEST(ContactInput, ExportCcxRefuses2DContactAndWrites3DPairs) {
   EXPECT_NE(read_text(dir + "/three.inp").find("\n*TIE, NAME=T_BLOCK_BASE"), std::string::npos);
   fs::remove_all(dir);
 }
+
+}  // namespace test_contact_input

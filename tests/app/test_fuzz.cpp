@@ -9,6 +9,8 @@
 #include "../common/ProjectMutator.h"
 #include "RunBinary.h"
 
+namespace test_fuzz {
+
 namespace {
 
 // 300 processes of `check` (140 ms each, mostly the dynamic loader mapping Qt and VTK) and the runs: still the
@@ -85,3 +87,5 @@ TEST(BinaryFuzz, MutantsExitZeroOrTwoAndNeverLeaveNaN) {
   EXPECT_GT(solved, 0) << "no mutant was solved: the loop would not exercise the solver";
   std::filesystem::remove_all(dir);
 }
+
+}  // namespace test_fuzz

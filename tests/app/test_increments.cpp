@@ -17,6 +17,8 @@
 
 #include "RunBinary.h"
 
+namespace test_increments {
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -135,3 +137,5 @@ TEST(RunIncrements, BadCountsExitTwoNamingTheField) {
     EXPECT_FALSE(fs::exists(dir + "/out/summary.json"));
   }
 }
+
+}  // namespace test_increments

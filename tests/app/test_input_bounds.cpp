@@ -11,6 +11,8 @@
 
 #include "RunBinary.h"
 
+namespace test_input_bounds {
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -156,3 +158,5 @@ TEST(InputBounds, AFactorBeyondTheAddressSpaceLimitIsOutOfMemoryWithItsSize) {
   EXPECT_TRUE(contains(m, "the address-space limit (ulimit -v)")) << m;
   fs::remove_all(dir);
 }
+
+}  // namespace test_input_bounds

@@ -8,6 +8,8 @@
 
 #include "RunBinary.h"
 
+namespace test_mesh_command {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -60,3 +62,5 @@ TEST(MeshCommand, BadInputExitsTwoWritingNothing) {
   EXPECT_NE(r.err.find("rollsim: error:"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/out/mesh.vtu"));
 }
+
+}  // namespace test_mesh_command

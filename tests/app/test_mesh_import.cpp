@@ -10,6 +10,8 @@
 
 #include "RunBinary.h"
 
+namespace test_mesh_import {
+
 using json = nlohmann::json;
 
 namespace {
@@ -80,3 +82,5 @@ TEST(MeshImport, AnUnreadableDeckIsInvalidInputAtTheMeshFile) {
             std::string::npos)
       << s.err;
 }
+
+}  // namespace test_mesh_import

@@ -11,6 +11,8 @@
 #include "../common/RollingPass.h"
 #include "RunBinary.h"
 
+namespace test_newton_run {
+
 using json = nlohmann::json;
 
 namespace {
@@ -225,3 +227,5 @@ TEST(NewtonRun, RollingPassPrintsItsMeasuresAndWritesItsTables) {
     EXPECT_GT(bytes.size(), 10000u) << png;
   }
 }
+
+}  // namespace test_newton_run

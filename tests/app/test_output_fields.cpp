@@ -15,6 +15,8 @@
 
 #include "RunBinary.h"
 
+namespace test_output_fields {
+
 using json = nlohmann::json;
 using Names = std::set<std::string>;
 
@@ -103,3 +105,5 @@ TEST(OutputFields, BadSelectionsExitTwoListingTheValidNamesAndWriteNothing) {
     EXPECT_FALSE(std::filesystem::exists(dir + "/out/summary.json")) << fields.dump();
   }
 }
+
+}  // namespace test_output_fields

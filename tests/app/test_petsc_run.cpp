@@ -21,6 +21,8 @@
 
 #include "RunBinary.h"
 
+namespace test_petsc_run {
+
 using json = nlohmann::json;
 
 namespace {
@@ -307,3 +309,5 @@ TEST(PetscRun, ABuildWithoutPetscRefusesTheStrategy) {
 #endif
 
 }  // namespace
+
+}  // namespace test_petsc_run

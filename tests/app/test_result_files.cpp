@@ -17,6 +17,8 @@
 
 #include "RunBinary.h"
 
+namespace test_result_files {
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -92,3 +94,5 @@ TEST(ResultFiles, CompressedFilesAreSmallerAndReadBackTheSame) {
   fs::remove_all(lz4.dir);
   fs::remove_all(none.dir);
 }
+
+}  // namespace test_result_files

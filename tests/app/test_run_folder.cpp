@@ -13,6 +13,8 @@
 
 #include "RunBinary.h"
 
+namespace test_run_folder {
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -162,3 +164,5 @@ TEST(RunFolder, TheSummarySaysWhichRunMadeIt) {
   EXPECT_EQ(run.value("finished", "").size(), 20u) << run.dump(1);
   fs::remove_all(fs::path(file).parent_path());
 }
+
+}  // namespace test_run_folder

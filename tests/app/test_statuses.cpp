@@ -12,6 +12,8 @@
 #include "../common/BentBeam.h"
 #include "RunBinary.h"
 
+namespace test_statuses {
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -236,3 +238,5 @@ TEST(Statuses, APassLongerThanItsSlabEndsConvergedWhenTheRearEndEntersTheGap) {
   EXPECT_TRUE(fs::exists(r.out + "/result.vtu"));
   EXPECT_TRUE(fs::exists(r.out + "/rolling.csv"));
 }
+
+}  // namespace test_statuses

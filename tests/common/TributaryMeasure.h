@@ -8,14 +8,15 @@
 
 #include "mesh/Mesh.h"
 
-namespace rollsim::testing_support {
+namespace testing_support {
 
-inline std::map<int, double> tributary_measure(const Mesh& mesh, const std::vector<Facet>& surface) {
+inline std::map<int, double> tributary_measure(const rollsim::Mesh& mesh, const std::vector<rollsim::Facet>& surface) {
   std::map<int, double> measure;
   auto point = [&](int n) { return Eigen::Vector3d(mesh.nodes[n][0], mesh.nodes[n][1], mesh.nodes[n][2]); };
-  for (const Facet& f : surface) {
+  for (const rollsim::Facet& f : surface) {
     std::vector<int> nodes;
-    for (const int local : facet_local_nodes(mesh.type, f.local)) nodes.push_back(mesh.element(f.element)[local]);
+    for (const int local : rollsim::facet_local_nodes(mesh.type, f.local))
+      nodes.push_back(mesh.element(f.element)[local]);
     const double size = nodes.size() == 2
                             ? (point(nodes[1]) - point(nodes[0])).norm()
                             : 0.5 * (point(nodes[2]) - point(nodes[0])).cross(point(nodes[3]) - point(nodes[1])).norm();
@@ -24,4 +25,4 @@ inline std::map<int, double> tributary_measure(const Mesh& mesh, const std::vect
   return measure;
 }
 
-}  // namespace rollsim::testing_support
+}  // namespace testing_support

@@ -6,6 +6,8 @@
 #include <regex>
 #include <string>
 
+namespace test_core_isolation {
+
 TEST(CoreIsolation, NoQtOrVtkIncludes) {
   const std::regex forbidden(R"(^\s*#\s*include\s*[<"](Q[A-Za-z]|vtk|QVTK))");
   int files = 0;
@@ -22,3 +24,5 @@ TEST(CoreIsolation, NoQtOrVtkIncludes) {
   }
   EXPECT_GT(files, 20);
 }
+
+}  // namespace test_core_isolation

@@ -10,6 +10,8 @@
 #include <set>
 #include <string>
 
+namespace test_core_layering {
+
 namespace {
 
 // folder -> folders it must never include
@@ -62,3 +64,5 @@ TEST(CoreLayering, FoldersIncludeOnlyTheFoldersBelowThem) {
                                     << "/: remove it from kKnown";
   EXPECT_GT(files, 60);
 }
+
+}  // namespace test_core_layering

@@ -8,6 +8,8 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 
+namespace test_block_plastic {
+
 using namespace rollsim;
 
 namespace {
@@ -55,3 +57,5 @@ TEST(BlockPlastic, AFloatingSubdomainTakesDirectsNewtonIterations) {
   EXPECT_LE(std::labs(static_cast<long>(dd1.newton.size()) - static_cast<long>(direct.newton.size())), increments)
       << "direct " << direct.newton.size() << ", feti 1x1x2 " << dd1.newton.size() << " Newton iterations";
 }
+
+}  // namespace test_block_plastic

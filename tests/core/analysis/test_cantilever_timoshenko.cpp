@@ -11,6 +11,8 @@
 #include "mesh/StructuredBlock.h"
 #include "solve/SolverStrategy.h"
 
+namespace test_cantilever_timoshenko {
+
 using namespace rollsim;
 
 namespace {
@@ -71,3 +73,5 @@ TEST(CantileverTimoshenko, BBarAlsoConverges) {
   const double fine = std::abs(tip_reaction(16, Formulation::BBar) + P);
   EXPECT_LT(fine, coarse / 8);
 }
+
+}  // namespace test_cantilever_timoshenko

@@ -11,8 +11,10 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_contact_pressure {
+
 using namespace rollsim;
-using rollsim::testing_support::tributary_measure;
+using testing_support::tributary_measure;
 
 namespace {
 
@@ -72,3 +74,5 @@ TEST(ContactPressure, AbsentWithoutContactPairs) {
   const Results res = run_linear_static(model, *solver);
   for (const BodyResults& b : res.bodies) EXPECT_EQ(b.contact_pressure.size(), 0);
 }
+
+}  // namespace test_contact_pressure

@@ -9,6 +9,8 @@
 #include "../../common/RunJson.h"
 #include "analysis/AnalysisError.h"
 
+namespace test_contact_tangent {
+
 using namespace rollsim;
 using testing_support::run_json;
 using json = nlohmann::json;
@@ -107,3 +109,5 @@ INSTANTIATE_TEST_SUITE_P(Dimensions, ContactTangentVariants, ::testing::Values(2
 TEST(ContactTangent, FullIsRefusedWithoutAGlobalMatrix) {
   EXPECT_THROW(run_json(slider(2, "mixed", "full")), AnalysisError);
 }
+
+}  // namespace test_contact_tangent

@@ -8,6 +8,8 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 
+namespace test_cylinder_plastic {
+
 using namespace rollsim;
 
 namespace {
@@ -71,3 +73,5 @@ TEST(CylinderPlastic, AlwaysStartsEachStepFromTheConvergedTangent) {
   const double force = fresh.contacts.at(0).normal_force;
   EXPECT_NEAR(converged.contacts.at(0).normal_force, force, 5e-3 * force) << "the same answer";
 }
+
+}  // namespace test_cylinder_plastic

@@ -9,6 +9,8 @@
 
 #include "../../common/RunJson.h"
 
+namespace test_friction {
+
 using namespace rollsim;
 using testing_support::run_json;
 using json = nlohmann::json;
@@ -190,3 +192,5 @@ TEST(Friction3D, ABlockSlidingOnAFaceCarriesMuN) {
   const double fz = testing_support::reaction_where_uy(r, 1, 3, -0.01, 2);
   EXPECT_NEAR(fz / fx, 0.5, 1e-3);
 }
+
+}  // namespace test_friction

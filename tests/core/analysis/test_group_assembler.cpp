@@ -10,6 +10,8 @@
 #include "analysis/GroupLayout.h"
 #include "partition/StructuredPartition.h"
 
+namespace test_group_assembler {
+
 using namespace rollsim;
 
 namespace {
@@ -105,3 +107,5 @@ TEST(GroupAssembler, SubdomainGeometryHasTheBodysRigidModeRows) {
           << "subdomain " << s << ", local dof " << l;
   }
 }
+
+}  // namespace test_group_assembler

@@ -10,6 +10,8 @@
 
 #include "../../common/RunJson.h"
 
+namespace test_large_sliding {
+
 using namespace rollsim;
 using testing_support::run_json;
 using json = nlohmann::json;
@@ -83,3 +85,5 @@ TEST(LargeSliding, SmallSlidingPressesTheBaseWhereTheSliderStarted) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, LargeSliding, ::testing::Values("direct", "mixed"));
+
+}  // namespace test_large_sliding

@@ -15,6 +15,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_load_increments {
+
 using namespace rollsim;
 
 namespace {
@@ -186,3 +188,5 @@ TEST(LoadIncrements, CountOutsideOneToAThousandIsRefused) {
   bad["analysis"] = {{"increments", 3}};
   EXPECT_EQ(parse_project(bad.dump(), "ok").config().steps.increments, 3);
 }
+
+}  // namespace test_load_increments

@@ -13,6 +13,8 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 
+namespace test_necking_bar {
+
 using namespace rollsim;
 using json = nlohmann::json;
 
@@ -133,3 +135,5 @@ TEST(NeckingBar, FullIntegrationLocksTheNeck) {
   EXPECT_GT(full.back().load, fbar.back().load);
   EXPECT_GT(full.back().neck, fbar.back().neck + 0.03);
 }
+
+}  // namespace test_necking_bar

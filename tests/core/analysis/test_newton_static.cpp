@@ -16,6 +16,8 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 
+namespace test_newton_static {
+
 using namespace rollsim;
 using json = nlohmann::json;
 
@@ -328,3 +330,5 @@ TEST(NewtonStatic, AnInvertedElementAdvisesTheProcesssStepSize) {
       << m;
   EXPECT_EQ(m.find("bodies["), std::string::npos) << m;
 }
+
+}  // namespace test_newton_static

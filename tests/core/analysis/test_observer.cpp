@@ -17,8 +17,10 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_observer {
+
 using namespace rollsim;
-using rollsim::testing_support::tributary_measure;
+using testing_support::tributary_measure;
 
 namespace {
 
@@ -213,3 +215,5 @@ TEST(AnalysisObserver, CancelBeforeTheFirstSolveLeavesNoFields) {
   EXPECT_TRUE(rec.solves.empty());
   EXPECT_EQ(rec.events, std::vector<std::string>{"increment_begin 1/1"});
 }
+
+}  // namespace test_observer

@@ -9,6 +9,8 @@
 #include "mesh/PlateWithHole.h"
 #include "solve/SolverStrategy.h"
 
+namespace test_plate_hole_kirsch {
+
 using namespace rollsim;
 
 namespace {
@@ -51,3 +53,5 @@ TEST(PlateHoleKirsch, ConcentrationApproachesThree) {
   }
   EXPECT_LT(prev_err, 0.05);
 }
+
+}  // namespace test_plate_hole_kirsch

@@ -9,6 +9,8 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 
+namespace test_prandtl_punch {
+
 using namespace rollsim;
 using json = nlohmann::json;
 
@@ -49,3 +51,5 @@ TEST(PrandtlPunch, BBarAndFBarReachTheLimitLoadWhereFullIntegrationLocks) {
   EXPECT_NEAR(fbar / prandtl, 1.0, 0.02) << fbar;
   EXPECT_GT(full / prandtl, 1.10) << "full integration locks: " << full;
 }
+
+}  // namespace test_prandtl_punch

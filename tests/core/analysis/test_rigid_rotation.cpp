@@ -7,6 +7,8 @@
 
 #include "../../common/RunJson.h"
 
+namespace test_rigid_rotation {
+
 using namespace rollsim;
 using testing_support::run_json;
 using json = nlohmann::json;
@@ -80,3 +82,5 @@ TEST_P(PrescribedRotation, AStretchedBlockTurnedCarriesTheSameStressesRotated) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, PrescribedRotation, ::testing::Values("direct", "feti"));
+
+}  // namespace test_rigid_rotation

@@ -13,6 +13,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_samples {
+
 using namespace rollsim;
 namespace fs = std::filesystem;
 
@@ -108,3 +110,5 @@ INSTANTIATE_TEST_SUITE_P(Samples, SampleTest, testing::ValuesIn(sample_files()),
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return n;
 });
+
+}  // namespace test_samples

@@ -10,6 +10,8 @@
 #include "partition/MetisPartition.h"
 #include "partition/StructuredPartition.h"
 
+namespace test_subdomain_decomposition {
+
 using namespace rollsim;
 
 namespace {
@@ -195,3 +197,5 @@ TEST(SubdomainDecomposition, AppendsToASystemWithOtherConstraints) {
   EXPECT_EQ(Eigen::MatrixXd(sys.groups[2].C).topRows(2).norm(), 0.0);
   EXPECT_EQ(sys.groups[1].name, "block/0");
 }
+
+}  // namespace test_subdomain_decomposition

@@ -9,7 +9,7 @@
 #include "base/Blas.h"
 #include "solve/CholmodFactorization.h"
 
-namespace rollsim {
+namespace rollsim::test_blas {
 namespace {
 
 long threads_of_this_process() {
@@ -31,4 +31,4 @@ TEST(Blas, OneLibraryThreadStartsNoOpenMpTeam) {
 TEST(Blas, NamesTheLibrary) { EXPECT_FALSE(blas_description().empty()); }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_blas

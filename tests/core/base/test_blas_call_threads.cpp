@@ -12,7 +12,7 @@
 #include "base/BlasCallThreads.h"
 #include "solve/CholmodFactorization.h"
 
-namespace rollsim {
+namespace rollsim::test_blas_call_threads {
 namespace {
 
 /// OpenBLAS's current thread count, or 0 when the BLAS is not OpenBLAS.
@@ -75,4 +75,4 @@ TEST(BlasCallThreads, TwoThreadsSolveLikeOne) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_blas_call_threads

@@ -4,7 +4,7 @@
 
 #include "base/DgemmPeak.h"
 
-namespace rollsim {
+namespace rollsim::test_dgemm_peak {
 namespace {
 
 TEST(DgemmPeak, MeasuresARateAndItsCost) {
@@ -29,4 +29,4 @@ TEST(DgemmPeak, Gflops) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_dgemm_peak

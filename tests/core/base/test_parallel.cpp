@@ -10,6 +10,8 @@
 
 #include "base/Parallel.h"
 
+namespace test_parallel {
+
 using namespace rollsim;
 
 TEST(ForEachGroup, CallsEveryIndexExactlyOnceForAnyThreadCount) {
@@ -50,3 +52,5 @@ TEST(ForEachGroup, ConcurrentCallersEachGetAllTheirIndices) {
     EXPECT_EQ(b[i].load(), 1);
   }
 }
+
+}  // namespace test_parallel

@@ -7,6 +7,8 @@
 #include "bench/MeshDistortion.h"
 #include "mesh/StructuredBlock.h"
 
+namespace test_mesh_distortion {
+
 using namespace rollsim;
 
 TEST(MeshDistortion, MovesInteriorNodesWithinTheFractionAndKeepsTheBoundary) {
@@ -33,3 +35,5 @@ TEST(MeshDistortion, MovesInteriorNodesWithinTheFractionAndKeepsTheBoundary) {
   EXPECT_EQ(moved, 7 * 7) << "every interior node moves";
   EXPECT_NO_THROW(check_element_orientation(after));
 }
+
+}  // namespace test_mesh_distortion

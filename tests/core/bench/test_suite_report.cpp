@@ -5,6 +5,8 @@
 
 #include "bench/SuiteReport.h"
 
+namespace test_suite_report {
+
 using namespace rollsim::bench;
 
 namespace {
@@ -62,3 +64,5 @@ TEST(SuiteReport, StabilityTableCountsVerdictsPerFamily) {
   const std::string md = stability_markdown(r);
   EXPECT_NE(md.find("| gap | 1 | 1 | 0 | 0 |"), std::string::npos) << md;
 }
+
+}  // namespace test_suite_report

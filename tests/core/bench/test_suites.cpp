@@ -8,6 +8,8 @@
 
 #include "bench/Suites.h"
 
+namespace test_suites {
+
 using namespace rollsim::bench;
 
 namespace {
@@ -67,3 +69,5 @@ TEST(BenchSuites, UnknownSuiteSizeOrFamilyIsRefusedByName) {
     EXPECT_NE(std::string(e.what()).find("poisson"), std::string::npos) << "the choices are named: " << e.what();
   }
 }
+
+}  // namespace test_suites

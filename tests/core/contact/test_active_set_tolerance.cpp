@@ -11,6 +11,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_active_set_tolerance {
+
 using namespace rollsim;
 
 namespace {
@@ -84,3 +86,5 @@ TEST(ActiveSetTolerance, PointThatCameBackInStaysForTheStep) {
   EXPECT_EQ(update_active_set(c.model, c.rows, lambda, u, pairs, 1e-8), 1);
   EXPECT_FALSE(pairs[row.pair].active[row.point]);
 }
+
+}  // namespace test_active_set_tolerance

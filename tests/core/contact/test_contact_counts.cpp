@@ -8,6 +8,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_contact_counts {
+
 using namespace rollsim;
 
 namespace {
@@ -47,3 +49,5 @@ TEST(ContactSearch, NodeToSegmentGivesWeightsNormalAndGap) {
   EXPECT_NEAR(points[0].N[1], 0.75, 1e-14);
   EXPECT_TRUE(find_contact_points(slave, {{0, 0}}, master, {{0, 2}}, 0.05).empty()) << "beyond the search distance";
 }
+
+}  // namespace test_contact_counts

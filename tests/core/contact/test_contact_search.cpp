@@ -12,6 +12,8 @@
 #include "mesh/StructuredBlock.h"
 #include "project/ModelBuilder.h"
 
+namespace test_contact_search {
+
 using namespace rollsim;
 
 namespace {
@@ -102,3 +104,5 @@ TEST(ContactSearch, BoundingBoxesFindTheSamePointsOnEverySamplesPairs) {
   }
   EXPECT_EQ(pairs, 7);
 }
+
+}  // namespace test_contact_search

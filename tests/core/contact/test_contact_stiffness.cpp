@@ -14,6 +14,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_contact_stiffness {
+
 using namespace rollsim;
 using json = nlohmann::json;
 
@@ -353,3 +355,5 @@ TEST_P(ContactStiffnessDim, StickingPointsTermOnlyShiftsTheMultipliersUnlessCut)
                                                             slide.lambda, slide.u)),
             1e-3);
 }
+
+}  // namespace test_contact_stiffness

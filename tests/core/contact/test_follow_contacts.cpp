@@ -10,6 +10,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_follow_contacts {
+
 using namespace rollsim;
 
 TEST(FollowContacts, NodeNewToThePairKeepsEveryOtherPointsState) {
@@ -51,3 +53,5 @@ TEST(FollowContacts, NodeNewToThePairKeepsEveryOtherPointsState) {
   EXPECT_EQ(kept, before);
   EXPECT_EQ(fresh, now.points.size() - before);
 }
+
+}  // namespace test_follow_contacts

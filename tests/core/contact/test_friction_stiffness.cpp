@@ -14,6 +14,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_friction_stiffness {
+
 using namespace rollsim;
 using json = nlohmann::json;
 
@@ -181,3 +183,5 @@ TEST(FrictionStiffness, ADirectionNotSetFromTheSlipAtThisIterateGivesNone) {
   std::fill(pairs[0].slip.begin(), pairs[0].slip.end(), 0);  // sticking points: their rows hold them
   EXPECT_TRUE(slip_direction_stiffness(s.model, pairs).empty());
 }
+
+}  // namespace test_friction_stiffness

@@ -12,6 +12,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_hertz {
+
 using namespace rollsim;
 
 namespace {
@@ -60,3 +62,5 @@ TEST(Hertz, HalfWidthAndPeakPressureConvergeUnderRefinement) {
   }
   EXPECT_GT(rows.back().active, 2 * rows.front().active) << "the contact zone is resolved by more nodes";
 }
+
+}  // namespace test_hertz

@@ -7,6 +7,8 @@
 #include "model/DofMap.h"
 #include "model/RigidModes.h"
 
+namespace test_kernel_basis {
+
 using namespace rollsim;
 
 namespace {
@@ -113,3 +115,5 @@ TEST(KernelBasis, AStressedFiniteStrainTangentKeepsOnlyTheTranslations) {
     EXPECT_LT((t - R * (R.transpose() * t)).norm(), 1e-10 * t.norm()) << "translation " << c;
   }
 }
+
+}  // namespace test_kernel_basis

@@ -9,6 +9,8 @@
 #include "project/Project.h"
 #include "solve/MixedStrategy.h"
 
+namespace test_mixed_floating {
+
 using namespace rollsim;
 
 namespace {
@@ -52,3 +54,5 @@ TEST(MixedFloating, FactorsEachBodyOnceAcrossActiveSetIterations) {
   EXPECT_GT(res.active_set_iterations, 1);
   for (const auto& [group, count] : mixed.stats().factorizations) EXPECT_EQ(count, 1) << group;
 }
+
+}  // namespace test_mixed_floating

@@ -10,6 +10,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_slip_coupling {
+
 using namespace rollsim;
 
 namespace {
@@ -74,3 +76,5 @@ TEST(SlipCoupling, AForceTheShearCapFixesStaysALoad) {
   const auto capped = friction_loads(s.model, s.pairs, FrictionLoads::Capped);
   EXPECT_GT(capped[s.model.contacts[0].slave_body].cwiseAbs().maxCoeff(), 0.0);
 }
+
+}  // namespace test_slip_coupling

@@ -10,6 +10,8 @@
 #include "mesh/Cylinder.h"
 #include "solve/SolverStrategy.h"
 
+namespace test_bbar_locking {
+
 using namespace rollsim;
 
 namespace {
@@ -80,3 +82,5 @@ TEST(BBarLocking, BothAgreeAtModerateNu) {
   EXPECT_NEAR(inner_displacement(2, 0.3, Formulation::Full, 16) / exact, 1.0, 0.01);
   EXPECT_NEAR(inner_displacement(2, 0.3, Formulation::BBar, 16) / exact, 1.0, 0.01);
 }
+
+}  // namespace test_bbar_locking

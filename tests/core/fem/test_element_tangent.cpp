@@ -8,6 +8,8 @@
 #include "../../common/SaturatingSteel.h"
 #include "fem/SolidElement.h"
 
+namespace test_element_tangent {
+
 using namespace rollsim;
 
 namespace {
@@ -75,3 +77,5 @@ TEST(ElementTangent, ElasticMaterialGivesTheLinearElement) {
   EXPECT_LE((K - K_linear).norm(), 1e-12 * K.norm());
   EXPECT_LE((fe - K_linear * ue).norm(), 1e-12 * fe.norm());
 }
+
+}  // namespace test_element_tangent

@@ -9,6 +9,8 @@
 #include "../../common/SaturatingSteel.h"
 #include "fem/FiniteStrainElement.h"
 
+namespace test_finite_strain_element {
+
 using namespace rollsim;
 
 namespace {
@@ -137,3 +139,5 @@ TEST(FiniteStrainElement, RigidMotionGivesNoForce) {
   ASSERT_TRUE(FiniteStrainElement<3>::tangent_and_force(X, *mat, Formulation::Full, u, c.data(), t.data(), nullptr, f));
   EXPECT_LT(f.norm(), 1e-8);
 }
+
+}  // namespace test_finite_strain_element

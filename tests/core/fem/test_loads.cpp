@@ -12,6 +12,8 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 
+namespace test_loads {
+
 using namespace rollsim;
 
 namespace {
@@ -146,3 +148,5 @@ TEST(Loads, APlaneStrainColumnUnderATopTractionIsNodallyExactAndUnderItsWeightCo
   EXPECT_LT(coarse, 1e-3);
   EXPECT_LT(fine, coarse / 4);  // measured 5.5e-4 on 8, 9.6e-5 on 32 elements
 }
+
+}  // namespace test_loads

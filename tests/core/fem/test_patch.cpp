@@ -9,6 +9,8 @@
 #include "mesh/StructuredBlock.h"
 #include "solve/SolverStrategy.h"
 
+namespace test_patch {
+
 using namespace rollsim;
 
 namespace {
@@ -82,3 +84,5 @@ TEST(PatchTest, Quad4FullIntegration) { check_patch(2, Formulation::Full); }
 TEST(PatchTest, Quad4BBar) { check_patch(2, Formulation::BBar); }
 TEST(PatchTest, Hex8FullIntegration) { check_patch(3, Formulation::Full); }
 TEST(PatchTest, Hex8BBar) { check_patch(3, Formulation::BBar); }
+
+}  // namespace test_patch

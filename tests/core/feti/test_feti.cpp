@@ -11,6 +11,8 @@
 #include "project/Project.h"
 #include "solve/MixedStrategy.h"
 
+namespace test_feti {
+
 using namespace rollsim;
 
 namespace {
@@ -112,3 +114,5 @@ TEST(Feti, ThreadsGiveBitIdenticalResultsWhereCholmodOrdersWithMetis) {
   EXPECT_EQ(relative_difference(one, two), 0.0);
   EXPECT_EQ(relative_difference(two, again), 0.0);
 }
+
+}  // namespace test_feti

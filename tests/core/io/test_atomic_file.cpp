@@ -15,6 +15,8 @@
 #include "../../common/FreshDir.h"
 #include "io/AtomicFile.h"
 
+namespace test_atomic_file {
+
 using namespace rollsim;
 namespace fs = std::filesystem;
 
@@ -124,3 +126,5 @@ TEST(AtomicFile, TemporaryNamesAreRecognised) {
   EXPECT_FALSE(temporary_for("result.vtu"));
   EXPECT_FALSE(temporary_for(".tmp"));
 }
+
+}  // namespace test_atomic_file

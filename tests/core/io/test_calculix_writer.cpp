@@ -19,6 +19,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_calculix_writer {
+
 using namespace rollsim;
 namespace fs = std::filesystem;
 
@@ -286,3 +288,5 @@ TEST(CalculixWriter, SameContactForceAsCalculix3D) {
   const auto [frictionless, ccx_frictionless] = contact_forces(sample("block-indent-3d-20x12x4", "frictionless"), "fl");
   EXPECT_NEAR(ccx_frictionless, frictionless, 0.03 * frictionless);
 }
+
+}  // namespace test_calculix_writer

@@ -7,6 +7,8 @@
 
 #include "io/OutputFields.h"
 
+namespace test_output_fields {
+
 using namespace rollsim;
 
 TEST(OutputFields, NamesAreDistinctAndInTheRegistrysOrder) {
@@ -33,3 +35,5 @@ TEST(OutputFields, ANameSelectsItsPointAndCellArraysAndAllSelectsEveryField) {
   EXPECT_EQ(selected_by_all, static_cast<int>(output_fields().size()));
   EXPECT_EQ(selected_by_none, static_cast<int>(output_fields().size()));
 }
+
+}  // namespace test_output_fields

@@ -13,6 +13,8 @@
 #include "io/AtomicFile.h"
 #include "io/OutputFolder.h"
 
+namespace test_output_folder {
+
 using namespace rollsim;
 namespace fs = std::filesystem;
 
@@ -57,3 +59,5 @@ TEST(OutputFolder, FailedAtomicWriteLeavesNoTemporary) {
     EXPECT_NE(e.path().filename().string()[0], '.') << "a temporary was left: " << e.path();
   fs::remove_all(d);
 }
+
+}  // namespace test_output_folder

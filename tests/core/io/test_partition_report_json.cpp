@@ -8,7 +8,7 @@
 #include "partition/PartitionReport.h"
 #include "partition/StructuredPartition.h"
 
-namespace rollsim {
+namespace rollsim::test_partition_report_json {
 namespace {
 
 TEST(PartitionReportJson, CarriesTheTableAndThePrediction) {
@@ -33,4 +33,4 @@ TEST(PartitionReportJson, CarriesTheTableAndThePrediction) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_partition_report_json

@@ -11,6 +11,8 @@
 #include "../../common/FreshDir.h"
 #include "io/RunFolder.h"
 
+namespace test_run_folder {
+
 using namespace rollsim;
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -90,3 +92,5 @@ TEST(RunFolder, TheProjectHashIsSha256OfItsBytes) {
   EXPECT_EQ(file_sha256(d / "missing"), "");
   fs::remove_all(d);
 }
+
+}  // namespace test_run_folder

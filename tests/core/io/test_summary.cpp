@@ -8,7 +8,7 @@
 #include "project/Project.h"
 #include "project/RunProject.h"
 
-namespace rollsim {
+namespace rollsim::test_summary {
 namespace {
 
 Results factored(double flops, double seconds) {
@@ -67,4 +67,4 @@ TEST(Summary, ListsEveryIncrementsProbesAndReactions) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_summary

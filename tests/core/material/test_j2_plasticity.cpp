@@ -7,6 +7,8 @@
 
 #include "material/J2Plasticity.h"
 
+namespace test_j2_plasticity {
+
 using namespace rollsim;
 
 namespace {
@@ -107,3 +109,5 @@ TEST(J2Plasticity, ElasticStepKeepsTheState) {
   for (int i = 0; i < J2Plasticity::kStateSize; ++i) EXPECT_EQ(pt.trial[i], pt.committed[i]);
   EXPECT_EQ(m.name(), make_material(steel())->name());
 }
+
+}  // namespace test_j2_plasticity

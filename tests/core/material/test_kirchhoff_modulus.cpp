@@ -9,6 +9,8 @@
 #include "../../common/SaturatingSteel.h"
 #include "material/KirchhoffModulus.h"
 
+namespace test_kirchhoff_modulus {
+
 using namespace rollsim;
 
 namespace {
@@ -76,3 +78,5 @@ TEST(KirchhoffModulus, LogDividedDifferenceIsAccurateForCloseArguments) {
     EXPECT_NEAR(log_divided_difference(b, a), log_divided_difference(a, b), 1e-15);
   }
 }
+
+}  // namespace test_kirchhoff_modulus

@@ -5,6 +5,8 @@
 
 #include "material/LinearElastic.h"
 
+namespace test_material {
+
 using namespace rollsim;
 
 TEST(Material, MadeFromPlainDataIsLinearElasticWithoutState) {
@@ -37,3 +39,5 @@ TEST(Material, VonMisesOfUniaxialAndPureShear) {
   EXPECT_NEAR(von_mises(uniaxial), 100.0, 1e-12);
   EXPECT_NEAR(von_mises(shear), 50.0 * std::sqrt(3.0), 1e-12);
 }
+
+}  // namespace test_material

@@ -13,7 +13,7 @@
 
 #include "mesh/Annulus.h"
 
-namespace rollsim {
+namespace rollsim::test_annulus {
 namespace {
 
 using Vec = std::array<double, 3>;
@@ -248,4 +248,4 @@ TEST(Annulus, InvalidSpecsThrowNamingTheField) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_annulus

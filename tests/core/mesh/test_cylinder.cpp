@@ -14,7 +14,7 @@
 #include "mesh/Annulus.h"
 #include "mesh/Cylinder.h"
 
-namespace rollsim {
+namespace rollsim::test_cylinder {
 namespace {
 
 using Vec = std::array<double, 3>;
@@ -261,4 +261,4 @@ TEST(Cylinder, InvalidSpecsThrowNamingTheField) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_cylinder

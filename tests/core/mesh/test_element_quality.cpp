@@ -6,6 +6,8 @@
 
 #include "mesh/ElementQuality.h"
 
+namespace test_element_quality {
+
 using namespace rollsim;
 
 namespace {
@@ -46,3 +48,5 @@ TEST(ElementQuality, RigidMotionIsOneStretchIsTheVolumeRatioFoldingIsNegative) {
     EXPECT_LT(corner_jacobian_ratio(m, folded.data(), 0), 0.0);
   }
 }
+
+}  // namespace test_element_quality

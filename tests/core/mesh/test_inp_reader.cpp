@@ -10,6 +10,8 @@
 #include "mesh/InpReader.h"
 #include "mesh/MeshImport.h"
 
+namespace test_inp_reader {
+
 using namespace rollsim;
 
 namespace {
@@ -147,3 +149,5 @@ TEST(InpReader, IncludedFilesAreReadRelativeToTheDeck) {
     EXPECT_TRUE(has(e.what(), "missing.inp: cannot be read")) << e.what();
   }
 }
+
+}  // namespace test_inp_reader

@@ -13,7 +13,7 @@
 
 #include "mesh/PlateWithHole.h"
 
-namespace rollsim {
+namespace rollsim::test_plate_with_hole {
 namespace {
 
 using Vec = std::array<double, 3>;
@@ -239,4 +239,4 @@ TEST(PlateWithHole, InvalidSpecsThrowNamingTheField) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_plate_with_hole

@@ -8,6 +8,8 @@
 #include "mesh/RollGap.h"
 #include "mesh/StructuredBlock.h"
 
+namespace test_roll_gap {
+
 using namespace rollsim;
 
 TEST(RollGap, LowerSurfaceIsThePolygonOfTheRollMesh) {
@@ -45,3 +47,5 @@ TEST(RollGap, CutScalesTheThicknessUnderTheRollOnly) {
   Mesh thin = make_block(s);
   EXPECT_THROW(cut_to_roll(thin, 1, 50.0, RollPolygon{0.0, 300.0, 300.0, 120}), std::invalid_argument);
 }
+
+}  // namespace test_roll_gap

@@ -12,7 +12,7 @@
 
 #include "mesh/RoundBar.h"
 
-namespace rollsim {
+namespace rollsim::test_round_bar {
 namespace {
 
 using Vec = std::array<double, 3>;
@@ -262,4 +262,4 @@ TEST(RoundBar, RefusesBadSpecsNamingTheField) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_round_bar

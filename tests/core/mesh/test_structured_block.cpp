@@ -12,7 +12,7 @@
 
 #include "mesh/StructuredBlock.h"
 
-namespace rollsim {
+namespace rollsim::test_structured_block {
 namespace {
 
 using Vec = std::array<double, 3>;
@@ -252,4 +252,4 @@ TEST(StructuredBlock, GradingAlongYAndZBiasesThoseAxesAlone) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_structured_block

@@ -4,6 +4,8 @@
 
 #include "model/Conditioning.h"
 
+namespace test_conditioning {
+
 using namespace rollsim;
 
 namespace {
@@ -41,3 +43,5 @@ TEST(Conditioning, TheRollingPassIsNotWarnedAbout) {
   m.bodies = {body("slab", 1e5, 0.3, Formulation::BBar), body("roll", 2.1e5, 0.3)};
   EXPECT_TRUE(conditioning_warnings(m).empty());
 }
+
+}  // namespace test_conditioning

@@ -8,6 +8,8 @@
 #include "model/DofMap.h"
 #include "model/PrescribedMotion.h"
 
+namespace test_prescribed_motion {
+
 using namespace rollsim;
 
 TEST(PrescribedMotion, QuarterTurnAboutZ) {
@@ -74,3 +76,5 @@ TEST(DofMapRotation, ValuesFollowTheAngleAndSubdomainsInheritThem) {
       EXPECT_EQ(sub.prescribed(static_cast<int>(l), c, 0.3), map.prescribed(part[l], c, 0.3));
     }
 }
+
+}  // namespace test_prescribed_motion

@@ -25,6 +25,8 @@
 #include "PartitionFixtures.h"
 #include "partition/StructuredPartition.h"
 
+namespace test_interface_paper_tables {
+
 using namespace rollsim;
 
 namespace {
@@ -147,3 +149,5 @@ TEST(PaperInterfaceCounts, FreeDofCountsOfThe2DSquare) {
   EXPECT_EQ(count(model, one_cut).non_redundant, 240);
   EXPECT_EQ(count(model, two_by_two).fully_redundant, 2 * (239 + 6));  // 6 pairs at the crosspoint
 }
+
+}  // namespace test_interface_paper_tables

@@ -15,6 +15,8 @@
 #include "PartitionFixtures.h"
 #include "mesh/PlateWithHole.h"
 
+namespace test_interface_plate_hole {
+
 using namespace rollsim;
 
 namespace {
@@ -94,3 +96,5 @@ TEST(PlateHoleInterface, PaperMultiplierCountsWithSeventyRadialElements) {
   EXPECT_EQ(test::modes_per_group(two), (std::vector<int>{1, 0}));
   EXPECT_EQ(test::modes_per_group(four), (std::vector<int>{1, 2, 1, 0}));
 }
+
+}  // namespace test_interface_plate_hole

@@ -9,6 +9,8 @@
 #include "partition/PartitionCheck.h"
 #include "partition/StructuredPartition.h"
 
+namespace test_partition_kinds {
+
 using namespace rollsim;
 
 namespace {
@@ -159,3 +161,5 @@ TEST(PartitionCheck, PointAndEdgeContactsAreNotConnections) {
   strict.split_disconnected = false;
   EXPECT_THROW(decompose_body(m, 0, Partition{2, diagonal, "explicit"}, strict), PartitionError);
 }
+
+}  // namespace test_partition_kinds

@@ -21,6 +21,8 @@
 #include "solve/CholmodFactorization.h"
 #include "solve/CholmodView.h"
 
+namespace test_partition_report {
+
 using namespace rollsim;
 
 namespace {
@@ -361,3 +363,5 @@ TEST(PartitionReport, IncrementalUpdateEqualsAFreshReport) {
     EXPECT_EQ(reporter.last_recomputed(), 0);
   }
 }
+
+}  // namespace test_partition_report

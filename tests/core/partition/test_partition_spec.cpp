@@ -4,6 +4,8 @@
 #include "PartitionFixtures.h"
 #include "partition/PartitionSpec.h"
 
+namespace test_partition_spec {
+
 using namespace rollsim;
 
 namespace {
@@ -67,3 +69,5 @@ TEST(PartitionSpec, MakePartitionChecksTheBody) {
   EXPECT_EQ(p.num_subdomains, 3);  // largest id + 1
   EXPECT_EQ(p.description, "explicit");
 }
+
+}  // namespace test_partition_spec

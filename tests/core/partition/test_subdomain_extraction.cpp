@@ -11,6 +11,8 @@
 #include "partition/MetisPartition.h"
 #include "partition/StructuredPartition.h"
 
+namespace test_subdomain_extraction {
+
 using namespace rollsim;
 
 namespace {
@@ -166,3 +168,5 @@ TEST(SubdomainExtraction, KernelDimensionNear3DSupports) {
   test::support(tip, test::nodes_in_box(tip, {4, 0, 4}, {4, 4, 4}), 2, 1.0);  // uz on an edge line: 4 modes left
   EXPECT_EQ(checked_modes(tip, {2, 2, 2}), (std::vector<int>{0, 6, 0, 6, 0, 4, 0, 4}));
 }
+
+}  // namespace test_subdomain_extraction

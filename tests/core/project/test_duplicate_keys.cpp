@@ -5,6 +5,8 @@
 #include "project/DuplicateKeys.h"
 #include "project/Project.h"
 
+namespace test_duplicate_keys {
+
 using namespace rollsim;
 
 TEST(DuplicateKeys, NamesEachRepeatedKeyByItsPath) {
@@ -30,3 +32,5 @@ TEST(DuplicateKeys, AProjectWithOneIsRefused) {
     EXPECT_NE(std::string(e.what()).find("given twice"), std::string::npos) << e.what();
   }
 }
+
+}  // namespace test_duplicate_keys

@@ -8,6 +8,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_project_fuzz {
+
 using namespace rollsim;
 
 namespace {
@@ -84,3 +86,5 @@ TEST(ProjectFuzz, NestingWithinTheLimitIsNotRefusedForIt) {
     EXPECT_NE(std::string(e.what()).find("x: unknown field"), std::string::npos) << e.what();
   }
 }
+
+}  // namespace test_project_fuzz

@@ -10,6 +10,8 @@
 #include "../../common/RollingPass.h"
 #include "project/Project.h"
 
+namespace test_run_config {
+
 using namespace rollsim;
 
 namespace {
@@ -43,3 +45,5 @@ TEST(RunConfig, APassWithItsInterfaceToleranceUnsetRolls) {
   ASSERT_FALSE(r.increments.empty());
   EXPECT_DOUBLE_EQ(r.increments.back().load_factor, 1.0);  // the whole 4 mm of travel
 }
+
+}  // namespace test_run_config

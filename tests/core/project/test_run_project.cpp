@@ -9,6 +9,8 @@
 #include "project/ModelBuilder.h"
 #include "project/RunProject.h"
 
+namespace test_run_project {
+
 using namespace rollsim;
 
 namespace {
@@ -42,3 +44,5 @@ TEST(RunProject, AnalysisIsChosenByNameAndValidated) {
     EXPECT_NE(std::string(e.what()).find("analysis.type"), std::string::npos) << e.what();
   }
 }
+
+}  // namespace test_run_project

@@ -13,6 +13,8 @@
 #include "project/ModelBuilder.h"
 #include "project/RunProject.h"
 
+namespace test_solver_choice {
+
 using namespace rollsim;
 
 namespace {
@@ -110,3 +112,5 @@ TEST(SolverChoice, AutoIsAValidModeAndOtherWordsAreNot) {
   }
   EXPECT_THROW(make_solver("auto", {}), std::invalid_argument) << "auto names no strategy of its own";
 }
+
+}  // namespace test_solver_choice

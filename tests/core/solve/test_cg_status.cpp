@@ -5,6 +5,8 @@
 
 #include "solve/ProjectedCG.h"
 
+namespace test_cg_status {
+
 using namespace rollsim;
 
 namespace {
@@ -70,3 +72,5 @@ TEST(CgStatus, ExitCodesOfTheVocabulary) {
   EXPECT_STREQ(to_string(Status::not_converged), "not_converged");
   EXPECT_STREQ(to_string(Reason::active_set_cycling), "active_set_cycling");
 }
+
+}  // namespace test_cg_status

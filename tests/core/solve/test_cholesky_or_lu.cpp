@@ -6,6 +6,8 @@
 #include "solve/CholeskyOrLU.h"
 #include "solve_error.h"
 
+namespace test_cholesky_or_lu {
+
 using namespace rollsim;
 
 namespace {
@@ -68,3 +70,5 @@ TEST(CholeskyOrLU, TinyPositivePivotIsRefusedWithoutLU) {
   }
   EXPECT_FALSE(f.indefinite());
 }
+
+}  // namespace test_cholesky_or_lu

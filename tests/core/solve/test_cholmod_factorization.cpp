@@ -8,7 +8,7 @@
 #include "grid_matrix.h"
 #include "solve/CholmodFactorization.h"
 
-namespace rollsim {
+namespace rollsim::test_cholmod_factorization {
 namespace {
 
 using testing::fe_grid_matrix;
@@ -60,4 +60,4 @@ TEST(CholmodFactorization, RefusesAnUnknownOrdering) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_cholmod_factorization

@@ -5,6 +5,8 @@
 
 #include "solve/ConstraintBasis.h"
 
+namespace test_constraint_basis {
+
 using namespace rollsim;
 
 namespace {
@@ -50,3 +52,5 @@ TEST(ConstraintBasis, RoundOffTermsDoNotMakeARowIndependent) {
   C.coeffRef(1, 3) = 5e-19;
   EXPECT_EQ(independent_rows(C).kept.size(), 4u);
 }
+
+}  // namespace test_constraint_basis

@@ -9,6 +9,8 @@
 #include "project/Project.h"
 #include "solve/MixedStrategy.h"
 
+namespace test_constraint_rows_change {
+
 using namespace rollsim;
 
 namespace {
@@ -100,3 +102,5 @@ TEST(ConstraintRowsChange, FetiPreconditionerFollowsTheRowsNotTheirCount) {
     EXPECT_LT((stacked(again) - stacked(first)).norm() / stacked(first).norm(), 1e-9);
   }
 }
+
+}  // namespace test_constraint_rows_change

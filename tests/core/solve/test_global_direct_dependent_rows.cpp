@@ -7,6 +7,8 @@
 
 #include "solve/SolverStrategy.h"
 
+namespace test_global_direct_dependent_rows {
+
 using namespace rollsim;
 
 namespace {
@@ -91,3 +93,5 @@ TEST(GlobalDirectDependentRows, ANewtonCorrectionsRowsMayDisagreeByTheAccuracyOf
   sys.d[3] = 1e-3;  // a miss of the order of its terms is still a contradiction
   EXPECT_THROW(make_solver("direct", {})->solve(sys), SingularMatrix);
 }
+
+}  // namespace test_global_direct_dependent_rows

@@ -4,6 +4,8 @@
 
 #include "solve/SolverStrategy.h"
 
+namespace test_global_direct_unsymmetric {
+
 using namespace rollsim;
 
 namespace {
@@ -62,3 +64,5 @@ TEST(GlobalDirectUnsymmetric, MixedWithTheDenseInterfaceGivesTheSameSolution) {
   EXPECT_LT((s.u[0] - x.head(3)).norm(), 1e-12);
   EXPECT_NEAR(s.lambda[0], x[3], 1e-12);
 }
+
+}  // namespace test_global_direct_unsymmetric

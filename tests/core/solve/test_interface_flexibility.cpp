@@ -7,6 +7,8 @@
 #include "grid_matrix.h"
 #include "solve/InterfaceFlexibility.h"
 
+namespace test_interface_flexibility {
+
 using namespace rollsim;
 
 namespace {
@@ -94,3 +96,5 @@ TEST(InterfaceFlexibility, SolvesOnlyForDofsThatEnterWhileTheFactorStays) {
   expect_equal(flex.interface_block(g, solver), by_columns(g, solver), "new factor");
   EXPECT_EQ(flex.columns_solved(), first + 3 + 15);
 }
+
+}  // namespace test_interface_flexibility

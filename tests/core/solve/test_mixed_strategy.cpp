@@ -11,6 +11,8 @@
 #include "solve/CholmodFactorization.h"
 #include "solve/MixedStrategy.h"
 
+namespace test_mixed_strategy {
+
 using namespace rollsim;
 
 namespace {
@@ -196,3 +198,5 @@ TEST(MixedStrategy, DenseInterfaceSolverReportsASingularInterface) {
   EXPECT_NE(s.status.message.find("the dense interface solve left a relative residual"), std::string::npos)
       << s.status.message;
 }
+
+}  // namespace test_mixed_strategy

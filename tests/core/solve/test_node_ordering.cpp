@@ -8,7 +8,7 @@
 #include "grid_matrix.h"
 #include "solve/NodeOrdering.h"
 
-namespace rollsim {
+namespace rollsim::test_node_ordering {
 namespace {
 
 using testing::fe_grid_matrix;
@@ -58,4 +58,4 @@ TEST(NodeOrdering, OneNode) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_node_ordering

@@ -12,6 +12,8 @@
 #include "solve/PetscStrategy.h"
 #include "solve/SolverStrategy.h"
 
+namespace test_petsc_loader {
+
 using namespace rollsim;
 
 namespace {
@@ -76,3 +78,5 @@ TEST(PetscLoader, ABuildWithoutPetscRefusesTheStrategy) {
 #endif
 
 }  // namespace
+
+}  // namespace test_petsc_loader

@@ -5,6 +5,8 @@
 
 #include "solve/PetscOptionsCheck.h"
 
+namespace test_petsc_options_check {
+
 using namespace rollsim;
 
 TEST(PetscOptionsCheck, OptionsThatOpenFilesOrStartProgramsAreRefused) {
@@ -26,3 +28,5 @@ TEST(PetscOptionsCheck, TerminalOutputAndSettingsPass) {
         "-ksp_monitor_true_residual", "-mat_view ascii"})
     EXPECT_EQ(petsc_options_problem(good), "") << good;
 }
+
+}  // namespace test_petsc_options_check

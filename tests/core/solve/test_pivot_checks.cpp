@@ -7,6 +7,8 @@
 #include "solve/CholmodFactorization.h"
 #include "solve/SkylineFactorization.h"
 
+namespace test_pivot_checks {
+
 using namespace rollsim;
 
 namespace {
@@ -93,3 +95,5 @@ TEST(PivotChecks, SkylineJudgesMultiplierPivotsOnTheirOwnScale) {
   SkylineFactorization redundant(2);
   EXPECT_THROW(redundant.factorize(saddle(1e7, true)), SingularMatrix);
 }
+
+}  // namespace test_pivot_checks

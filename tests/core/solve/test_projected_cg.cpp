@@ -4,6 +4,8 @@
 
 #include "solve/ProjectedCG.h"
 
+namespace test_projected_cg {
+
 using namespace rollsim;
 
 namespace {
@@ -143,3 +145,5 @@ TEST(ProjectedCG, StartsFromAGuessWithTheToleranceOfTheLeastNormStart) {
   EXPECT_EQ(far.iterations, cold.iterations);
   EXPECT_EQ(far.lambda, cold.lambda);
 }
+
+}  // namespace test_projected_cg

@@ -5,6 +5,8 @@
 
 #include "solve/ProjectedGMRES.h"
 
+namespace test_projected_gmres {
+
 using namespace rollsim;
 
 namespace {
@@ -129,3 +131,5 @@ TEST(ProjectedGMRES, ACycleEndsWhereItsKrylovSpaceReachesTheNullSpaceOfF) {
   EXPECT_LT((r.lambda.head(n - 1) - lambda.head(n - 1)).norm(), 1e-9 * lambda.norm());
   EXPECT_LT(std::abs(r.lambda[n - 1]), 1e-6 * lambda.norm()) << "the free multiplier stays small";
 }
+
+}  // namespace test_projected_gmres

@@ -8,7 +8,7 @@
 
 #include "solve/ReverseCuthillMcKee.h"
 
-namespace rollsim {
+namespace rollsim::test_rcm {
 namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double, int>>;
@@ -143,4 +143,4 @@ TEST(RcmTest, ProfileOfSmallMatrixByHand) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_rcm

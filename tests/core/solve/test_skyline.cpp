@@ -10,7 +10,7 @@
 #include "solve/ReverseCuthillMcKee.h"
 #include "solve/SkylineFactorization.h"
 
-namespace rollsim {
+namespace rollsim::test_skyline {
 namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double, int>>;
@@ -266,4 +266,4 @@ TEST(SkylineFactoryTest, MakesByNameAndRejectsUnknownNames) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_skyline

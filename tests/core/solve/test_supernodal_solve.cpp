@@ -12,7 +12,7 @@
 #include "solve/CholmodView.h"
 #include "solve/SupernodalSolve.h"
 
-namespace rollsim {
+namespace rollsim::test_supernodal_solve {
 namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double, int>>;
@@ -132,4 +132,4 @@ TEST(SupernodalSolve, InverseQuadraticOverTheColumnsReachesEqualsTheDenseOne) {
 }
 
 }  // namespace
-}  // namespace rollsim
+}  // namespace rollsim::test_supernodal_solve

@@ -6,6 +6,8 @@
 #include "solve/UmfpackFactorization.h"
 #include "solve_error.h"
 
+namespace test_umfpack_factorization {
+
 using namespace rollsim;
 
 namespace {
@@ -28,3 +30,5 @@ TEST(UmfpackFactorization, RefinementStepsCanBeTurnedOff) {
   EXPECT_GT(refined.refinement_steps(), 0) << "UMFPACK's default refines";
   EXPECT_EQ(plain.refinement_steps(), 0);
 }
+
+}  // namespace test_umfpack_factorization

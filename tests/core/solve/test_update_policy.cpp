@@ -9,6 +9,8 @@
 #include "solve/SolverStrategy.h"
 #include "solve/UpdatePolicy.h"
 
+namespace test_update_policy {
+
 using namespace rollsim;
 
 namespace {
@@ -68,3 +70,5 @@ TEST(UpdatePolicy, EveryStrategyRefactorsExactlyWhatWasMarked) {
       EXPECT_LT((again.u[g] - first.u[g]).norm(), 1e-9 * (1 + first.u[g].norm()));
   }
 }
+
+}  // namespace test_update_policy

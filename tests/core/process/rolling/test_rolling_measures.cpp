@@ -11,6 +11,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_rolling_measures {
+
 using namespace rollsim;
 
 namespace {
@@ -131,3 +133,5 @@ TEST(RollingMeasures, ContactIsALengthIn2DAndAnAreaIn3D) {
   EXPECT_EQ(contact(3).unit, "mm²");
   EXPECT_EQ(contact(3).label, "contact area");
 }
+
+}  // namespace test_rolling_measures

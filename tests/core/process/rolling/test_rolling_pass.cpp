@@ -10,6 +10,8 @@
 #include "../../../common/PassRun.h"
 #include "../../../common/RollingPass.h"
 
+namespace test_rolling_pass {
+
 using namespace rollsim;
 
 TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
@@ -170,3 +172,5 @@ TEST(RollingPass, WholeWidthGivesTheHalfWidthPass) {
   EXPECT_NEAR(b.contact_length, a.contact_length, 1e-6 * a.contact_length);
   EXPECT_NEAR(b.spread, a.spread, 1e-6 * 350);
 }
+
+}  // namespace test_rolling_pass

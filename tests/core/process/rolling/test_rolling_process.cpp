@@ -14,6 +14,8 @@
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 
+namespace test_rolling_process {
+
 using namespace rollsim;
 
 namespace {
@@ -280,3 +282,5 @@ TEST(RollingProcess, ProgressCountsTheTravel) {
   EXPECT_EQ(progress_text(c, 0.0), "travel 0 of 120 mm");
   EXPECT_EQ(progress_text(c, 0.125), "travel 15 of 120 mm");
 }
+
+}  // namespace test_rolling_process

@@ -8,6 +8,8 @@
 
 #include "process/rolling/RollingTheory.h"
 
+namespace test_rolling_theory {
+
 using namespace rollsim;
 
 namespace {
@@ -45,3 +47,5 @@ TEST(RollingTheory, RigidRollDoesNotFlattenAndWidthScales3D) {
   EXPECT_NEAR(rolling_theory(wide).wusatowski_spread, 1.1366, 1e-3);
   EXPECT_EQ(rolling_theory(paper_pass()).wusatowski_spread, 0.0);  // plane strain: no spread
 }
+
+}  // namespace test_rolling_theory
