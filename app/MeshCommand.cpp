@@ -1,4 +1,5 @@
 // `rollsim check` and `rollsim mesh`: project -> model, validated, and its meshes written without solving.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "partition/PartitionReport.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
+#include "project/RunForecast.h"
 #include "project/RunProject.h"
 
 namespace rollsim::app {
@@ -40,6 +42,22 @@ std::string write_partition_report(const std::filesystem::path& file, const Mode
   }
   return {};
 }
+
+/// Characters (UTF-8 code points) of `s`: what a terminal column counts.
+size_t columns(const std::string& s) {
+  return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
+
+/// The process's facts, aligned, and the forecast's line.
+void print_forecast(const RunForecast& f) {
+  size_t name = 0, value = 0;
+  for (const ProcessFact& fact : f.facts)
+    name = std::max(name, columns(fact.name)), value = std::max(value, columns(fact.value));
+  for (const ProcessFact& fact : f.facts)
+    std::cout << "  " << fact.name << std::string(name - columns(fact.name) + 2, ' ') << fact.value
+              << std::string(value - columns(fact.value) + 2, ' ') << (fact.warning ? "(!) " : "") << fact.note << "\n";
+  std::cout << "forecast: " << forecast_line(f) << "\n";
+}
 }  // namespace
 
 int check_command(const std::string& file) {
@@ -53,6 +71,7 @@ int check_command(const std::string& file) {
     }
     std::cout << file << ": valid (" << m.bodies.size() << " bodies, " << m.total_nodes() << " nodes, "
               << m.total_elements() << " elements)\n";
+    print_forecast(forecast_run(p.config(), m));
     return 0;
   } catch (const ProjectError& e) {
     return invalid(e.what());

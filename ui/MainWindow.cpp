@@ -17,6 +17,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 
+#include "ForecastPanel.h"
 #include "LogPanel.h"
 #include "MeshView.h"
 #include "PartitionEditor.h"
@@ -80,6 +81,8 @@ MainWindow::MainWindow(QWidget* parent)
   log_ = new LogPanel;
   auto* tabs = new QTabWidget;
   tabs->setObjectName(QStringLiteral("bottomTabs"));
+  forecast_ = new ForecastPanel(doc_);
+  tabs->addTab(forecast_, tr("Forecast"));
   tabs->addTab(plot_, tr("Convergence"));
   tabs->addTab(log_, tr("Log"));
   auto* bottom_dock = new QDockWidget(tr("Residuals and log"), this);
@@ -301,6 +304,7 @@ bool MainWindow::start_run() {
   if (worker_->running() || refused_while_invalid(tr("Run"))) return false;
   partition_->flush();
   plot_->clear();
+  show_bottom(plot_);
   log_->info(tr("run %1 with solver %2")
                  .arg(QString::fromStdString(doc_->project().name()),
                       QString::fromStdString(doc_->project().data.at("solver").at("mode").get<std::string>())));
@@ -360,6 +364,11 @@ void MainWindow::show_results_view() {
   }
   view_bar_->refresh();
   plot_->flush();
+  show_bottom(plot_);
+}
+
+void MainWindow::show_bottom(QWidget* tab) {
+  if (auto* tabs = findChild<QTabWidget*>(QStringLiteral("bottomTabs"))) tabs->setCurrentWidget(tab);
 }
 
 void MainWindow::show_partitions() {

@@ -14,6 +14,7 @@ class QMenu;
 
 namespace rollsim::ui {
 
+class ForecastPanel;
 class LogPanel;
 class MeshView;
 class PartitionEditor;
@@ -61,6 +62,7 @@ class MainWindow : public QMainWindow {
   PropertyEditor* property_editor() const { return editor_; }
   RunPanel* run_panel() const { return run_panel_; }
   LogPanel* log() const { return log_; }
+  ForecastPanel* forecast() const { return forecast_; }
   /// "nodes 1,234 · elements 1,100 · dofs 2,300" as shown in the status bar.
   QString counts_text() const;
   /// The last run's status: "not run", "running", "converged", "cancelled", "error", ...
@@ -87,6 +89,8 @@ class MainWindow : public QMainWindow {
   void refresh_recent_menu();
   void refresh_title();
   void model_changed();
+  /// Raises a tab of the bottom dock: the forecast before a run, the convergence plots from its start.
+  void show_bottom(QWidget* tab);
   void run_finished(const RunOutcome& outcome);
 
   ProjectDocument* doc_;
@@ -100,6 +104,7 @@ class MainWindow : public QMainWindow {
   PartitionPanel* partition_panel_;
   RunPlots* plot_;
   LogPanel* log_;
+  ForecastPanel* forecast_;
   QLabel* counts_;
   QLabel* status_;
   QMenu* recent_menu_ = nullptr;

@@ -57,6 +57,7 @@ void ProjectDocument::load_text(const std::string& text, const QString& file, co
   set_modified(false);
   model_ = std::move(model);
   counts_ = count(*model_);
+  forecast_ = forecast_run(project_.config(), *model_);
   const bool had_refused = !refused_.empty();
   refused_.clear();
   emit changed();
@@ -154,6 +155,7 @@ void ProjectDocument::start_build() {
     try {
       auto model = std::make_shared<Model>(build_model(*project));
       b.counts = count(*model);
+      b.forecast = forecast_run(project->config(), *model);
       b.model = std::move(model);
     } catch (const ProjectError& e) {
       b.error = e.what();
@@ -185,6 +187,7 @@ void ProjectDocument::build_done() {
   built_modified_ = modified_;
   model_ = b.model;
   counts_ = b.counts;
+  forecast_ = b.forecast;
   emit modelChanged();
 }
 

@@ -12,6 +12,7 @@
 
 #include "model/Model.h"
 #include "project/Project.h"
+#include "project/RunForecast.h"
 
 namespace rollsim::ui {
 
@@ -69,6 +70,9 @@ class ProjectDocument : public QObject {
   /// The model of the current project; null until the first build finishes.
   std::shared_ptr<const Model> model() const { return model_; }
   ModelCounts counts() const { return counts_; }
+  /// What a run of the current project will be and cost (its process's facts, increments, predicted time), made
+  /// with each model.
+  const RunForecast& forecast() const { return forecast_; }
   /// True while a model build runs in the background.
   bool building() const { return watcher_.isRunning(); }
   bool modified() const { return modified_; }
@@ -92,6 +96,7 @@ class ProjectDocument : public QObject {
   struct Build {
     std::shared_ptr<const Model> model;
     ModelCounts counts;
+    RunForecast forecast;
     std::string error;
     unsigned long generation = 0;
   };
@@ -106,6 +111,7 @@ class ProjectDocument : public QObject {
   bool built_modified_ = false;
   std::shared_ptr<const Model> model_;
   ModelCounts counts_;
+  RunForecast forecast_;
   QString file_;
   bool modified_ = false;
   unsigned long generation_ = 0;

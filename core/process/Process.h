@@ -18,11 +18,25 @@
 
 namespace rollsim {
 
+/// One thing a process is, in its own terms, known before anything is solved: "bite angle" "12.0°".
+struct ProcessFact {
+  std::string name;      // "bite angle"
+  std::string value;     // with its unit: "12.0°", "62.9 mm"
+  std::string note;      // how it follows, or what it means: "cos α = 1 − Δh / 2R"
+  bool warning = false;  // the fact stops the run or needs the user's eye (a pass that does not bite)
+};
+
 /// A process running on a built model.
 class ProcessRun : public IncrementMeasure {
  public:
   /// Why the run must not be solved (a status that is not converged, e.g. no_bite), or converged when it may.
   virtual RunStatus refusal() const { return {}; }
+  /// What the run is in the process's terms, before it is solved (a pass: its bite angle, contact length, whether
+  /// it bites, its speed): `rollsim check` and the window's forecast show them.
+  virtual std::vector<ProcessFact> facts() const { return {}; }
+  /// The share of the analysis's load (0…1] the run is expected to reach: a pass ends once its slab has gone
+  /// through the roll gap, whatever travel is left (IncrementMeasure::over).
+  virtual double expected_share() const { return 1; }
   /// Its measures of `results` (every completed increment): tables, charts, summary section, report.
   virtual ProcessResults finish(const Results& results) const = 0;
 };

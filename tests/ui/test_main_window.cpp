@@ -6,6 +6,8 @@
 // groups each iteration refactored and why; a rolling pass plots its roll force and torque as it runs, and the arc.
 // A typed value that validation refuses stays in its field with its message under it, and Save and Run are refused
 // until it is corrected: the window never writes a value the user did not type (the prefix 0.9 of a refused 0.95).
+// Before a run the bottom dock shows the forecast: the pass in mill terms (bite angle, contact length, whether it
+// bites, its speed) and the predicted cost, rebuilt with every edit; a run turns it to the convergence plots.
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
 #include <QFile>
@@ -15,12 +17,15 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QSurfaceFormat>
+#include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "ForecastPanel.h"
 #include "LogPanel.h"
 #include "MainWindow.h"
 #include "MeshView.h"
@@ -84,6 +89,38 @@ class TestMainWindow : public QObject {
     QVERIFY2(sections.contains(QStringLiteral("bodies (0 + 2 from the process)")), qPrintable(sections.join(", ")));
     QVERIFY2(sections.contains(QStringLiteral("materials (0 + 2 from the process)")), qPrintable(sections.join(", ")));
     QVERIFY2(sections.contains(QStringLiteral("probes (0)")), qPrintable(sections.join(", ")));
+  }
+
+  void the_forecast_shows_the_pass_in_mill_terms_before_it_runs() {
+    // issue 36 item 4: bite angle, contact length, whether it bites, speed and the predicted cost, before running
+    MainWindow w;
+    w.new_project();
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    auto* tabs = w.findChild<QTabWidget*>(QStringLiteral("bottomTabs"));
+    QCOMPARE(tabs->currentWidget(), static_cast<QWidget*>(w.forecast()));
+    auto row = [&](const QString& name) {
+      QTableWidget* t = w.forecast()->facts();
+      for (int r = 0; r < t->rowCount(); ++r)
+        if (t->item(r, 0)->text() == name) return t->item(r, 1)->text();
+      return QString();
+    };
+    QCOMPARE(row(QStringLiteral("bite angle")), QStringLiteral("12.04°"));
+    QCOMPARE(row(QStringLiteral("contact length")), QStringLiteral("62.9 mm"));
+    QCOMPARE(row(QStringLiteral("bites")), QStringLiteral("yes"));
+    QVERIFY(row(QStringLiteral("mean strain rate")).isEmpty());
+    QVERIFY2(w.forecast()->headline().contains(QStringLiteral("120 increments, about")),
+             qPrintable(w.forecast()->headline()));
+    // edits rebuild the model, and the forecast with it
+    QSignalSpy rebuilt(w.document(), &ProjectDocument::modelChanged);
+    QVERIFY(w.document()->propose("/process/roll_speed", 60.0).empty());
+    QVERIFY(rebuilt.wait(10000));
+    QCOMPARE(row(QStringLiteral("roll surface speed")), QStringLiteral("1.88 m/s"));
+    QVERIFY(w.document()->propose({{"/process/friction", "coulomb"}, {"/process/friction_coefficient", 0.1}}).empty());
+    QVERIFY(rebuilt.wait(10000));
+    QCOMPARE(row(QStringLiteral("bites")), QStringLiteral("no"));
+    QVERIFY2(w.forecast()->headline().contains(QStringLiteral("nothing will be solved")),
+             qPrintable(w.forecast()->headline()));
   }
 
   void editing_a_count_regenerates_the_mesh() {
@@ -246,6 +283,8 @@ class TestMainWindow : public QObject {
     QSignalSpy live(w.worker(), &AnalysisWorker::measured);
     QSignalSpy finished(w.worker(), &AnalysisWorker::finished);
     QVERIFY(w.start_run());
+    // the bottom dock turns from the forecast to the convergence plots
+    QCOMPARE(w.findChild<QTabWidget*>(QStringLiteral("bottomTabs"))->currentWidget(), static_cast<QWidget*>(w.plot()));
     QVERIFY(finished.wait(60000));
     QCOMPARE(w.run_status(), QStringLiteral("converged"));
     QVERIFY(live.count() >= 5);  // every increment but the last, as it completed

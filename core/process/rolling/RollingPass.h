@@ -12,6 +12,8 @@ struct RollingPass {
   double radius = 0;                               // roll radius R [length]
   double entry_thickness = 0, exit_thickness = 0;  // nominal h0 and h1 of the whole slab [length]
   double width = 0;                                // whole slab width b0 (3D) [length]
+  double slab_length = 0;                          // the slab's length before the pass [length]
+  double rpm = 0;                                  // roll speed [1/min] (0: not given)
   double travel = 0;                               // roll surface travel R θ at load factor 1 [length]
   double flow_stress = 0;                          // the slab's σ_0 [stress]
   double roll_E = 0, roll_nu = 0.3;                // the roll's elasticity (E 0: a rigid roll) [stress, -]

@@ -29,6 +29,11 @@ Field poisson(std::string name, std::string doc) {
 Field count(std::string name, int d, std::string doc) {
   return def(schema::count(std::move(name), std::move(doc), 1e5), d);
 }
+/// A field without a default: either it or another field gives the value.
+Field optional(Field f) {
+  f.default_value = nullptr;
+  return f;
+}
 }  // namespace
 
 const ObjectSchema& rolling_process_schema() {
@@ -46,23 +51,19 @@ const ObjectSchema& rolling_process_schema() {
       {number("slab_length", "length", 300, 0, 1e6, "slab length along x (rolling direction)"),
        number("slab_width", "length", 350, 0, 1e6, "slab width (3D: along y; half is modelled)"),
        number("slab_thickness", "length", 100, 0, 1e6, "entry thickness h0 (half is modelled)"),
-       number("roll_radius", "length", 300, 0, 1e6, "roll radius R"),
+       optional(number("roll_radius", "length", 0, 0, 1e6, "roll radius R (default 300; or give roll_diameter)")),
+       optional(number("roll_diameter", "length", 0, 0, 2e6, "roll diameter 2R, instead of `roll_radius`")),
+       optional(number("roll_speed", "rpm", 0, 0, 1e4,
+                       "roll speed [revolutions per minute]: the surface speed ωR, the time of the pass, the mean "
+                       "strain rate and the roll power (torque × ω) follow from it (without it: travel only; the "
+                       "slab's flow stress does not depend on rate yet)")),
        number("roll_hub_radius", "length", 150, 0, 1e6,
               "inner radius of the modelled roll ring (the hub, turned as a rigid body)"),
        number("barrel_width", "length", 400, 0, 1e6, "roll barrel width (3D; half is modelled)"),
-       [] {
-         Field f = number("reduction", "-", 0, 0, 0.9,
-                          "thickness reduction (h0 − h1) / h0 (default 0.132, the paper's; or give exit_thickness)");
-         f.default_value = nullptr;
-         return f;
-       }(),
-       [] {
-         Field f =
-             number("exit_thickness", "length", 0, 0, 1e6,
-                    "exit thickness h1 of the whole slab, instead of `reduction` (at least 10 % of h0, below it)");
-         f.default_value = nullptr;
-         return f;
-       }(),
+       optional(number("reduction", "-", 0, 0, 0.9,
+                       "thickness reduction (h0 − h1) / h0 (default 0.132, the paper's; or give exit_thickness)")),
+       optional(number("exit_thickness", "length", 0, 0, 1e6,
+                       "exit thickness h1 of the whole slab, instead of `reduction` (at least 10 % of h0, below it)")),
        count("slab_nx", 48, "slab elements along the length"),
        [] {
          Field f = number("grading", "-", 1, 1, 2,
@@ -132,7 +133,14 @@ namespace {
 constexpr double kPaperReduction = 0.132;
 constexpr double kDefaultFriction = 0.3;  // Coulomb's μ when process.friction_coefficient is not given
 
+constexpr double kDefaultRollRadius = 300;
 double friction_coefficient(const json& p) { return p.value("friction_coefficient", kDefaultFriction); }
+
+/// R: roll_radius, half of roll_diameter, or 300 mm when neither is given.
+double roll_radius(const json& p) {
+  if (p.contains("roll_diameter")) return p.at("roll_diameter").get<double>() / 2;
+  return p.value("roll_radius", kDefaultRollRadius);
+}
 
 bool half_width(const json& process) { return process.value("width_symmetry", true); }
 
@@ -173,9 +181,10 @@ void check_ignored(const json& project, std::vector<Issue>& issues) {
 /// The generated bodies' geometry, checked in the process's terms (never a generated body's path).
 void check_geometry(const json& project, std::vector<Issue>& issues) {
   const json& p = project.at("process");
-  const double R = p.at("roll_radius"), hub = p.at("roll_hub_radius");
+  const double R = roll_radius(p), hub = p.at("roll_hub_radius");
+  const std::string radius = p.contains("roll_diameter") ? "half of process.roll_diameter" : "process.roll_radius";
   if (hub >= R)
-    issues.push_back({"process.roll_hub_radius", mm(hub) + " must be smaller than process.roll_radius (" + mm(R) +
+    issues.push_back({"process.roll_hub_radius", mm(hub) + " must be smaller than " + radius + " (" + mm(R) +
                                                      "): the hub is the inner edge of the roll's ring"});
   const double W = p.at("slab_width"), barrel = p.at("barrel_width");
   if (project.at("dimension").get<int>() == 3 && W > barrel)
@@ -189,6 +198,8 @@ void check_rolling(const json& project, std::vector<Issue>& issues) {
   check_geometry(project, issues);
   const json& p = project.at("process");
   const double h0 = p.at("slab_thickness").get<double>();
+  if (p.contains("roll_radius") && p.contains("roll_diameter"))
+    issues.push_back({"process.roll_diameter", "give either process.roll_radius or process.roll_diameter, not both"});
   if (p.contains("reduction") && p.contains("exit_thickness"))
     issues.push_back({"process.exit_thickness", "give either process.reduction or process.exit_thickness, not both"});
   else if (p.contains("exit_thickness") && !(exit_thickness(p) < h0 && exit_thickness(p) >= 0.1 * h0))
@@ -209,7 +220,7 @@ json expand_rolling(const json& project) {
   const json& p = project.at("process");
   const int dim = project.at("dimension").get<int>();
   const double L = p.at("slab_length"), W = p.at("slab_width"), h0 = p.at("slab_thickness");
-  const double R = p.at("roll_radius");
+  const double R = roll_radius(p);
   const double h1 = exit_thickness(p), dh = (h0 - h1) / 2;
   const double axis = h1 / 2 + R;  // roll axis height above the slab's mid-plane
   json out = project;
@@ -317,7 +328,9 @@ RollingPass rolling_pass(const json& p, const Model& model) {
   pass.thickness_axis = model.dim - 1;
   pass.width_axis = model.dim == 3 ? 1 : -1;
   pass.half_width = model.dim == 3 && half_width(p);
-  pass.radius = p.at("roll_radius");
+  pass.radius = roll_radius(p);
+  pass.slab_length = p.at("slab_length");
+  if (p.contains("roll_speed")) pass.rpm = p.at("roll_speed");
   pass.entry_thickness = p.at("slab_thickness");
   pass.exit_thickness = exit_thickness(p);
   pass.width = p.at("slab_width");

@@ -1,7 +1,9 @@
 #include "process/rolling/RollingRun.h"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "process/rolling/RollingFacts.h"
 #include "process/rolling/RollingMeasures.h"
 #include "process/rolling/RollingReport.h"
 #include "process/rolling/RollingTheory.h"
@@ -13,6 +15,10 @@ RunStatus RollingRun::refusal() const {
   if (std::string no_bite = bite_refusal(pass_); !no_bite.empty()) return {Status::no_bite, Reason::none, no_bite};
   return {};
 }
+
+std::vector<ProcessFact> RollingRun::facts() const { return rolling_facts(pass_, model_.dim); }
+
+double RollingRun::expected_share() const { return std::min(1.0, travel_through(pass_) / pass_.travel); }
 
 MeasureTable RollingRun::live_table() const {
   MeasureTable t = history_table({}, model_.dim);

@@ -11,6 +11,8 @@ class RollingRun final : public ProcessRun {
  public:
   RollingRun(RollingPass pass, const Model& model) : pass_(pass), model_(model) {}
   RunStatus refusal() const override;
+  std::vector<ProcessFact> facts() const override;
+  double expected_share() const override;
   MeasureTable live_table() const override;
   ChartRequest live_chart() const override;
   MeasureRow measure(const IncrementResults& increment) const override;

@@ -1,5 +1,6 @@
 #include "process/rolling/RollingTheory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -30,6 +31,12 @@ RollingTheory rolling_theory(const RollingPass& pass) {
     t.hitchcock_radius_ratio =
         1 + 16 * (1 - pass.roll_nu * pass.roll_nu) * (t.sims_force / width) / (M_PI * pass.roll_E * draft);
   return t;
+}
+
+double travel_through(const RollingPass& pass) {
+  const RollingTheory t = rolling_theory(pass);
+  const double entry_speed = pass.exit_thickness * (1 + t.sims_forward_slip) / pass.entry_thickness;
+  return std::max(0.0, pass.slab_length - t.contact_length) / entry_speed;
 }
 
 std::string bite_refusal(const RollingPass& pass) {

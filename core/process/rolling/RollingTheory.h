@@ -27,6 +27,10 @@ struct RollingTheory {
 /// The closed forms of `pass` (its geometry, the slab's flow stress, the roll's elasticity).
 RollingTheory rolling_theory(const RollingPass& pass);
 
+/// The roll's surface travel after which the slab's rear end enters the roll gap (x = −L): its material, L_slab − L
+/// from there, enters at h1 (1 + Sims's forward slip) / h0 times the roll's surface speed (continuity).
+double travel_through(const RollingPass& pass);
+
 /// Whether the roll can draw the slab in (the bite condition μ ≥ tan α): "" when it can (sticking friction always
 /// can), else the refusal with the numbers — μ, tan α, α, and the largest draft this μ bites, 2R (1 − cos(atan μ)).
 std::string bite_refusal(const RollingPass& pass);

@@ -283,4 +283,21 @@ TEST(RollingProcess, ProgressCountsTheTravel) {
   EXPECT_EQ(progress_text(c, 0.125), "travel 15 of 120 mm");
 }
 
+TEST(RollingProcess, RollDiameterInsteadOfRadiusAndASpeed) {
+  // Ø 600 mm is the default R 300 mm, node for node; both at once are refused; the speed reaches the pass
+  const Model by_radius = rolling(2), by_diameter = rolling(2, {{"roll_diameter", 600.0}});
+  for (size_t n = 0; n < by_radius.bodies[1].mesh.nodes.size(); ++n)
+    EXPECT_EQ(by_diameter.bodies[1].mesh.nodes[n], by_radius.bodies[1].mesh.nodes[n]) << n;
+  EXPECT_DOUBLE_EQ(pass_of(2, {{"roll_diameter", 500.0}}).radius, 250);
+  EXPECT_DOUBLE_EQ(pass_of(2, {{"roll_speed", 30.0}}).rpm, 30);
+  EXPECT_DOUBLE_EQ(pass_of(2).rpm, 0);
+  const std::string both = refusal({{"type", "rolling"}, {"roll_radius", 300.0}, {"roll_diameter", 600.0}});
+  EXPECT_NE(both.find("process.roll_diameter: give either process.roll_radius or process.roll_diameter"),
+            std::string::npos)
+      << both;
+  const std::string hub = refusal({{"type", "rolling"}, {"roll_diameter", 250.0}});
+  EXPECT_NE(hub.find("must be smaller than half of process.roll_diameter (125 mm)"), std::string::npos) << hub;
+  EXPECT_NE(refusal({{"type", "rolling"}, {"roll_speed", -5.0}}).find("process.roll_speed"), std::string::npos);
+}
+
 }  // namespace test_rolling_process
