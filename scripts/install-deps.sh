@@ -6,7 +6,7 @@ PACKAGES=(
   libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libssl-dev
   libcairo2-dev qtbase5-dev libqt5charts5-dev libvtk9-dev libvtk9-qt-dev libopenmpi-dev openmpi-bin
-  libpetsc-real-dev
+  libpetsc-real-dev libgmsh-dev
   xvfb xauth libgl1-mesa-dri
   calculix-ccx time clang-format
 )

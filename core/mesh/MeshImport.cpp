@@ -5,6 +5,7 @@
 #include <mutex>
 #include <tuple>
 
+#include "mesh/GmshReader.h"
 #include "mesh/InpReader.h"
 
 namespace rollsim {
@@ -21,7 +22,9 @@ Mesh read_inp(const std::filesystem::path& file, int dim, const std::string& ele
 }
 
 const std::vector<Reader>& readers() {
-  static const std::vector<Reader> table{{".inp", "CalculiX / Abaqus input deck", read_inp}};
+  static const std::vector<Reader> table{
+      {".inp", "CalculiX / Abaqus input deck", read_inp},
+      {".msh", "Gmsh mesh, version 4 or 2, ASCII or binary (Gmsh's library)", read_msh}};
   return table;
 }
 

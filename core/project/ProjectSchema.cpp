@@ -131,11 +131,15 @@ const ObjectSchema kImport{
     "quadrilaterals (CPE4, CPS4, CAX4 and their R/H/I variants; z = 0) in 2D, hexahedra (C3D8 and variants) in 3D; "
     "triangles, tetrahedra, wedges and quadratic elements are refused. The deck's node sets and element-face surfaces "
     "become the body's sets, named in lower case (CalculiX upper-cases names); each surface is also a node set, and "
-    "`all` holds every node. The element formulation, material and kinematics are the body's, never the deck's.",
+    "`all` holds every node. .msh, a Gmsh mesh (version 4 or 2, ASCII or binary), read by Gmsh's own library "
+    "(libgmsh, loaded on first use): linear quadrangles in 2D, hexahedra in 3D (recombined, first order); its physical "
+    "groups are the sets — of the model's dimension an element set, of one less a surface (its lines or quadrangles "
+    "matched to the elements' faces), every group a node set; an unnamed group is `physical_<tag>`. The element "
+    "formulation, material and kinematics are the body's, never the file's.",
     {req(str("file", "the mesh file; a relative path is relative to the project file's folder")),
      str("element_set",
-         "the deck's element set holding this body's elements (default: every element), e.g. E_SLAB of a deck "
-         "written by `rollsim export-ccx`")},
+         "the file's element set (.msh: physical group) holding this body's elements (default: every element), "
+         "e.g. E_SLAB of a deck written by `rollsim export-ccx`")},
     "",
     {}};
 

@@ -2,14 +2,13 @@
 // (PetscStrategy.cpp, the only code that links PETSc and MPI), loaded here the first time a run chooses `petsc`.
 // Every other command and solver mode runs without mapping PETSc and its MPI stack (docs/BENCHMARKS-AUTO.md,
 // start-up). A module that cannot be loaded is invalid input for that run: a message naming the file and why.
-#include <dlfcn.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <mutex>
 #include <stdexcept>
 
+#include "base/ModuleLoader.h"
 #include "solve/PetscModule.h"
 #include "solve/PetscStrategy.h"
 
@@ -30,36 +29,24 @@ const PetscModule& load() {
   std::lock_guard lock(load_mutex);
   if (const PetscModule* m = loaded.load()) return *m;
   const std::filesystem::path file = petsc_module_path();
-  // RTLD_GLOBAL: MPI_Init dlopens Open MPI's own components, which look MPI's symbols up in the global scope
-  // (open-mpi/ompi#3705); RTLD_NOW: a missing symbol is this message, not a crash in the middle of a run
-  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_GLOBAL);
-  if (!handle) throw load_error(file, dlerror());
-  using Entry = const PetscModule* (*)();
-  const auto entry = reinterpret_cast<Entry>(dlsym(handle, kPetscModuleEntry));
-  if (!entry) {
-    const std::string why = dlerror();
-    dlclose(handle);
-    throw load_error(file, "no entry point " + std::string(kPetscModuleEntry) + " (" + why + ")");
+  const PetscModule* module = nullptr;
+  try {
+    // global: MPI_Init dlopens Open MPI's own components, which look MPI's symbols up in the global scope
+    // (open-mpi/ompi#3705)
+    module = static_cast<const PetscModule*>(load_module(file, kPetscModuleEntry, true));
+  } catch (const std::runtime_error& e) {
+    throw load_error(file, e.what());
   }
-  const PetscModule* module = entry();
-  if (!module || module->abi != kPetscModuleAbi) {
-    dlclose(handle);
-    throw load_error(file, "it was built by another rollsim (module interface " +
-                               std::to_string(module ? module->abi : -1) + ", this binary's " +
-                               std::to_string(kPetscModuleAbi) + "): rebuild both together");
-  }
+  if (module->abi != kPetscModuleAbi)
+    throw load_error(file, "it was built by another rollsim (module interface " + std::to_string(module->abi) +
+                               ", this binary's " + std::to_string(kPetscModuleAbi) + "): rebuild both together");
   loaded = module;
   return *module;
 }
 
 }  // namespace
 
-std::filesystem::path petsc_module_path() {
-  if (const char* env = std::getenv(kPetscModuleEnv); env && *env) return env;
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::filesystem::path(kPetscModuleFile) : exe.parent_path() / kPetscModuleFile;
-}
+std::filesystem::path petsc_module_path() { return module_path(kPetscModuleEnv, kPetscModuleFile); }
 
 bool petsc_available() { return true; }
 

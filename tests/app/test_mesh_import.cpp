@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -84,3 +85,83 @@ TEST(MeshImport, AnUnreadableDeckIsInvalidInputAtTheMeshFile) {
 }
 
 }  // namespace test_mesh_import
+
+#ifdef ROLLSIM_HAVE_GMSH
+namespace test_mesh_import {
+
+namespace {
+json summary_of(const std::string& project, const std::string& out) {
+  const RunResult r = run_rollsim({"run", project, "--out", out, "--quiet"});
+  EXPECT_EQ(r.exit_code, 0) << project << "\n" << r.err;
+  return json::parse(read_text(out + "/summary.json"));
+}
+}  // namespace
+
+TEST(MeshImport, CooksMembraneFromGmshGivesTheDecksAnswer) {
+  // the same 16 × 16 panel meshed by Gmsh (.msh, physical groups panel / left / right) and by the script's .inp deck
+  const std::string dir = make_temp_dir("mesh-import-gmsh");
+  const json a = summary_of(ROLLSIM_SOURCE_DIR "/samples/cooks-membrane-gmsh-2d.json", dir + "/msh");
+  const json b = summary_of(ROLLSIM_SOURCE_DIR "/samples/cooks-membrane-2d.json", dir + "/inp");
+  const double tip_a = a["results"]["probes"]["tip"]["displacement"][1],
+               tip_b = b["results"]["probes"]["tip"]["displacement"][1];
+  EXPECT_NEAR(tip_a, tip_b, 1e-9 * std::abs(tip_b));
+  EXPECT_NEAR(tip_a, 7.59, 0.01);  // docs/VALIDATION.md: B-bar on 16 × 16
+}
+
+TEST(MeshImport, AGmshBlockGivesTheGeneratedBlocksAnswer) {
+  // a 2 × 1 × 1 cantilever of 4 × 2 × 2 hexahedra: generated, and read from Gmsh's binary file of the same mesh
+  const std::string dir = make_temp_dir("mesh-import-gmsh-3d");
+  json p = {{"name", "block"},
+            {"dimension", 3},
+            {"materials", {{{"name", "steel"}, {"E", 210000.0}, {"nu", 0.3}}}},
+            {"bodies",
+             {{{"name", "b"},
+               {"material", "steel"},
+               {"mesh", {{"type", "block"}, {"nx", 4}, {"ny", 2}, {"nz", 2}, {"lx", 2.0}, {"ly", 1.0}, {"lz", 1.0}}}}}},
+            {"boundary_conditions",
+             {{{"type", "displacement"}, {"body", "b"}, {"set", "xmin"}, {"ux", 0.0}, {"uy", 0.0}, {"uz", 0.0}},
+              {{"type", "traction"}, {"body", "b"}, {"surface", "xmax"}, {"tz", -10.0}}}},
+            {"probes", {{{"name", "tip"}, {"at", {2.0, 1.0, 1.0}}}}}};
+  write_text(dir + "/generated.json", p.dump(1));
+  p["bodies"][0]["mesh"] = {
+      {"type", "import"}, {"file", ROLLSIM_SOURCE_DIR "/tests/data/meshes/block-3d.msh"}, {"element_set", "block"}};
+  p["boundary_conditions"][0]["set"] = "fixed";
+  p["boundary_conditions"][1]["surface"] = "loaded";
+  write_text(dir + "/imported.json", p.dump(1));
+  const json a = summary_of(dir + "/generated.json", dir + "/a"), b = summary_of(dir + "/imported.json", dir + "/b");
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(a["results"]["probes"]["tip"]["displacement"][c].get<double>(),
+                b["results"]["probes"]["tip"]["displacement"][c].get<double>(), 1e-12)
+        << c;
+  EXPECT_LT(a["results"]["probes"]["tip"]["displacement"][2].get<double>(), -1e-5);  // it bends down
+}
+
+TEST(MeshImport, AGmshMeshOfTrianglesIsInvalidInputAtTheMeshFile) {
+  const std::string dir = make_temp_dir("mesh-import-gmsh-bad");
+  const json p = {
+      {"dimension", 2},
+      {"materials", {{{"name", "m"}, {"E", 1.0}, {"nu", 0.3}}}},
+      {"bodies",
+       {{{"name", "b"},
+         {"material", "m"},
+         {"mesh", {{"type", "import"}, {"file", ROLLSIM_SOURCE_DIR "/tests/data/meshes/triangles-2d.msh"}}}}}}};
+  write_text(dir + "/p.json", p.dump(1));
+  const RunResult r = run_rollsim({"check", dir + "/p.json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bodies[0].mesh.file: " ROLLSIM_SOURCE_DIR "/tests/data/meshes/triangles-2d.msh: 14 triangles"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(MeshImport, AMissingGmshModuleIsInvalidInputNamingItAndTheWayOut) {
+  setenv("ROLLSIM_GMSH_MODULE", "/nonexistent/rollsim_gmsh.so", 1);  // the child inherits it
+  const RunResult r = run_rollsim({"check", ROLLSIM_SOURCE_DIR "/samples/cooks-membrane-gmsh-2d.json"});
+  unsetenv("ROLLSIM_GMSH_MODULE");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("through the module /nonexistent/rollsim_gmsh.so, which cannot be loaded"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("libgmsh-dev"), std::string::npos) << r.err;
+}
+
+}  // namespace test_mesh_import
+#endif
