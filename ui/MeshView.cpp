@@ -93,9 +93,14 @@ MeshView::MeshView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
   categories_->IndexedLookupOn();
 
   legend_->SetOrientationToVertical();
-  legend_->SetPosition(0.88, 0.12);
-  legend_->SetWidth(0.1);
-  legend_->SetHeight(0.76);
+  legend_->SetPosition(0.8, 0.1);
+  legend_->SetWidth(0.12);
+  // fixed font sizes: fitted to the bar's width, a title such as "plastic strain" shrank to an unreadable size
+  legend_->UnconstrainedFontSizeOn();
+  legend_->GetTitleTextProperty()->SetFontSize(13);
+  legend_->GetLabelTextProperty()->SetFontSize(11);
+  legend_->GetAnnotationTextProperty()->SetFontSize(11);
+  legend_->SetHeight(0.72);
   legend_->SetNumberOfLabels(5);
   legend_->SetLabelFormat("%-#8.3g");
   legend_->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
@@ -208,6 +213,10 @@ const OutputField* result_field(const ColorBy& mode) {
   return nullptr;
 }
 
+/// A colour bar's title: the field's short name and its unit in the project's consistent units, on two lines (the
+/// bar is narrow: one long line was shrunk to an unreadable size), "plastic strain\n[-]", "von Mises\n[stress]".
+std::string bar_title(const OutputField& f) { return f.legend + "\n[" + f.unit + "]"; }
+
 /// The grid's array of a field: point data for a node field, cell data for a cell field.
 vtkDataArray* field_array(vtkUnstructuredGrid* grid, const OutputField& f) {
   vtkDataSetAttributes* data = f.location == FieldLocation::Node
@@ -291,7 +300,7 @@ void MeshView::apply_coloring() {
     mapper_->SetScalarRange(range[0], range[1]);
     mapper_->ScalarVisibilityOn();
     legend_->SetLookupTable(continuous_);
-    legend_->SetTitle(field.legend.c_str());
+    legend_->SetTitle(bar_title(field).c_str());
     legend_->SetDrawAnnotations(0);
     legend_->SetDrawTickLabels(1);
     legend_->SetLabelFormat("%-#8.3g");

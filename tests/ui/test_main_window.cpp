@@ -10,8 +10,10 @@
 // bites, its speed) and the predicted cost, rebuilt with every edit; a run turns it to the convergence plots.
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
+#include <QChartView>
 #include <QFile>
 #include <QLabel>
+#include <QLegend>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -304,6 +306,11 @@ class TestMainWindow : public QObject {
     QCOMPARE(rolling->increments(), static_cast<int>(outcome.results->process->table("rolling")->rows.size()));
     QCOMPARE(rolling->increments(), live.count() + 1);
     QVERIFY(rolling->findChild<QWidget*>(QStringLiteral("processProfile"))->isVisible());
+    // the legend in full under the title (Qt's one-row legend elided "roll …", "Sim…" at 1280 × 800)
+    auto* history = rolling->findChild<QtCharts::QChartView*>(QStringLiteral("processHistory"));
+    QVERIFY(!history->chart()->legend()->isVisible());
+    for (const char* name : {"roll force", "torque", "Sims's force", "Sims's torque"})
+      QVERIFY2(history->chart()->title().contains(QString::fromUtf8(name)), qPrintable(history->chart()->title()));
     // the results open as a rolling engineer reads them: deformed ×1, by plastic strain, on the roll gap
     QCOMPARE(w.view()->color_by(), QStringLiteral("plastic_strain"));
     QCOMPARE(w.view()->deformation_scale(), 1.0);
