@@ -20,12 +20,12 @@ struct RunForecast {
   RunStatus refusal;               // the process's refusal (no_bite): nothing will be solved
   long dofs = 0;                   // unknowns of the bodies (prescribed ones excluded)
   long elements = 0;
-  bool linear = false;           // a linear analysis: its iterations are solves
-  int increments = 0;            // expected: analysis.increments × the process's expected share
-  double iterations = 0;         // expected Newton iterations (linear analysis: solves) over the run
-  double factor_flops = 0;       // one factorization of every body [flop]
-  double seconds_per_iteration;  // predicted: element tangents and factorizations of one iteration [s]
-  double seconds = 0;            // predicted for the whole run [s]
+  bool linear = false;               // a linear analysis: its iterations are solves
+  int increments = 0;                // expected: analysis.increments × the process's expected share
+  double iterations = 0;             // expected Newton iterations (linear analysis: solves) over the run
+  double factor_flops = 0;           // one factorization of every body [flop]
+  double seconds_per_iteration = 0;  // predicted: element tangents and factorizations of one iteration [s]
+  double seconds = 0;                // predicted for the whole run [s]
 };
 
 /// The forecast of running `model` (built from the project `config` was read from).
