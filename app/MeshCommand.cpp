@@ -64,14 +64,16 @@ int check_command(const std::string& file) {
   try {
     const Project p = load_project(file);
     const Model m = build_model(p);
-    // every test that needs no solve: a pass the roll cannot bite is refused here as `run` would refuse it
-    if (const RunStatus refused = process_refusal(p.config(), m); !refused.ok()) {
+    // every test that needs no solve: a pass the roll cannot bite is refused here as `run` would refuse it (the
+    // forecast starts the process and holds its refusal)
+    const RunForecast forecast = forecast_run(p.config(), m);
+    if (const RunStatus& refused = forecast.refusal; !refused.ok()) {
       std::cerr << "rollsim: " << to_string(refused.status) << ": " << refused.message << "\n";
       return exit_code(refused.status);
     }
     std::cout << file << ": valid (" << m.bodies.size() << " bodies, " << m.total_nodes() << " nodes, "
               << m.total_elements() << " elements)\n";
-    print_forecast(forecast_run(p.config(), m));
+    print_forecast(forecast);
     return 0;
   } catch (const ProjectError& e) {
     return invalid(e.what());

@@ -14,7 +14,7 @@ namespace rollsim {
 namespace {
 constexpr int kLine2 = 1, kQuad4 = 3, kHex8 = 5;  // Gmsh element types
 
-/// Gmsh's name of an element type rollsim does not read (gmsh.info's element type numbers).
+/// Gmsh's element types by name, for messages (gmsh.info's element type numbers).
 std::string type_name(int type) {
   static const std::map<int, std::string> names{{2, "triangles"},
                                                 {3, "quadrangles"},
@@ -122,31 +122,37 @@ std::vector<int> group_nodes(const GmshData& data, const GmshData::Group& g) {
 }
 }  // namespace
 
-GmshData read_gmsh_file(const std::filesystem::path& file) {
+namespace {
+/// The Gmsh module, loaded on the first call. Throws MeshImportError naming `file`, the module and why.
+const GmshModule& gmsh_module(const std::filesystem::path& file) {
   static std::mutex mutex;
   static const GmshModule* module = nullptr;
-  {
-    std::lock_guard lock(mutex);
-    if (!module) {
-      const std::filesystem::path path = module_path(kGmshModuleEnv, kGmshModuleFile);
-      try {
-        module = static_cast<const GmshModule*>(load_module(path, kGmshModuleEntry, false));
-      } catch (const std::runtime_error& e) {
-        throw MeshImportError(file.string() + ": .msh files are read by Gmsh's library, through the module " +
-                              path.string() + ", which cannot be loaded: " + e.what() +
-                              " (it is built beside rollsim when Debian's libgmsh-dev is installed; or write the "
-                              "mesh as a CalculiX / Abaqus .inp deck)");
-      }
-      if (module->abi != kGmshModuleAbi) {
-        module = nullptr;
-        throw MeshImportError(file.string() + ": the Gmsh module " + path.string() +
-                              " was built by another rollsim: rebuild both together");
-      }
+  std::lock_guard lock(mutex);
+  if (!module) {
+    const std::filesystem::path path = module_path(kGmshModuleEnv, kGmshModuleFile);
+    try {
+      module = static_cast<const GmshModule*>(load_module(path, kGmshModuleEntry, false));
+    } catch (const std::runtime_error& e) {
+      throw MeshImportError(file.string() + ": .msh files are read by Gmsh's library, through the module " +
+                            path.string() + ", which cannot be loaded: " + e.what() +
+                            " (it is built beside rollsim when Debian's libgmsh-dev is installed; or write the "
+                            "mesh as a CalculiX / Abaqus .inp deck)");
+    }
+    if (module->abi != kGmshModuleAbi) {
+      module = nullptr;
+      throw MeshImportError(file.string() + ": the Gmsh module " + path.string() +
+                            " was built by another rollsim: rebuild both together");
     }
   }
+  return *module;
+}
+}  // namespace
+
+GmshData read_gmsh_file(const std::filesystem::path& file) {
+  const GmshModule& module = gmsh_module(file);
   GmshData data;
   std::string error;
-  if (!module->read(file.string(), data, error)) throw MeshImportError(file.string() + ": Gmsh: " + error);
+  if (!module.read(file.string(), data, error)) throw MeshImportError(file.string() + ": Gmsh: " + error);
   return data;
 }
 
