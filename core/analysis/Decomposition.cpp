@@ -1,5 +1,7 @@
 #include "analysis/Decomposition.h"
 
+#include <unordered_map>
+
 #include "fem/Loads.h"
 #include "model/RigidModes.h"
 #include "partition/PartitionCheck.h"
@@ -54,7 +56,20 @@ GroupSource subdomain_source(const Subdomain& s, int body_index, const Eigen::Ve
       const Eigen::Index i = static_cast<Eigen::Index>(l) * dim + c;
       local_load[i] = nodal_load[static_cast<Eigen::Index>(s.nodes[l]) * dim + c] / multiplicity[s.nodes[l]];
     }
-  return GroupSource{&s.body, s.dofs.get(), std::move(local_load), body_index, s.elements};
+  return GroupSource{&s.body, s.dofs.get(), std::move(local_load), body_index, s.elements, {}};
+}
+
+std::vector<FollowerPressure> subdomain_follower(const Subdomain& s, const std::vector<FollowerPressure>& body_loads) {
+  std::unordered_map<int, int> local;  // body element -> local element
+  for (size_t e = 0; e < s.elements.size(); ++e) local.emplace(s.elements[e], static_cast<int>(e));
+  std::vector<FollowerPressure> out;
+  for (const FollowerPressure& p : body_loads) {
+    FollowerPressure here{p.value, {}};
+    for (const Facet& f : p.facets)
+      if (const auto it = local.find(f.element); it != local.end()) here.facets.push_back({it->second, f.local});
+    if (!here.facets.empty()) out.push_back(std::move(here));
+  }
+  return out;
 }
 
 BodyDecomposition decompose_body(const Model& model, int b, Partition partition, const DecomposeOptions& options) {

@@ -46,6 +46,10 @@ Group subdomain_group(const Subdomain& s, int body_index, const std::string& bod
 GroupSource subdomain_source(const Subdomain& s, int body_index, const Eigen::VectorXd& nodal_load,
                              const std::vector<int>& multiplicity);
 
+/// The follower pressures of a body (on its facets) restricted to subdomain s, on its local elements' facets. Each
+/// facet lies in one subdomain, whose group carries its whole load.
+std::vector<FollowerPressure> subdomain_follower(const Subdomain& s, const std::vector<FollowerPressure>& body_loads);
+
 /// Tears body `b` of the model along `partition`. Throws PartitionError listing every problem of the partition
 /// (with paths under "bodies[b].partition").
 BodyDecomposition decompose_body(const Model& model, int b, Partition partition, const DecomposeOptions& options = {});

@@ -29,6 +29,7 @@ void GroupAssembler::assemble(const std::vector<size_t>& groups, const std::vect
     Eigen::VectorXd f_int;
     assembler(g).assemble(u, group.K, f_int);
     group.f = src.dofs->restrict_to_free(load_factor * src.nodal_load) - f_int;
+    add_follower_pressures(g, u, load_factor, group.f, nullptr);
     ++evaluations_[g];
   }
 }
@@ -53,11 +54,26 @@ InvertedElement GroupAssembler::assemble_newton(const std::vector<size_t>& which
         assembler(g).assemble(u, assembled_here(g) ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
     if (bad >= 0) return InvertedElement{static_cast<int>(g), bad};
     group.f = src.dofs->restrict_to_free(at.load * src.nodal_load) - f_int;
+    add_follower_pressures(g, u, at.load, group.f, assembled_here(g) ? &group.K : nullptr);
     if (with_tangent[g] && group.R.cols() && src.body->kinematics == Kinematics::Finite)
       follow_kernel(group, src, u, assembled_here(g));
     evaluations_[g] += with_tangent[g];
   }
   return {};
+}
+
+void GroupAssembler::add_follower_pressures(size_t g, const Eigen::VectorXd& u, double factor, Eigen::VectorXd& f,
+                                            SparseMatrix* K) const {
+  const GroupSource& src = sources_[g];
+  if (src.follower.empty()) return;
+  const Mesh& mesh = src.body->mesh;
+  f += src.dofs->restrict_to_free(factor * follower_nodal_load(mesh, src.follower, u));
+  if (!K) return;
+  for (const FollowerPressure& p : src.follower)
+    for (const Facet& facet : p.facets) {
+      const Eigen::MatrixXd dF = follower_facet_stiffness(mesh, facet, p.value, u);
+      assembler(g).add_element_matrix(facet.element, -0.5 * factor * (dF + dF.transpose()), *K);
+    }
 }
 
 const Assembler& GroupAssembler::assembler(size_t g) const {

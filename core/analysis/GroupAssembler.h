@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fem/Assembler.h"
+#include "fem/Loads.h"
 #include "model/DofMap.h"
 #include "model/Model.h"
 #include "solve/BlockSystem.h"
@@ -20,8 +21,9 @@ struct GroupSource {
   const Body* body = nullptr;
   const DofMap* dofs = nullptr;
   Eigen::VectorXd nodal_load;
-  int model_body = 0;              // the model's body this group belongs to
-  std::vector<int> body_elements;  // local element -> that body's element (empty: the same numbering)
+  int model_body = 0;                      // the model's body this group belongs to
+  std::vector<int> body_elements;          // local element -> that body's element (empty: the same numbering)
+  std::vector<FollowerPressure> follower;  // pressures on its facets that follow the surface (not in nodal_load)
 };
 
 /// Where a Newton assembly stopped: an inverted element (group, local element), or none (group < 0).
@@ -79,6 +81,11 @@ class GroupAssembler {
   /// A finite-strain group's kernel after a tangent: the geometric modes of the displaced body, cut to those its
   /// tangent maps to zero when that tangent was assembled here (model/RigidModes' stiffness_kernel).
   static void follow_kernel(Group& group, const GroupSource& src, const Eigen::VectorXd& u, bool tangent_here);
+  /// Adds the follower pressures of group g at displacement u, times `factor`, to its residual f and, when K is
+  /// given, their load stiffness −factor ∂f/∂u, symmetrized as the element tangents are (the solvers factor a
+  /// symmetric K; Abaqus does the same unless told UNSYMM).
+  void add_follower_pressures(size_t g, const Eigen::VectorXd& u, double factor, Eigen::VectorXd& f,
+                              SparseMatrix* K) const;
   /// Group g's Assembler (sparsity pattern and scatter map), built on first use and kept: a Newton iteration then
   /// writes values only (the pattern was a third of an assembly of the 16³ cube, rebuilt at every iteration).
   const Assembler& assembler(size_t g) const;

@@ -100,8 +100,11 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
     opt.assemble = false;
     const Eigen::VectorXd load = external_nodal_load(model, b);
     bg.dec = decompose_body(body, b, *dofs_.back(), load, body.partition, opt);
-    for (const Subdomain& s : bg.dec->subdomains)
-      assembler_.add(subdomain_source(s, b, load, bg.dec->interface.multiplicity));
+    for (const Subdomain& s : bg.dec->subdomains) {
+      GroupSource source = subdomain_source(s, b, load, bg.dec->interface.multiplicity);
+      source.follower = subdomain_follower(s, follower_pressures(model, b));
+      assembler_.add(std::move(source));
+    }
     warnings_.insert(warnings_.end(), bg.dec->warnings.begin(), bg.dec->warnings.end());
     paper_rows_ += bg.dec->paper_convention_multipliers;
     const auto w = row_scaling(*bg.dec, *dofs_.back());
@@ -111,7 +114,8 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
     bg.dec->groups.clear();
   } else {
     sys_.groups.push_back(body_group(model, b, *dofs_.back()));
-    assembler_.add(GroupSource{&body, dofs_.back().get(), external_nodal_load(model, b), b, {}});
+    assembler_.add(
+        GroupSource{&body, dofs_.back().get(), external_nodal_load(model, b), b, {}, follower_pressures(model, b)});
   }
   const ModeFrame frame = mode_frame(body.mesh);  // the whole body's: its subdomains' modes agree where they meet
   for (size_t g = static_cast<size_t>(bg.first); g < sys_.groups.size(); ++g)

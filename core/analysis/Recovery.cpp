@@ -60,6 +60,8 @@ BodyResults recover(const Model& model, int b, Eigen::VectorXd displacement, dou
   BodyResults r;
   r.displacement = std::move(displacement);
   r.nodal_force = -external_nodal_load(model, b);
+  if (const auto follower = follower_pressures(model, b); !follower.empty())
+    r.nodal_force -= follower_nodal_load(body.mesh, follower, r.displacement);
   if (load_factor != 1.0) r.nodal_force *= load_factor;
   if (body.mesh.dim == 2)
     recover_elements<2>(body, state, r);

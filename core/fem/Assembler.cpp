@@ -160,6 +160,14 @@ int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::Vector
                     : newton_elements<3>(body_, u, v, K != nullptr, state, scatter);
 }
 
+void Assembler::add_element_matrix(int e, const Eigen::MatrixXd& Ke, SparseMatrix& K) const {
+  const int nd = body_.mesh.nodes_per_elem() * body_.mesh.dim;
+  const int* s = slot_.data() + static_cast<size_t>(e) * nd * nd;
+  double* val = K.valuePtr();
+  for (int k = 0; k < nd * nd; ++k)
+    if (s[k] >= 0) val[s[k]] += Ke.data()[k];
+}
+
 void Assembler::assemble(SparseMatrix& K, Eigen::VectorXd& f_dirichlet) const {
   assemble(dofs_.expand(Eigen::VectorXd::Zero(dofs_.num_free())), K, f_dirichlet);
   f_dirichlet = -f_dirichlet;

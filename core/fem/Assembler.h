@@ -36,6 +36,9 @@ class Assembler {
                const Eigen::VectorXd* v = nullptr) const;
   /// K_ff and the load of the prescribed dofs at u_f = 0, f_D = −K_fp u_p: the linear system K_ff u_f = f + f_D.
   void assemble(SparseMatrix& K, Eigen::VectorXd& f_dirichlet) const;
+  /// Adds a matrix in element e's dofs (node-major, column-major storage) to K_ff, which has this pattern: a load's
+  /// stiffness on one of the element's facets.
+  void add_element_matrix(int e, const Eigen::MatrixXd& Ke, SparseMatrix& K) const;
 
  private:
   const Body& body_;

@@ -49,11 +49,13 @@ struct NodalForce {
   std::array<double, 3> value{0.0, 0.0, 0.0};
 };
 
-/// Uniform pressure on a surface [force / length^2], positive pushing into the body.
+/// Uniform pressure on a surface [force / length^2], positive pushing into the body: on the undeformed surface (a
+/// dead load), or, `follower`, normal to the deformed surface and per unit of its current area.
 struct Pressure {
   int body = 0;
   std::string surface;
   double value = 0.0;
+  bool follower = false;
 };
 
 /// Uniform traction on a surface [force / length^2]: a vector per unit area of the undeformed surface (a dead load:

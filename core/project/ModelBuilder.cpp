@@ -112,6 +112,10 @@ void check_condition(const json& bc, const std::string& path, const json& bodies
     return;
   }
   if (type == "traction") check_components(bc, path, "t", dim, issues);
+  if (type == "pressure" && bc.value("follower", false) && body.value("kinematics", "small") != "finite")
+    issues.push_back(
+        {path + ".follower", "a pressure that follows the deformed surface needs finite kinematics: body '" +
+                                 body_name + "' has small (set its `kinematics` to finite, or drop `follower`)"});
   if (type == "pressure" || type == "traction") {
     const auto names = generator_set_names(body.at("mesh"), dim);
     const auto s = bc.at("surface").get<std::string>();
@@ -399,7 +403,8 @@ void add_condition(Model& model, const json& bc, const json& bodies, int source)
     return v;
   };
   if (type == "pressure") {
-    model.pressures.push_back({b, bc.at("surface").get<std::string>(), bc.at("value").get<double>()});
+    model.pressures.push_back(
+        {b, bc.at("surface").get<std::string>(), bc.at("value").get<double>(), bc.value("follower", false)});
     return;
   }
   if (type == "traction") {

@@ -270,7 +270,14 @@ const ObjectSchema kPressure{
     "Uniform pressure on a surface, positive into the body (negative: tension). 2D: force per unit length and "
     "unit thickness.",
     {req(str("body", "body name")), req(str("surface", "name of a surface of the body")),
-     req(num("value", "stress", "pressure"))},
+     req(num("value", "stress", "pressure")),
+     def(boolean("follower",
+                 "true: the pressure follows the surface as it deforms — normal to the deformed surface, per unit "
+                 "of its current area (a gas or a liquid's pressure); its load stiffness enters the Newton "
+                 "tangent symmetrized, as the solvers factor a symmetric matrix (quadratic convergence where the "
+                 "load is conservative, e.g. a closed or held surface). Needs the body's finite kinematics. false: "
+                 "a dead load on the undeformed surface"),
+         false)},
     "",
     {}};
 
