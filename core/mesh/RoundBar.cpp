@@ -1,6 +1,8 @@
 // Structured H8 generator for the quarter of a solid round bar: an o-grid section (square core + ring) swept along z.
 #include "mesh/RoundBar.h"
 
+#include "mesh/OGrid.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,30 +31,6 @@ void validate(const RoundBarSpec& s) {
   require(std::isfinite(s.axial_grading) && s.axial_grading > 0.0, "axial_grading must be positive");
 }
 
-// The quarter section of unit radius: (n_core + 1)² core nodes (i fastest), then n_ring rings of 2 n_core + 1 nodes
-// from the positive x axis (s = 0) round to the positive y axis (s = 2 n_core); ring 0 is the core's outer edge.
-struct Section {
-  int n, m;  // n_core, n_ring
-  double a;  // half-side of the core (unit radius)
-  int core(int i, int j) const { return j * (n + 1) + i; }
-  int ring(int k, int s) const {  // k = 0 … m layers outward
-    if (k == 0) return s <= n ? core(n, s) : core(2 * n - s, n);
-    return (n + 1) * (n + 1) + (k - 1) * (2 * n + 1) + s;
-  }
-  int nodes() const { return (n + 1) * (n + 1) + m * (2 * n + 1); }
-
-  std::array<double, 2> inner(int s) const {  // the core's outer edge
-    return s <= n ? std::array<double, 2>{a, a * s / n} : std::array<double, 2>{a * (2 * n - s) / n, a};
-  }
-  std::array<double, 2> position(int local) const {
-    if (local < (n + 1) * (n + 1)) return {a * (local % (n + 1)) / n, a * (local / (n + 1)) / n};
-    const int r = local - (n + 1) * (n + 1), k = r / (2 * n + 1) + 1, s = r % (2 * n + 1);
-    const double t = static_cast<double>(k) / m, angle = 0.25 * std::numbers::pi * s / n;
-    const auto p = inner(s);
-    return {(1 - t) * p[0] + t * std::cos(angle), (1 - t) * p[1] + t * std::sin(angle)};
-  }
-};
-
 // z of node layer k: geometric element sizes from z = 0 (ratio g), summing to the length.
 double layer_z(const RoundBarSpec& s, int k) {
   const double g = s.axial_grading;
@@ -60,30 +38,6 @@ double layer_z(const RoundBarSpec& s, int k) {
   return s.length * (std::pow(g, k) - 1.0) / (std::pow(g, s.n_axial) - 1.0);
 }
 
-// One element of the section with its bottom face counter-clockwise seen from +z, swept from layer k to k + 1;
-// the faces it contributes to the symmetry planes and the round surface.
-struct Quad {
-  std::array<int, 4> v;
-  int ymin_face = -1, xmin_face = -1, outer_face = -1;  // local H8 facet (Mesh.h), -1: none
-};
-
-std::vector<Quad> section_quads(const Section& sec) {
-  std::vector<Quad> q;
-  const int n = sec.n;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      q.push_back({{sec.core(i, j), sec.core(i + 1, j), sec.core(i + 1, j + 1), sec.core(i, j + 1)},
-                   j == 0 ? 2 : -1,
-                   i == 0 ? 5 : -1,
-                   -1});
-  for (int k = 0; k < sec.m; ++k)  // outward (k) then round (s): e_r × e_θ = +z
-    for (int s = 0; s < 2 * n; ++s)
-      q.push_back({{sec.ring(k, s), sec.ring(k + 1, s), sec.ring(k + 1, s + 1), sec.ring(k, s + 1)},
-                   s == 0 ? 2 : -1,
-                   s == 2 * n - 1 ? 4 : -1,
-                   k == sec.m - 1 ? 3 : -1});
-  return q;
-}
 }  // namespace
 
 double round_bar_radius(const RoundBarSpec& s, double z) {
@@ -93,7 +47,7 @@ double round_bar_radius(const RoundBarSpec& s, double z) {
 
 Mesh make_round_bar(const RoundBarSpec& s) {
   validate(s);
-  const Section sec{s.n_core, s.n_ring, s.core_fraction};
+  const detail::OGridQuarter sec{s.n_core, s.n_ring, s.core_fraction};
   const int per = sec.nodes();
   Mesh m;
   m.dim = 3;
@@ -106,10 +60,10 @@ Mesh make_round_bar(const RoundBarSpec& s) {
       m.nodes[static_cast<size_t>(k) * per + l] = {r * p[0], r * p[1], z};
     }
   }
-  const auto quads = section_quads(sec);
+  const auto quads = detail::quarter_quads(sec);
   auto& all = m.element_sets["all"];
   for (int k = 0; k < s.n_axial; ++k)
-    for (const Quad& q : quads) {
+    for (const detail::OGridQuad& q : quads) {
       const int e = m.num_elements();
       for (int layer : {k, k + 1})
         for (int v : q.v) m.connectivity.push_back(layer * per + v);

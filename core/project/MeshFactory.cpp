@@ -6,6 +6,7 @@
 
 #include "mesh/Annulus.h"
 #include "mesh/Cylinder.h"
+#include "mesh/Disk.h"
 #include "mesh/MeshImport.h"
 #include "mesh/PlateWithHole.h"
 #include "mesh/RollGap.h"
@@ -53,6 +54,39 @@ RoundBarSpec round_bar_spec(const json& m) {
   s.axial_grading = num(m, "axial_grading");
   return s;
 }
+
+DiskSpec disk_spec(const json& m, int dim) {
+  DiskSpec s;
+  s.dim = dim;
+  s.c0 = m.at("center")[0].get<double>();
+  s.c1 = m.at("center")[1].get<double>();
+  s.radius = num(m, "radius");
+  s.n_core = m.at("n_core").get<int>();
+  s.n_ring = m.at("n_ring").get<int>();
+  s.core_fraction = num(m, "core_fraction");
+  s.theta0 = num(m, "start_angle");
+  s.theta1 = num(m, "end_angle");
+  if (dim == 3) {
+    s.y0 = m.value("y0", 0.0);
+    s.length = num(m, "length");
+    s.n_axial = m.at("n_axial").get<int>();
+  }
+  return s;
+}
+
+void check_disk(const json& m, const std::string& path, int dim, std::vector<Issue>& issues) {
+  for (const char* k : {"y0", "length", "n_axial"}) {
+    if (dim == 2 && m.contains(k)) issues.push_back({path + "." + k, "not allowed in a 2D model"});
+    if (dim == 3 && k != std::string("y0") && !m.contains(k))
+      issues.push_back({path + "." + k, "is required in a 3D model"});
+  }
+  for (const char* k : {"start_angle", "end_angle"})
+    if (const double a = num(m, k) / 90.0; std::fabs(a - std::round(a)) > 1e-12)
+      issues.push_back({path + "." + k, "must be a multiple of 90 (the o-grid covers whole quarters)"});
+  const double span = num(m, "end_angle") - num(m, "start_angle");
+  if (!(span > 0.0 && span <= 360.0))
+    issues.push_back({path + ".end_angle", "must be greater than start_angle by at most 360"});
+}
 }  // namespace
 
 void check_mesh_spec(const json& m, const std::string& path, int dim, std::vector<Issue>& issues) {
@@ -84,6 +118,8 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
       issues.push_back({path + ".taper_length", "must not exceed length (the taper ends inside the bar)"});
     if (auto why = grading_problem(num(m, "axial_grading"), m.at("n_axial").get<int>()); !why.empty())
       issues.push_back({path + ".axial_grading", why});
+  } else if (type == "disk") {
+    check_disk(m, path, dim, issues);
   } else if (type == "plate_with_hole") {
     need_dim(2);
     if (num(m, "radius") >= std::min(num(m, "width"), num(m, "height")))
@@ -111,6 +147,10 @@ double estimated_elements(const json& m, int dim) {
   if (type == "block") return n("nx") * n("ny") * (dim == 3 ? n("nz") : 1.0);
   if (type == "plate_with_hole" || type == "annulus") return n("n_around") * n("n_radial");
   if (type == "round_bar") return n("n_core") * (n("n_core") + 2.0 * n("n_ring")) * n("n_axial");
+  if (type == "disk")
+    return n("n_core") * (n("n_core") + 2.0 * n("n_ring")) *
+           std::round((m.value("end_angle", 360.0) - m.value("start_angle", 0.0)) / 90.0) *
+           (dim == 3 ? n("n_axial") : 1.0);
   return n("n_around") * n("n_radial") * n("n_axial");
 }
 
@@ -127,6 +167,12 @@ std::set<std::string> generator_set_names(const json& m, int dim) {
   }
   if (type == "plate_with_hole") return {"left", "bottom", "right", "top", "hole"};
   if (type == "round_bar") return {"xmin", "ymin", "zmin", "zmax", "outer"};
+  if (type == "disk") {
+    std::set<std::string> s{"outer"};
+    if (dim == 3) s.insert({"ymin", "ymax"});
+    if (!full_ring(m)) s.insert({"start", "end"});
+    return s;
+  }
   std::set<std::string> s{"inner", "outer"};
   if (type == "cylinder") s.insert({"ymin", "ymax"});
   if (!full_ring(m)) s.insert({"start", "end"});
@@ -134,6 +180,11 @@ std::set<std::string> generator_set_names(const json& m, int dim) {
 }
 
 std::set<std::string> generator_node_set_names(const json& m, int dim) {
+  if (m.at("type") == "disk") {
+    auto s = generator_set_names(m, dim);
+    s.insert("center");
+    return s;
+  }
   if (m.at("type") != "import") return generator_set_names(m, dim);
   const auto mesh = readable(m, dim);
   return mesh ? names_of(mesh->node_sets) : std::set<std::string>{};
@@ -164,6 +215,7 @@ Mesh make_mesh(const json& m, int dim) {
   }
   auto count = [&](const char* k) { return m.at(k).get<int>(); };
   if (type == "round_bar") return make_round_bar(round_bar_spec(m));
+  if (type == "disk") return make_disk(disk_spec(m, dim));
   if (type == "plate_with_hole")
     return make_plate_with_hole(
         {num(m, "width"), num(m, "height"), num(m, "radius"), count("n_around"), count("n_radial"), num(m, "grading")});

@@ -124,6 +124,30 @@ const ObjectSchema kRoundBar{
     "",
     {}};
 
+const ObjectSchema kDisk{
+    "disk mesh",
+    "Solid disk (2D, in the x-y plane) or solid cylinder with its axis along y (3D: the section in the x-z plane, as "
+    "`cylinder`), meshed as an o-grid — in each quarter a square core and a ring around it, so no element degenerates "
+    "at the centre — over whole quarters: the whole disk, a half or a quarter (its straight edges `start` and `end` "
+    "then symmetry lines). A solid roll, a die, the cylinder of a Hertz or NAFEMS contact benchmark. Surfaces "
+    "`outer`, `start` and `end` (a span short of 360°), in 3D `ymin` and `ymax`; node set `center` (the centre, in "
+    "3D the axis).",
+    {req(vec("center", "length", "centre: [x, y] in 2D, the axis position [x, z] in 3D", 2)),
+     req(positive("radius", "length", "radius")),
+     req(count("n_core",
+               "elements along each edge of a quarter's square core; a quarter of the circumference has 2 × "
+               "n_core",
+               1e4)),
+     req(count("n_ring", "elements across the ring, from the core to the round surface", 1e4)),
+     def(bounded(num("core_fraction", "-", "half-side of a quarter's square core over the radius"), 0.2, 0.7), 0.5),
+     angle("start_angle", 0.0, "start of the span, a multiple of 90: from +x towards +y (3D: towards +z)"),
+     angle("end_angle", 360.0, "end of the span, a multiple of 90 (360 after 0: the whole disk)"),
+     num("y0", "length", "3D: axial start (default 0)"),
+     positive("length", "length", "3D: axial length (required there)"),
+     count("n_axial", "3D: elements along the axis (required there)", 1e5)},
+    "",
+    {}};
+
 const ObjectSchema kImport{
     "imported mesh",
     "A mesh read from a file, the reader chosen by its extension: .inp, a CalculiX / Abaqus input deck (*NODE, "
@@ -152,6 +176,7 @@ const ObjectSchema kMesh{"mesh",
                           {"annulus", &kAnnulus},
                           {"cylinder", &kCylinder},
                           {"round_bar", &kRoundBar},
+                          {"disk", &kDisk},
                           {"import", &kImport}}};
 
 Field tolerance() {

@@ -269,7 +269,7 @@ std::vector<Case> field_cases() {
       set("unknown condition field", "/boundary_conditions/0/uxx", 0, "boundary_conditions[0].uxx", "unknown field"),
       set("misspelt E", "/materials/0/e", 1000, "materials[0].e", "unknown field"),
       set("unknown mesh type", "/bodies/0/mesh/type", "sphere", "bodies[0].mesh.type",
-          "must be one of annulus, block, cylinder, import, plate_with_hole, round_bar, got \"sphere\""),
+          "must be one of annulus, block, cylinder, disk, import, plate_with_hole, round_bar, got \"sphere\""),
       set("z grading in 2D", "/bodies/0/mesh/z_grading", 1.2, "bodies[0].mesh.z_grading", "not allowed in a 2D model"),
       set("unknown condition type", "/boundary_conditions/0/type", "glue", "boundary_conditions[0].type",
           "got \"glue\""),
