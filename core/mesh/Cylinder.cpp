@@ -18,6 +18,8 @@ void validate(const CylinderSpec& s) {
     throw std::invalid_argument("CylinderSpec.length must be positive");
   if (s.n_axial < 1) throw std::invalid_argument("CylinderSpec.n_axial must be at least 1");
   detail::validate_ring("CylinderSpec", s.inner_radius, s.outer_radius, s.n_radial, s.n_around, s.theta0, s.theta1);
+  if (!(s.outer_radius + s.outer_profile.lowest() > s.inner_radius))
+    throw std::invalid_argument("CylinderSpec.outer_profile takes the outer radius down to the inner one");
 }
 
 // Numbering of the (around i, radial j, axial k) grid: axes sorted by node count, fewest nodes fastest;
@@ -58,10 +60,11 @@ void add_nodes(Mesh& m, const CylinderSpec& s, const detail::RingLayout& ring, c
     const auto d = ring.direction(i);
     for (int j = 0; j <= s.n_radial; ++j) {
       const double t = static_cast<double>(j) / s.n_radial;
-      const double r = (1.0 - t) * s.inner_radius + t * s.outer_radius;
-      for (int k = 0; k <= s.n_axial; ++k)
-        m.nodes[num.node(i, j, k)] = {s.cx + r * d[0], s.y0 + s.length * (static_cast<double>(k) / s.n_axial),
-                                      s.cz + r * d[1]};
+      for (int k = 0; k <= s.n_axial; ++k) {
+        const double y = s.y0 + s.length * (static_cast<double>(k) / s.n_axial);
+        const double r = (1.0 - t) * s.inner_radius + t * (s.outer_radius + s.outer_profile.at(y));
+        m.nodes[num.node(i, j, k)] = {s.cx + r * d[0], y, s.cz + r * d[1]};
+      }
     }
   }
 }

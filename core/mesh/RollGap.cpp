@@ -22,9 +22,11 @@ double RollPolygon::lower_surface(double x) const {
   return best;
 }
 
-void cut_to_roll(Mesh& slab, int thickness_axis, double top, const RollPolygon& roll) {
+void cut_to_roll(Mesh& slab, int thickness_axis, double top, const RollPolygon& roll, const RadiusProfile& profile) {
   for (auto& X : slab.nodes) {
-    const double surface = roll.lower_surface(X[0]);
+    RollPolygon here = roll;
+    if (slab.dim == 3) here.radius += profile.at(X[1]);
+    const double surface = here.lower_surface(X[0]);
     if (!(surface < top)) continue;
     if (surface <= 1e-6 * top)
       throw std::invalid_argument("the roll cuts the slab through its whole thickness at x = " + std::to_string(X[0]));

@@ -4,6 +4,7 @@
 // that polygon between the entry of the bite and the exit plane, so that it touches the roll along the whole arc
 // without penetrating a chord (the "pre-bitten" entry: the state a pusher would leave it in when the roll grips).
 #include "mesh/Mesh.h"
+#include "mesh/RadiusProfile.h"
 
 namespace rollsim {
 
@@ -19,7 +20,10 @@ struct RollPolygon {
 
 /// Cuts the slab's top surface down to the roll polygon where the polygon lies below it: a node at thickness
 /// coordinate t (axis `thickness_axis`, the slab's mid-plane at t = 0, its top at t = top) moves to
-/// t · min(top, lower_surface(x)) / top. Throws std::invalid_argument when the cut leaves no thickness.
-void cut_to_roll(Mesh& slab, int thickness_axis, double top, const RollPolygon& roll);
+/// t · min(top, lower_surface(x)) / top. In 3D a profiled roll's radius is roll.radius + profile.at(y) at the node's
+/// width coordinate y (axis 1): the polygon of that radius is the roll mesh's surface there when the profile is
+/// sampled at the roll's axial nodes. Throws std::invalid_argument when the cut leaves no thickness.
+void cut_to_roll(Mesh& slab, int thickness_axis, double top, const RollPolygon& roll,
+                 const RadiusProfile& profile = {});
 
 }  // namespace rollsim

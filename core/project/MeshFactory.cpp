@@ -55,6 +55,13 @@ RoundBarSpec round_bar_spec(const json& m) {
   return s;
 }
 
+/// A profile's points (objects with the position `at` and `radius_change`), in their order.
+RadiusProfile radius_profile(const json& points, const char* at) {
+  RadiusProfile profile;
+  for (const json& p : points) profile.points.emplace_back(num(p, at), num(p, "radius_change"));
+  return profile;
+}
+
 DiskSpec disk_spec(const json& m, int dim) {
   DiskSpec s;
   s.dim = dim;
@@ -72,6 +79,16 @@ DiskSpec disk_spec(const json& m, int dim) {
     s.n_axial = m.at("n_axial").get<int>();
   }
   return s;
+}
+
+void check_outer_profile(const json& m, const std::string& path, std::vector<Issue>& issues) {
+  const json& points = m.value("outer_profile", json::array());
+  for (size_t i = 1; i < points.size(); ++i)
+    if (!(num(points[i], "y") > num(points[i - 1], "y")))
+      issues.push_back(
+          {path + ".outer_profile[" + std::to_string(i) + "].y", "must be greater than the point before's"});
+  if (num(m, "outer_radius") + radius_profile(points, "y").lowest() <= num(m, "inner_radius"))
+    issues.push_back({path + ".outer_profile", "takes the outer radius down to inner_radius or below"});
 }
 
 void check_disk(const json& m, const std::string& path, int dim, std::vector<Issue>& issues) {
@@ -129,6 +146,7 @@ void check_mesh_spec(const json& m, const std::string& path, int dim, std::vecto
     need_dim(type == "annulus" ? 2 : 3);
     if (num(m, "inner_radius") >= num(m, "outer_radius"))
       issues.push_back({path + ".inner_radius", "must be smaller than outer_radius"});
+    if (type == "cylinder") check_outer_profile(m, path, issues);
     const double span = num(m, "end_angle") - num(m, "start_angle");
     if (!(span > 0.0 && span <= 360.0))
       issues.push_back({path + ".end_angle", "must be greater than start_angle by at most 360"});
@@ -209,7 +227,8 @@ Mesh make_mesh(const json& m, int dim) {
       const int t = dim - 1;
       cut_to_roll(mesh, t, s.origin[static_cast<size_t>(t)] + s.size[static_cast<size_t>(t)],
                   {c.at("center")[0].get<double>(), c.at("center")[1].get<double>(), num(c, "radius"),
-                   c.at("n_around").get<int>()});
+                   c.at("n_around").get<int>()},
+                  radius_profile(c.value("profile", json::array()), "y"));
     }
     return mesh;
   }
@@ -225,7 +244,7 @@ Mesh make_mesh(const json& m, int dim) {
                          num(m, "start_angle"), num(m, "end_angle")});
   return make_cylinder({c0, c1, num(m, "y0"), num(m, "length"), num(m, "inner_radius"), num(m, "outer_radius"),
                         count("n_radial"), count("n_around"), count("n_axial"), num(m, "start_angle"),
-                        num(m, "end_angle")});
+                        num(m, "end_angle"), radius_profile(m.value("outer_profile", json::array()), "y")});
 }
 
 }  // namespace rollsim

@@ -78,6 +78,15 @@ const ObjectSchema kAnnulus{
     "",
     {}};
 
+const ObjectSchema kRadiusPoint{
+    "profile point",
+    "The outer radius's change at one position along the axis; linear between points, constant beyond the first "
+    "and the last.",
+    {req(num("y", "length", "position along the axis")),
+     req(num("radius_change", "length", "change of the outer radius there (negative: smaller)"))},
+    "",
+    {}};
+
 const ObjectSchema kCylinder{
     "cylinder mesh",
     "Hollow cylinder with its axis along y (3D roll), optionally a sector.",
@@ -87,7 +96,11 @@ const ObjectSchema kCylinder{
      req(count("n_radial", "elements across the ring", 1e5)), req(count("n_around", "elements around the span", 1e5)),
      req(count("n_axial", "elements along the axis", 1e5)),
      angle("start_angle", 0.0, "start of the angular span in the x-z plane, from +x towards +z"),
-     angle("end_angle", 360.0, "end of the angular span")},
+     angle("end_angle", 360.0, "end of the angular span"),
+     objects("outer_profile", kRadiusPoint,
+             "a crowned, tapered or grooved barrel: the outer radius along y is outer_radius plus the profile's "
+             "change, by ascending y, sampled at the axial nodes (give n_axial so that nodes fall on its corners); "
+             "empty: a straight barrel")},
     "",
     {}};
 

@@ -1,5 +1,6 @@
 #include "process/rolling/RollingFacts.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -57,6 +58,19 @@ void speed(const RollingPass& pass, const RollingTheory& t, int dim, std::vector
        dim == 2 ? format("torque × ω per roll and unit width; %.3g MW over the slab's width", power * pass.width / 1e3)
                 : "torque × ω per roll"});
 }
+/// A profiled roll: the radius's change across the slab and the exit thickness it leaves there.
+void profile(const RollingPass& pass, std::vector<ProcessFact>& facts) {
+  if (pass.profile.points.empty()) return;
+  const double edge = pass.width / 2;
+  double low = std::min(pass.profile.at(0), pass.profile.at(edge)),
+         high = std::max(pass.profile.at(0), pass.profile.at(edge));
+  for (const auto& [y, change] : pass.profile.points)
+    if (y < edge) low = std::min(low, change), high = std::max(high, change);
+  const double h1 = pass.exit_thickness;
+  facts.push_back({"roll profile", format("Δr %.3g to %.3g mm", low, high),
+                   format("across the slab's width: it leaves %.4g to %.4g mm thick (the roll's flattening aside)",
+                          h1 - 2 * high, h1 - 2 * low)});
+}
 }  // namespace
 
 std::vector<ProcessFact> rolling_facts(const RollingPass& pass, int dim) {
@@ -68,6 +82,7 @@ std::vector<ProcessFact> rolling_facts(const RollingPass& pass, int dim) {
   facts.push_back({"bite angle", format("%.2f°", t.bite_angle * 180 / M_PI), "cos α = 1 − Δh / 2R"});
   facts.push_back({"contact length", format("%.1f mm", t.contact_length), "projected arc √(R Δh)"});
   facts.push_back(bite(pass, t.bite_angle));
+  profile(pass, facts);
   loads(pass, t, dim, facts);
   speed(pass, t, dim, facts);
   const double through = travel_through(pass);

@@ -1,6 +1,8 @@
 #pragma once
 // A rolling pass as the model knows it (built from the project's `process`): which bodies are the slab and the roll,
 // which prescribed motion turns the roll, and the nominal pass geometry the rolling quantities are measured against.
+#include "mesh/RadiusProfile.h"
+
 namespace rollsim {
 
 struct RollingPass {
@@ -18,6 +20,7 @@ struct RollingPass {
   double flow_stress = 0;                          // the slab's σ_0 [stress]
   double roll_E = 0, roll_nu = 0.3;                // the roll's elasticity (E 0: a rigid roll) [stress, -]
   double friction = -1;  // Coulomb's μ of the roll–slab contact (frictionless: 0); −1: sticking (always bites) [-]
+  RadiusProfile profile;  // 3D: the radius's change (≤ 0) by distance from the barrel's centre [length]
 };
 
 }  // namespace rollsim

@@ -36,6 +36,23 @@ Field optional(Field f) {
 }
 }  // namespace
 
+namespace {
+const ObjectSchema& profile_point_schema() {
+  static const ObjectSchema s{
+      "roll profile point",
+      "The roll radius's change at one distance from the barrel's centre.",
+      {req([] {
+         Field f = num("y", "length", "distance from the barrel's centre (the pass's width symmetry plane)");
+         f.min = 0.0;
+         return f;
+       }()),
+       req(num("radius_change", "length", "change of the radius from roll_radius there (≤ 0)"))},
+      "",
+      {}};
+  return s;
+}
+}  // namespace
+
 const ObjectSchema& rolling_process_schema() {
   static const ObjectSchema s{
       "rolling process",
@@ -60,6 +77,13 @@ const ObjectSchema& rolling_process_schema() {
        number("roll_hub_radius", "length", 150, 0, 1e6,
               "inner radius of the modelled roll ring (the hub, turned as a rigid body)"),
        number("barrel_width", "length", 400, 0, 1e6, "roll barrel width (3D; half is modelled)"),
+       objects("roll_profile", profile_point_schema(),
+               "3D: a crowned or grooved roll — the radius's change across the barrel by distance from its centre, "
+               "linear between points and constant beyond them: a crown falls toward the edges (e.g. −0.2 mm "
+               "there), a groove dips. roll_radius is the largest radius: every change ≤ 0, one of them 0; the exit "
+               "thickness (or reduction) is the gap there, and the slab leaves thicker where the roll is smaller. "
+               "Sampled at the roll's axial nodes (roll_n_axial over the half barrel): place them on the profile's "
+               "corners. Empty: a straight barrel"),
        optional(number("reduction", "-", 0, 0, 0.9,
                        "thickness reduction (h0 − h1) / h0 (default 0.132, the paper's; or give exit_thickness)")),
        optional(number("exit_thickness", "length", 0, 0, 1e6,
@@ -144,6 +168,13 @@ double roll_radius(const json& p) {
 
 bool half_width(const json& process) { return process.value("width_symmetry", true); }
 
+RadiusProfile roll_profile(const json& p) {
+  RadiusProfile profile;
+  for (const json& point : p.value("roll_profile", json::array()))
+    profile.points.emplace_back(point.at("y").get<double>(), point.at("radius_change").get<double>());
+  return profile;
+}
+
 /// The whole exit thickness h1: exit_thickness, or h0 (1 − reduction), the paper's reduction when neither is given.
 double exit_thickness(const json& p) {
   if (p.contains("exit_thickness")) return p.at("exit_thickness").get<double>();
@@ -178,6 +209,39 @@ void check_ignored(const json& project, std::vector<Issue>& issues) {
   }
 }
 
+/// A roll profile: in 3D, within the barrel, by ascending distance, never above roll_radius and reaching it.
+void check_profile(const json& project, std::vector<Issue>& issues) {
+  const json& p = project.at("process");
+  const json& points = p.value("roll_profile", json::array());
+  if (points.empty()) return;
+  if (project.at("dimension").get<int>() == 2) {
+    issues.push_back({"process.roll_profile", "a roll profile varies across the width: 3D only"});
+    return;
+  }
+  const double half_barrel = p.at("barrel_width").get<double>() / 2, R = roll_radius(p);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const std::string at = "process.roll_profile[" + std::to_string(i) + "]";
+    const double y = points[i].at("y"), change = points[i].at("radius_change");
+    if (y > half_barrel)
+      issues.push_back(
+          {at + ".y", mm(y) + " is beyond the barrel's edge (half of process.barrel_width: " + mm(half_barrel) + ")"});
+    if (i > 0 && !(y > points[i - 1].at("y").get<double>()))
+      issues.push_back({at + ".y", "must be greater than the point before's (the points go from the centre out)"});
+    if (change > 0)
+      issues.push_back({at + ".radius_change", mm(change) + " is positive: roll_radius is the roll's largest radius "
+                                                            "(raise it and lower the others)"});
+  }
+  const RadiusProfile profile = roll_profile(p);
+  bool reaches = false;
+  for (const auto& point : profile.points) reaches = reaches || point.second == 0.0;
+  if (!reaches)
+    issues.push_back({"process.roll_profile",
+                      "no point has radius_change 0: roll_radius is the roll's largest "
+                      "radius, where the gap is the exit thickness"});
+  if (R + profile.lowest() <= p.at("roll_hub_radius").get<double>())
+    issues.push_back({"process.roll_profile", "takes the roll's radius down to its hub (process.roll_hub_radius)"});
+}
+
 /// The generated bodies' geometry, checked in the process's terms (never a generated body's path).
 void check_geometry(const json& project, std::vector<Issue>& issues) {
   const json& p = project.at("process");
@@ -196,6 +260,7 @@ void check_geometry(const json& project, std::vector<Issue>& issues) {
 void check_rolling(const json& project, std::vector<Issue>& issues) {
   check_ignored(project, issues);
   check_geometry(project, issues);
+  check_profile(project, issues);
   const json& p = project.at("process");
   const double h0 = p.at("slab_thickness").get<double>();
   if (p.contains("roll_radius") && p.contains("roll_diameter"))
@@ -215,6 +280,23 @@ void check_rolling(const json& project, std::vector<Issue>& issues) {
         {"process.travel_increment", "gives " + std::to_string(std::ceil(travel / step)) +
                                          " increments over process.travel: at most 1000 (analysis.increments)"});
 }
+
+namespace {
+/// The roll profile at the roll mesh's axial nodes (y from its y0, the change at |y|): what the roll's surface is
+/// and what the slab's pre-bitten top is cut to (empty without a profile).
+json sampled_profile(const json& p, const json& roll_mesh) {
+  const RadiusProfile profile = roll_profile(p);
+  json sampled = json::array();
+  if (profile.points.empty()) return sampled;
+  const int n = roll_mesh.at("n_axial");
+  const double y0 = roll_mesh.at("y0"), length = roll_mesh.at("length");
+  for (int k = 0; k <= n; ++k) {
+    const double y = y0 + length * k / n;
+    sampled.push_back({{"y", y}, {"radius_change", profile.at(std::abs(y))}});
+  }
+  return sampled;
+}
+}  // namespace
 
 json expand_rolling(const json& project) {
   const json& p = project.at("process");
@@ -260,6 +342,10 @@ json expand_rolling(const json& project) {
                       {"y0", halves == 1 ? 0.0 : -barrel / 2},
                       {"length", halves * barrel / 2},
                       {"n_axial", halves * p.at("roll_n_axial").get<int>()}});
+    if (const json sampled = sampled_profile(p, roll_mesh); !sampled.empty()) {
+      roll_mesh["outer_profile"] = sampled;
+      slab_mesh["roll_cut"]["profile"] = sampled;
+    }
   }
   json slab = {{"name", "slab"},         {"material", "slab"}, {"formulation", "bbar"},
                {"kinematics", "finite"}, {"mesh", slab_mesh},  {"node_sets", json::array()}};
@@ -339,6 +425,7 @@ RollingPass rolling_pass(const json& p, const Model& model) {
   if (p.at("roll") == "elastic") pass.roll_E = p.at("roll_E"), pass.roll_nu = p.at("roll_nu");
   const std::string friction = p.at("friction");
   if (friction != "sticking") pass.friction = friction == "coulomb" ? friction_coefficient(p) : 0.0;
+  if (model.dim == 3) pass.profile = roll_profile(p);
   return pass;
 }
 

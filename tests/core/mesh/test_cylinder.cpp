@@ -258,6 +258,24 @@ TEST(Cylinder, InvalidSpecsThrowNamingTheField) {
   expect_invalid([](S& s) { s.theta0 = -1.0; }, "360");
   expect_invalid([](S& s) { s.y0 = NAN; }, "y0");
   expect_invalid([](S& s) { s.cz = NAN; }, "cx/cz");
+  expect_invalid([](S& s) { s.outer_profile.points = {{0.0, 0.0}, {1.0, -0.6}}; }, "outer_profile");
+}
+
+// A grooved barrel: 0.2 smaller in radius at y = 1, back to the full radius at y = 2 — the outer nodes follow it at
+// every axial node, the inner ones stay, the radial nodes share the wall evenly, every element stays positive.
+TEST(Cylinder, AnOuterProfileMovesTheBarrelsSurfaceOnly) {
+  CylinderSpec s;
+  s.length = 2.0;
+  s.n_axial = 4;
+  s.outer_profile.points = {{0.0, 0.0}, {1.0, -0.2}, {2.0, 0.0}};
+  const Mesh m = make_cylinder(s);
+  EXPECT_NO_THROW(check_element_orientation(m));
+  auto radius = [&](int n) { return std::hypot(m.nodes[n][0] - s.cx, m.nodes[n][2] - s.cz); };
+  for (int n : m.node_sets.at("outer")) {
+    const double y = m.nodes[static_cast<size_t>(n)][1];
+    EXPECT_NEAR(radius(n), 1.0 - 0.2 * (1 - std::abs(y - 1.0)), 1e-12) << "y = " << y;
+  }
+  for (int n : m.node_sets.at("inner")) EXPECT_NEAR(radius(n), 0.5, 1e-12);
 }
 
 }  // namespace

@@ -92,4 +92,17 @@ TEST(RollingFacts, APassLongerThanItsSlabSaysWhereItEnds) {
   EXPECT_EQ(end->value, "travel ≈ 267 of 500 mm");
 }
 
+// A crowned roll, 0.5 mm smaller in radius 100 mm from the centre, on the 350 mm slab: the radius changes by 0 to
+// −0.5 mm across it, and the 86.8 mm exit leaves 86.8 to 87.8 mm thick.
+TEST(RollingFacts, ACrownedRollSaysHowThickTheSlabLeavesAcrossItsWidth) {
+  RollingPass p = paper_pass();
+  EXPECT_EQ(fact(rolling_facts(p, 3), "roll profile"), nullptr);
+  p.profile.points = {{0.0, 0.0}, {100.0, -0.5}};
+  const auto facts = rolling_facts(p, 3);
+  const ProcessFact* f = fact(facts, "roll profile");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->value, "Δr -0.5 to 0 mm");
+  EXPECT_NE(f->note.find("leaves 86.8 to 87.8 mm thick"), std::string::npos) << f->note;
+}
+
 }  // namespace test_rolling_facts

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "contact/ContactConstraints.h"
 #include "mesh/Mesh.h"
@@ -298,6 +299,59 @@ TEST(RollingProcess, RollDiameterInsteadOfRadiusAndASpeed) {
   const std::string hub = refusal({{"type", "rolling"}, {"roll_diameter", 250.0}});
   EXPECT_NE(hub.find("must be smaller than half of process.roll_diameter (125 mm)"), std::string::npos) << hub;
   EXPECT_NE(refusal({{"type", "rolling"}, {"roll_speed", -5.0}}).find("process.roll_speed"), std::string::npos);
+}
+
+// A crowned roll (radius 0.5 mm smaller at 100 mm from the barrel's centre, then straight): the roll's outer nodes
+// lie on R + Δr(|y|) at its axial nodes, and the slab's pre-bitten front end — at the exit plane under the roll's
+// lowest point — is h1/2 − Δr thick there, on the half and on the whole width.
+TEST(RollingProcess, ACrownedRollAndTheSlabCutToIt) {
+  const json crown = {{{"y", 0.0}, {"radius_change", 0.0}}, {{"y", 100.0}, {"radius_change", -0.5}}};
+  const auto change = [](double y) { return -0.5 * std::min(std::abs(y), 100.0) / 100.0; };
+  for (const bool half : {true, false}) {
+    SCOPED_TRACE(half);
+    const json spec = {{"slab_nx", 4},         {"slab_nw", 4},          {"slab_nt", 2},          {"roll_n_axial", 4},
+                       {"roll_n_around", 120}, {"roll_profile", crown}, {"width_symmetry", half}};
+    const Model m = rolling(3, spec);
+    const double R = 300, axis = 43.4 + R;
+    int outer = 0;
+    for (const auto& x : m.bodies[1].mesh.nodes) {
+      const double r = std::hypot(x[0], x[2] - axis);
+      if (r > R - 1) {
+        EXPECT_NEAR(r, R + change(x[1]), 1e-9) << "y = " << x[1];
+        ++outer;
+      }
+    }
+    EXPECT_EQ(outer, 120 * (half ? 5 : 9));
+    std::map<double, double> top;  // the front end's top by y: under the roll's lowest node, on the polygon
+    for (const auto& x : m.bodies[0].mesh.nodes)
+      if (x[0] == 0.0) top[x[1]] = std::max(top[x[1]], x[2]);
+    for (const auto& [y, z] : top) EXPECT_NEAR(z, 43.4 - change(y), 1e-9) << "y = " << y;
+    EXPECT_EQ(top.size(), half ? 5u : 9u);
+  }
+  EXPECT_EQ(pass_of(3, {{"roll_profile", crown}}).profile.at(50.0), -0.25);  // the pass carries it to its facts
+}
+
+TEST(RollingProcess, ARollProfileThatCannotBeIsRefusedAtItsPath) {
+  auto refused = [](const json& profile, int dim = 3) {
+    return refusal({{"type", "rolling"}, {"roll_profile", profile}}, dim);
+  };
+  const json crown = {{{"y", 0.0}, {"radius_change", 0.0}}, {{"y", 100.0}, {"radius_change", -0.5}}};
+  EXPECT_EQ(refused(crown), "accepted");
+  EXPECT_NE(refused(crown, 2).find("process.roll_profile: a roll profile varies across the width: 3D only"),
+            std::string::npos);
+  const json up = {{{"y", 0.0}, {"radius_change", 0.0}}, {{"y", 100.0}, {"radius_change", 0.5}}};
+  EXPECT_NE(refused(up).find("process.roll_profile[1].radius_change: 0.5 mm is positive"), std::string::npos)
+      << refused(up);
+  const json never_zero = {{{"y", 0.0}, {"radius_change", -0.1}}};
+  EXPECT_NE(refused(never_zero).find("process.roll_profile: no point has radius_change 0"), std::string::npos);
+  const json outside = {{{"y", 0.0}, {"radius_change", 0.0}}, {{"y", 250.0}, {"radius_change", -0.5}}};
+  EXPECT_NE(refused(outside).find("process.roll_profile[1].y: 250 mm is beyond the barrel's edge"), std::string::npos)
+      << refused(outside);
+  const json backwards = {{{"y", 100.0}, {"radius_change", 0.0}}, {{"y", 50.0}, {"radius_change", -0.5}}};
+  EXPECT_NE(refused(backwards).find("process.roll_profile[1].y: must be greater than the point before's"),
+            std::string::npos);
+  const json to_hub = {{{"y", 0.0}, {"radius_change", 0.0}}, {{"y", 100.0}, {"radius_change", -160.0}}};
+  EXPECT_NE(refused(to_hub).find("takes the roll's radius down to its hub"), std::string::npos) << refused(to_hub);
 }
 
 }  // namespace test_rolling_process
