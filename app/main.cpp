@@ -5,6 +5,7 @@
 #include "BenchSuiteCommand.h"
 #include "Commands.h"
 #include "base/Blas.h"
+#include "base/Memory.h"
 #include "base/Schema.h"
 #include "project/ProjectSchema.h"
 #include "solve/PetscStrategy.h"
@@ -62,6 +63,7 @@ void add_project_flags(CLI::App& cmd, rollsim::Overrides& overrides) {
 
 int main(int argc, char** argv) {
   using namespace rollsim::app;
+  rollsim::keep_freed_memory_for_reuse();
   struct EndProcesses {  // PETSc and MPI end after the command, whichever return it took (solver `petsc`)
     ~EndProcesses() { rollsim::finish_processes(); }
   } end_processes;

@@ -1,5 +1,6 @@
 #include "base/Memory.h"
 
+#include <malloc.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -49,6 +50,11 @@ std::string gigabytes(double bytes) {
   char s[32];
   std::snprintf(s, sizeof s, bytes < 1e8 ? "%.3f GB" : "%.1f GB", bytes / 1e9);
   return s;
+}
+
+void keep_freed_memory_for_reuse() {
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(kKeptBlockBytes));
+  mallopt(M_TRIM_THRESHOLD, static_cast<int>(kKeptBlockBytes));
 }
 
 }  // namespace rollsim

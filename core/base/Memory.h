@@ -20,4 +20,12 @@ std::string memory_left_source();
 /// "1.2 GB".
 std::string gigabytes(double bytes);
 
+/// Keeps memory a solve frees for the next one to reuse (glibc's allocator): blocks below kKeptBlockBytes come from
+/// the heap instead of fresh mappings, and up to that much freed at the heap's top stays mapped. UMFPACK allocates its
+/// numeric workspace afresh at every factorization and the triplets of a global matrix are rebuilt: with glibc's
+/// defaults each came from a new mapping, zeroed and faulted in page by page (the 2D 140 × 25 pass under `direct` +
+/// `always`: 783 k page faults, half of its time; docs/BENCHMARKS.md "Allocator"). Called once, at the start of main.
+void keep_freed_memory_for_reuse();
+inline constexpr long kKeptBlockBytes = 256L << 20;
+
 }  // namespace rollsim
