@@ -19,6 +19,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkProperty2D.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
@@ -109,6 +110,12 @@ MeshView::MeshView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
   legend_->GetTitleTextProperty()->ShadowOff();
   legend_->GetLabelTextProperty()->ShadowOff();
   legend_->GetAnnotationTextProperty()->ShadowOff();
+  // a pale box behind bar and labels: the view frames a rolling pass on the gap, where the slab runs under the bar
+  legend_->DrawBackgroundOn();
+  legend_->GetBackgroundProperty()->SetColor(1.0, 1.0, 1.0);
+  legend_->GetBackgroundProperty()->SetOpacity(0.75);
+  legend_->GetTitleTextProperty()->SetBackgroundColor(1.0, 1.0, 1.0);  // the title stands above the box
+  legend_->GetTitleTextProperty()->SetBackgroundOpacity(0.75);
   legend_->VisibilityOff();
   renderer_->AddActor2D(legend_);
 
