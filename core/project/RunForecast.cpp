@@ -17,9 +17,10 @@ constexpr double kElementSeconds[2][2] = {{2e-6, 4.3e-6}, {3e-5, 3e-5}};
 // a Cholesky factorization: the estimate's flops (an AMD ordering's, 2.6 × CHOLMOD's METIS-ordered count on the 16³
 // cube) at this rate, and a cost per entry of L that the small supernodes of 2D factors spend beside it
 constexpr double kFactorFlopRate = 2e10;      // [flop/s]
-constexpr double kFactorEntrySeconds = 5e-8;  // [s]
-// the LU of direct's bordered matrix (UMFPACK) against a Cholesky of the bodies (block-plastic-3d: 0.31 s a factor)
-constexpr double kLuFactors = 3;
+constexpr double kFactorEntrySeconds = 2e-8;  // [s]
+// the LU of direct's bordered matrix (UMFPACK) against a Cholesky of the bodies (block-plastic-3d: 0.08 s a factor
+// since freed memory is kept for reuse, base/Memory.h; 0.31 s before)
+constexpr double kLuFactors = 1;
 // Newton iterations per increment, cut-backs included, as the samples took them (4.4–12.7 with a contact pair, 4.8
 // and 13.5 without): with a contact pair and without
 constexpr double kIterationsWithContact = 8;

@@ -37,7 +37,7 @@ def forecast(project, sets):
     it = float(re.search(r"about (\d+) (Newton iterations|solves?)", line).group(1))
     flop = re.search(r"factors of ([\d.e+]+) (M|G)flop", line)
     print("#", project.name, flop.group(0), file=sys.stderr)
-    m = re.search(r"about ([\d.e+]+) (s|min)", line)
+    m = re.search(r"about ([\d.e+]+) (s|min)$", line)  # the last: "about 1 solve" begins with "s" too
     seconds = float(m.group(1)) * (60 if m.group(2) == "min" else 1)
     return it, seconds
 
