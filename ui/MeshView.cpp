@@ -108,6 +108,9 @@ MeshView::MeshView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
   legend_->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
   legend_->GetAnnotationTextProperty()->SetColor(0.1, 0.1, 0.1);
   legend_->GetTitleTextProperty()->ShadowOff();
+  legend_->GetTitleTextProperty()->ItalicOff();  // upright, as the rest of the window
+  legend_->GetLabelTextProperty()->ItalicOff();
+  legend_->GetAnnotationTextProperty()->ItalicOff();
   legend_->GetLabelTextProperty()->ShadowOff();
   legend_->GetAnnotationTextProperty()->ShadowOff();
   // a pale box behind bar and labels: the view frames a rolling pass on the gap, where the slab runs under the bar
@@ -360,9 +363,9 @@ void MeshView::fit(const std::array<double, 6>& box) {
   std::array<double, 6> b = box;
   renderer_->ResetCamera(b.data());
   if (model_ && model_->dim == 2 && width() > 0 && height() > 0) {  // fit width and height, 8 % margin
-    // the legend with its names (drawn left of the swatches) takes the right 30 %: the mesh is fitted into and
+    // the legend with its names (drawn left of the swatches) takes the right 38 %: the mesh is fitted into and
     // centred on the rest
-    constexpr double legend = 0.3;
+    constexpr double legend = 0.38;
     const double aspect = (1.0 - legend) * width() / height();
     cam->SetParallelScale(1.08 * std::max(0.5 * (b[3] - b[2]), 0.5 * (b[1] - b[0]) / aspect));
     double focal[3], position[3];
