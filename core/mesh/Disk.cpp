@@ -1,5 +1,7 @@
 #include "mesh/Disk.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -80,7 +82,7 @@ Mesh make_disk(const DiskSpec& spec) {
   const int side = spec.dim == 2 ? -2 : 0;
   const auto quads = detail::quarter_quads(quarter);
   auto& all = m.element_sets["all"];
-  for (int k = 0; k + 1 < std::max(layers, 2); ++k)
+  for (int k = 0; k + 1 < std::max(layers, 2); ++k)  // 2D: one pass (k = 0); 3D: each layer of elements
     for (int q = 0; q < count; ++q)
       for (const detail::OGridQuad& quad : quads) {
         const int e = m.num_elements();
