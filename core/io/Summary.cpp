@@ -142,7 +142,8 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
       {"blas", run.blas},
       {"ordering", st.factor.ordering},
       {"factor_nnz", st.factor.nnz_factor},
-      {"factor_flops", st.factor.flops}};
+      {"factor_flops", st.factor.flops},
+      {"factor_flops_total", st.factor_flops_total}};
   if (st.factor_flops_total > 0 && r.timing.factorize_s > 0) {  // how much of the machine the factorizations used
     const double rate = st.factor_flops_total / r.timing.factorize_s / 1e9;  // GFlop/s
     s["solver"]["factor_gflops"] = rate;

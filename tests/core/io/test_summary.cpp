@@ -1,4 +1,5 @@
-// Tests of summary.json's factorization rate: factor_gflops = all factorizations' flops over their seconds, and its
+// Tests of summary.json's factorization rate: factor_gflops = all factorizations' flops (factor_flops_total, beside
+// it) over their seconds, and its
 // fraction of the DGEMM peak when the run measured one; nothing of the kind when nothing was factored. Every
 // increment lists its probes' displacements and reactions (a load–displacement curve).
 #include <gtest/gtest.h>
@@ -25,6 +26,8 @@ TEST(Summary, ReportsTheFactorizationRateAgainstThePeak) {
   run.peak_probe_s = 0.01;
   const auto s = make_summary(Model{}, factored(6e9, 0.5), run);
   EXPECT_DOUBLE_EQ(s["solver"]["factor_gflops"].get<double>(), 12.0);
+  // the flops the rate is taken from, beside it: a mode that factors groups apart has no global factor_flops
+  EXPECT_DOUBLE_EQ(s["solver"]["factor_flops_total"].get<double>(), 6e9);
   EXPECT_DOUBLE_EQ(s["solver"]["dgemm_peak_gflops"].get<double>(), 40.0);
   EXPECT_DOUBLE_EQ(s["solver"]["factor_peak_fraction"].get<double>(), 0.3);
   EXPECT_DOUBLE_EQ(s["timing"]["peak_probe_s"].get<double>(), 0.01);
