@@ -100,9 +100,10 @@ void GroupLayout::add_body(const Model& model, int b, bool split, Multipliers ch
     opt.assemble = false;
     const Eigen::VectorXd load = external_nodal_load(model, b);
     bg.dec = decompose_body(body, b, *dofs_.back(), load, body.partition, opt);
+    const std::vector<FollowerPressure> follower = follower_pressures(model, b);
     for (const Subdomain& s : bg.dec->subdomains) {
       GroupSource source = subdomain_source(s, b, load, bg.dec->interface.multiplicity);
-      source.follower = subdomain_follower(s, follower_pressures(model, b));
+      source.follower = subdomain_follower(s, follower);
       assembler_.add(std::move(source));
     }
     warnings_.insert(warnings_.end(), bg.dec->warnings.begin(), bg.dec->warnings.end());

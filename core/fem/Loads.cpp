@@ -17,9 +17,24 @@ V3 node_at(const Mesh& m, int n, const Eigen::VectorXd* u = nullptr) {
   return x;
 }
 
-/// The 2×2 Gauss points of a quadrilateral facet and its corners' (ξ, η).
-const double kGauss = 1.0 / std::sqrt(3.0);
-const double kXi[4] = {-1, 1, 1, -1}, kEta[4] = {-1, -1, 1, 1};
+/// A quadrilateral facet at one of its 2×2 Gauss points g: the shape functions N and their derivatives N,ξ N,η at its
+/// corners, and the tangents x,ξ x,η of the facet through the corners x (x,ξ × x,η: the outward normal times the area
+/// the point stands for).
+struct FacetPoint {
+  double N[4], Ns[4], Nt[4];
+  V3 dxs = V3::Zero(), dxt = V3::Zero();
+  FacetPoint(const V3 (&x)[4], int g) {
+    static const double q = 1.0 / std::sqrt(3.0), xi[4] = {-1, 1, 1, -1}, eta[4] = {-1, -1, 1, 1};
+    const double s = q * xi[g], t = q * eta[g];
+    for (int k = 0; k < 4; ++k) {
+      N[k] = 0.25 * (1 + xi[k] * s) * (1 + eta[k] * t);
+      Ns[k] = 0.25 * xi[k] * (1 + eta[k] * t);
+      Nt[k] = 0.25 * eta[k] * (1 + xi[k] * s);
+      dxs += Ns[k] * x[k];
+      dxt += Nt[k] * x[k];
+    }
+  }
+};
 
 /// Consistent nodal forces of a load on one facet: at each quadrature point the traction `traction(n)` (n the outward
 /// normal times the area — or length — it stands for) is spread over the facet's nodes by their shape functions. The
@@ -40,17 +55,10 @@ void add_facet_load(const Mesh& m, const Facet& f, const Traction& traction, Eig
   V3 x[4];
   for (int k = 0; k < 4; ++k) x[k] = node_at(m, conn[local[k]], u);
   for (int g = 0; g < 4; ++g) {
-    const double s = kGauss * kXi[g], t = kGauss * kEta[g];
-    V3 dxs = V3::Zero(), dxt = V3::Zero();
-    double N[4];
-    for (int k = 0; k < 4; ++k) {
-      N[k] = 0.25 * (1 + kXi[k] * s) * (1 + kEta[k] * t);
-      dxs += 0.25 * kXi[k] * (1 + kEta[k] * t) * x[k];
-      dxt += 0.25 * kEta[k] * (1 + kXi[k] * s) * x[k];
-    }
-    const V3 load = traction(dxs.cross(dxt));  // outward for the right-handed facet ordering
+    const FacetPoint at(x, g);
+    const V3 load = traction(at.dxs.cross(at.dxt));  // outward for the right-handed facet ordering
     for (int k = 0; k < 4; ++k)
-      for (int c = 0; c < 3; ++c) F[conn[local[k]] * 3 + c] += N[k] * load[c];
+      for (int c = 0; c < 3; ++c) F[conn[local[k]] * 3 + c] += at.N[k] * load[c];
   }
 }
 
@@ -138,19 +146,11 @@ Eigen::MatrixXd follower_facet_stiffness(const Mesh& m, const Facet& f, double p
   V3 x[4];
   for (int k = 0; k < 4; ++k) x[k] = node_at(m, conn[local[k]], &u);
   for (int g = 0; g < 4; ++g) {  // f_a = −p Σ_g N_a (x,ξ × x,η): ∂/∂x_b = −p N_a (N_b,η [x,ξ]× − N_b,ξ [x,η]×)
-    const double s = kGauss * kXi[g], t = kGauss * kEta[g];
-    V3 dxs = V3::Zero(), dxt = V3::Zero();
-    double N[4], Ns[4], Nt[4];
-    for (int k = 0; k < 4; ++k) {
-      N[k] = 0.25 * (1 + kXi[k] * s) * (1 + kEta[k] * t);
-      Ns[k] = 0.25 * kXi[k] * (1 + kEta[k] * t);
-      Nt[k] = 0.25 * kEta[k] * (1 + kXi[k] * s);
-      dxs += Ns[k] * x[k];
-      dxt += Nt[k] * x[k];
-    }
-    const Eigen::Matrix3d Ss = skew(dxs), St = skew(dxt);
+    const FacetPoint at(x, g);
+    const Eigen::Matrix3d Ss = skew(at.dxs), St = skew(at.dxt);
     for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) K.block<3, 3>(local[i] * 3, local[j] * 3) -= p * N[i] * (Nt[j] * Ss - Ns[j] * St);
+      for (int j = 0; j < 4; ++j)
+        K.block<3, 3>(local[i] * 3, local[j] * 3) -= p * at.N[i] * (at.Nt[j] * Ss - at.Ns[j] * St);
   }
   return K;
 }

@@ -55,10 +55,10 @@ RoundBarSpec round_bar_spec(const json& m) {
   return s;
 }
 
-/// A profile's points (objects with the position `at` and `radius_change`), in their order.
-RadiusProfile radius_profile(const json& points, const char* at) {
+/// A profile's points (objects with `y` and `radius_change`), in their order.
+RadiusProfile radius_profile(const json& points) {
   RadiusProfile profile;
-  for (const json& p : points) profile.points.emplace_back(num(p, at), num(p, "radius_change"));
+  for (const json& p : points) profile.points.emplace_back(num(p, "y"), num(p, "radius_change"));
   return profile;
 }
 
@@ -87,7 +87,7 @@ void check_outer_profile(const json& m, const std::string& path, std::vector<Iss
     if (!(num(points[i], "y") > num(points[i - 1], "y")))
       issues.push_back(
           {path + ".outer_profile[" + std::to_string(i) + "].y", "must be greater than the point before's"});
-  if (num(m, "outer_radius") + radius_profile(points, "y").lowest() <= num(m, "inner_radius"))
+  if (num(m, "outer_radius") + radius_profile(points).lowest() <= num(m, "inner_radius"))
     issues.push_back({path + ".outer_profile", "takes the outer radius down to inner_radius or below"});
 }
 
@@ -228,7 +228,7 @@ Mesh make_mesh(const json& m, int dim) {
       cut_to_roll(mesh, t, s.origin[static_cast<size_t>(t)] + s.size[static_cast<size_t>(t)],
                   {c.at("center")[0].get<double>(), c.at("center")[1].get<double>(), num(c, "radius"),
                    c.at("n_around").get<int>()},
-                  radius_profile(c.value("profile", json::array()), "y"));
+                  radius_profile(c.value("profile", json::array())));
     }
     return mesh;
   }
@@ -244,7 +244,7 @@ Mesh make_mesh(const json& m, int dim) {
                          num(m, "start_angle"), num(m, "end_angle")});
   return make_cylinder({c0, c1, num(m, "y0"), num(m, "length"), num(m, "inner_radius"), num(m, "outer_radius"),
                         count("n_radial"), count("n_around"), count("n_axial"), num(m, "start_angle"),
-                        num(m, "end_angle"), radius_profile(m.value("outer_profile", json::array()), "y")});
+                        num(m, "end_angle"), radius_profile(m.value("outer_profile", json::array()))});
 }
 
 }  // namespace rollsim
