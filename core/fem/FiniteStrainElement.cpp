@@ -23,7 +23,8 @@ Matrix3 deformation_gradient(const typename SolidElement<D>::Gradients& dN, cons
 template <int D>
 Matrix3 f_bar(const Matrix3& F, double J0) {
   Matrix3 Fb = F;
-  Fb.topLeftCorner<D, D>() *= std::pow(J0 / F.topLeftCorner<D, D>().determinant(), 1.0 / D);
+  const double ratio = J0 / F.topLeftCorner<D, D>().determinant();
+  Fb.topLeftCorner<D, D>() *= D == 2 ? std::sqrt(ratio) : std::cbrt(ratio);
   return Fb;
 }
 }  // namespace
@@ -64,7 +65,7 @@ bool FiniteStrainElement<D>::tangent_and_force(const typename El::Coords& X, con
     if (stresses)
       for (int k = 0; k < 6; ++k) (*stresses)[p][k] = tau_v(k) / (Fb.topLeftCorner<D, D>().determinant());
     if (!Ke) continue;
-    const Eigen::Matrix<double, 9, 9> A = kirchhoff_modulus(ft);  // ∂τ_ij / ∂(∇_x u)_ml of τ((I + ∇_x u) F̄)
+    const Eigen::Matrix<double, 9, 9> A = kirchhoff_modulus(ft, D);  // ∂τ_ij / ∂(∇_x u)_ml of τ((I + ∇_x u) F̄)
     // δτ (column-major) for δu = e_m N_b, in column b·D + m. With F-bar, δF̄ F̄⁻¹ gains (div_c δu − div δu) / D × I
     // and δ(J / J̄) = (J / J̄)(div δu − div_c δu).
     Eigen::Matrix<double, 9, NN * D> dtau;

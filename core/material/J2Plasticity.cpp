@@ -87,7 +87,7 @@ void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committ
   const double* c = committed;
   Cp_inv << 1 + c[0], c[3], c[5], c[3], 1 + c[1], c[4], c[5], c[4], 1 + c[2];
   Deformation d;
-  const Eigen::Matrix3d b = F * Cp_inv * F.transpose();  // elastic trial left Cauchy–Green tensor
+  const Spectrum b = spectrum(F * Cp_inv * F.transpose());  // elastic trial left Cauchy–Green tensor
   d.strain = log_strain(b);
   double log_committed[kStateSize] = {0, 0, 0, 0, 0, 0, committed[kAlpha]}, log_trial[kStateSize];
   Tangent6 modulus;
@@ -96,11 +96,11 @@ void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committ
   std::copy(committed, committed + kStateSize, trial);
   trial[kAlpha] = log_trial[kAlpha];
   if (log_trial[kAlpha] == committed[kAlpha]) return;  // elastic: C_p unchanged
-  // ε_e = ε_e trial − Δε_p (coaxial), b_e = exp(2 ε_e), C_p⁻¹ = F⁻¹ b_e F⁻ᵀ
-  const Eigen::Matrix3d Ee = strain_tensor(d.strain - Eigen::Map<const Voigt6>(log_trial));
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(Ee);
-  const Eigen::Vector3d stretch2 = (2 * eig.eigenvalues()).array().exp();
-  const Eigen::Matrix3d be = eig.eigenvectors() * stretch2.asDiagonal() * eig.eigenvectors().transpose();
+  // ε_e = ε_e trial − Δε_p, coaxial with b (Δε_p ∝ the trial deviator), so b_e = exp(2 ε_e) = Q diag(λ e^(−2 Δε_p,k))
+  // Qᵀ with Δε_p,k its principal values on b's eigenvectors
+  const Eigen::Matrix3d dep = strain_tensor(Eigen::Map<const Voigt6>(log_trial));
+  const Eigen::Vector3d dep_principal = (b.vectors.transpose() * dep * b.vectors).diagonal();
+  const Eigen::Matrix3d be = compose(b, b.values.cwiseProduct((-2 * dep_principal).array().exp().matrix()));
   const Eigen::Matrix3d Finv = F.inverse();
   const Eigen::Matrix3d C = Finv * be * Finv.transpose();
   trial[0] = C(0, 0) - 1;

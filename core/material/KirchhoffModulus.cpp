@@ -10,22 +10,19 @@ double log_divided_difference(double a, double b) {
   return 2.0 * std::atanh(x) / (x * (a + b));
 }
 
-Eigen::Matrix<double, 9, 9> kirchhoff_modulus(const FiniteTangent& t) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(t.b);
-  const Eigen::Vector3d& lambda = eig.eigenvalues();
-  const Eigen::Matrix3d& Q = eig.eigenvectors();
+Eigen::Matrix<double, 9, 9> kirchhoff_modulus(const FiniteTangent& t, int dim) {
+  const Eigen::Vector3d& lambda = t.b.values;
+  const Eigen::Matrix3d& Q = t.b.vectors;
   Eigen::Matrix3d G;  // divided differences of ln over the eigenvalues
   for (int a = 0; a < 3; ++a)
     for (int c = 0; c < 3; ++c) G(a, c) = log_divided_difference(lambda(a), lambda(c));
-  Eigen::Matrix<double, 9, 9> A;
-  for (int m = 0; m < 3; ++m)
-    for (int l = 0; l < 3; ++l) {
+  Eigen::Matrix<double, 9, 9> A = Eigen::Matrix<double, 9, 9>::Zero();
+  for (int m = 0; m < dim; ++m)
+    for (int l = 0; l < dim; ++l) {
       // Qᵀ (E b + b Eᵀ) Q for E = e_m e_lᵀ: Y + Yᵀ with Y = q_m q_lᵀ Λ, q_m the m-th row of Q
       const Eigen::Matrix3d Y = Q.row(m).transpose() * Q.row(l) * lambda.asDiagonal();
       const Eigen::Matrix3d dE = 0.5 * Q * G.cwiseProduct(Y + Y.transpose()) * Q.transpose();  // d(½ ln b)
-      Voigt6 de;
-      de << dE(0, 0), dE(1, 1), dE(2, 2), 2 * dE(0, 1), 2 * dE(1, 2), 2 * dE(2, 0);
-      const Eigen::Matrix3d dtau = stress_tensor(t.modulus * de);
+      const Eigen::Matrix3d dtau = stress_tensor(t.modulus * voigt_strain(dE));
       A.col(m * 3 + l) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(dtau.data());
     }
   return A;

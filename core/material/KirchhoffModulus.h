@@ -11,8 +11,9 @@
 
 namespace rollsim {
 
-/// dτ / d(∇_x u) at `t`: column m·3 + l holds the change of τ (a 3 × 3 tensor, column-major) per unit (∇_x u)_ml.
-Eigen::Matrix<double, 9, 9> kirchhoff_modulus(const FiniteTangent& t);
+/// dτ / d(∇_x u) at `t`: column m·3 + l holds the change of τ (a 3 × 3 tensor, column-major) per unit (∇_x u)_ml,
+/// for m, l < dim (the other columns zero: a plane-strain element's displacement gradient has no z row or column).
+Eigen::Matrix<double, 9, 9> kirchhoff_modulus(const FiniteTangent& t, int dim = 3);
 
 /// (ln a − ln b) / (a − b), and 1 / a when a = b, for a, b > 0 (accurate when they are close).
 double log_divided_difference(double a, double b);

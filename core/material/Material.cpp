@@ -20,10 +20,9 @@ Tangent6 Material::initial_tangent() const {
   return tangent;
 }
 
-Voigt6 log_strain(const Eigen::Matrix3d& b) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(b);
-  const Eigen::Vector3d l = 0.5 * eig.eigenvalues().array().log();
-  const Eigen::Matrix3d E = eig.eigenvectors() * l.asDiagonal() * eig.eigenvectors().transpose();
+Voigt6 log_strain(const Spectrum& b) { return voigt_strain(compose(b, 0.5 * b.values.array().log())); }
+
+Voigt6 voigt_strain(const Eigen::Matrix3d& E) {
   Voigt6 e;
   e << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0);
   return e;
@@ -44,7 +43,7 @@ Eigen::Matrix3d stress_tensor(const Voigt6& s) {
 void Material::update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
                              FiniteTangent* tangent) const {
   Deformation d;
-  const Eigen::Matrix3d b = F * F.transpose();
+  const Spectrum b = spectrum(F * F.transpose());
   d.strain = log_strain(b);
   Tangent6 modulus;
   update(d, committed, trial, tau, modulus);

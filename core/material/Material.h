@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "material/Spectrum.h"
 #include "model/MaterialData.h"
 
 namespace rollsim {
@@ -19,10 +20,11 @@ struct Deformation {
 };
 
 /// What a finite-strain update's spatial tangent is made of (material/KirchhoffModulus): the algorithmic modulus
-/// dτ/dε of its return (ε = ½ ln b, engineering shears) and the elastic trial left Cauchy–Green tensor b.
+/// dτ/dε of its return (ε = ½ ln b, engineering shears) and the spectrum of the elastic trial left Cauchy–Green
+/// tensor b (the one the update decomposed: the modulus needs b only through its eigenpairs).
 struct FiniteTangent {
   Tangent6 modulus;
-  Eigen::Matrix3d b;
+  Spectrum b;
 };
 
 class Material {
@@ -51,8 +53,10 @@ class Material {
 /// The behaviour for `data`: J2Plasticity when it has a yield stress, else LinearElastic.
 std::unique_ptr<Material> make_material(const MaterialData& data);
 
-/// ½ ln(b) of a symmetric positive definite b, as a Voigt strain (engineering shears).
-Voigt6 log_strain(const Eigen::Matrix3d& b);
+/// ½ ln(b) of a symmetric positive definite b given by its spectrum, as a Voigt strain (engineering shears).
+Voigt6 log_strain(const Spectrum& b);
+/// The Voigt strain (engineering shears) of a symmetric tensor.
+Voigt6 voigt_strain(const Eigen::Matrix3d& E);
 /// The symmetric tensor of a Voigt strain (engineering shears halved).
 Eigen::Matrix3d strain_tensor(const Voigt6& e);
 /// The symmetric tensor of a Voigt stress (tensor shears).

@@ -68,6 +68,23 @@ TEST(KirchhoffModulus, EqualsCentralDifferencesOfTheJ2ExponentialMapAtAPlasticSt
   EXPECT_LT(modulus_error(plastic(), Eigen::Vector3d(1.2, 1.2, 1 / 1.44).asDiagonal()), 1e-6);  // two equal
 }
 
+TEST(KirchhoffModulus, PlaneColumnsAreThoseOfTheFullModulus) {
+  const auto mat = make_material(plastic());
+  Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+  F.topLeftCorner<2, 2>() << 1.08, 0.05, -0.03, 0.94;  // plane strain: no z coupling
+  FiniteTangent t;
+  kirchhoff(*mat, F, &t);
+  const Eigen::Matrix<double, 9, 9> full = kirchhoff_modulus(t), plane = kirchhoff_modulus(t, 2);
+  for (int m = 0; m < 3; ++m)
+    for (int l = 0; l < 3; ++l) {
+      const int c = m * 3 + l;
+      if (m < 2 && l < 2)
+        EXPECT_EQ(plane.col(c), full.col(c)) << c;
+      else
+        EXPECT_TRUE(plane.col(c).isZero(0.0)) << c;
+    }
+}
+
 TEST(KirchhoffModulus, LogDividedDifferenceIsAccurateForCloseArguments) {
   EXPECT_NEAR(log_divided_difference(2.0, 0.5), std::log(4.0) / 1.5, 1e-15);
   EXPECT_DOUBLE_EQ(log_divided_difference(0.8, 0.8), 1 / 0.8);
