@@ -79,6 +79,7 @@ void GroupAssembler::add_follower_pressures(size_t g, const Eigen::VectorXd& u, 
 const Assembler& GroupAssembler::assembler(size_t g) const {
   if (assemblers_.size() < sources_.size()) assemblers_.resize(sources_.size());
   if (!assemblers_[g]) assemblers_[g] = std::make_unique<Assembler>(*sources_[g].body, *sources_[g].dofs);
+  assemblers_[g]->set_threads(threads_);
   return *assemblers_[g];
 }
 

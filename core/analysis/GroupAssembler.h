@@ -57,6 +57,8 @@ class GroupAssembler {
   };
   InvertedElement assemble_newton(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                                   const std::vector<Eigen::VectorXd>& u_free, Factors at, BlockSystem& sys);
+  /// Threads for each group's element kernels (fem/Assembler: the result does not depend on the count).
+  void set_threads(int threads) { threads_ = threads; }
   /// The groups whose tangents this process assembles (default: all). Under `petsc` every MPI rank runs the Newton
   /// driver with every group's residual and state (so every rank takes the same decisions and rank 0 can write every
   /// body's fields) but assembles the tangent of its own subdomain only (SolverStrategy::local_groups): the others'
@@ -93,6 +95,7 @@ class GroupAssembler {
   std::vector<GroupSource> sources_;
   std::vector<IntegrationState> states_;
   std::vector<char> local_;  // per group: its tangent is assembled here (empty: every group's)
+  int threads_ = 1;
   mutable std::vector<long> evaluations_;
   mutable std::vector<std::unique_ptr<Assembler>> assemblers_;  // per group, built by assembler(g)
 };

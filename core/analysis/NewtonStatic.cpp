@@ -66,6 +66,7 @@ class NewtonRun {
     unfactored_.assign(u_.size(), 0);
     // petsc: every rank runs this driver alike, assembling the tangent of its own subdomain only
     layout_.assembler().set_local(solver.local_groups(all_groups(layout_.system())));
+    layout_.assembler().set_threads(solver.options().threads);
     try {
       pairs_ = search_contacts(model);
     } catch (const std::runtime_error& e) {

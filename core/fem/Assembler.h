@@ -1,6 +1,7 @@
 #pragma once
 // Assembly of one group's stiffness and internal force over its free dofs. The sparsity pattern and the
 // element -> value-slot scatter map are computed once; assemble() only rewrites values.
+#include <algorithm>
 #include <vector>
 
 #include "base/SparseMatrix.h"
@@ -39,12 +40,16 @@ class Assembler {
   /// Adds a matrix in element e's dofs (node-major, column-major storage) to K_ff, which has this pattern: a load's
   /// stiffness on one of the element's facets.
   void add_element_matrix(int e, const Eigen::MatrixXd& Ke, SparseMatrix& K) const;
+  /// Threads for the Newton kernel's elements (computed concurrently, added in element order: the result does not
+  /// depend on the count).
+  void set_threads(int threads) { threads_ = std::max(1, threads); }
 
  private:
   const Body& body_;
   const DofMap& dofs_;
   SparseMatrix pattern_;
   std::vector<int> slot_;  // per element, per (i, j) of the element matrix: value index or -1
+  int threads_ = 1;
 };
 
 /// Element dof -> equation (or -1) for element e, node-major.

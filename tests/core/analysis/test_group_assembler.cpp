@@ -1,8 +1,12 @@
 // The group assembler: r_g = f_ext − f_int(u_g) is the linear system's right-hand side at rest and vanishes at its
 // solution, the subdomains' residuals add up to the body's, and only the listed groups are touched; with local groups
 // set (petsc) a Newton assembly gives every group its residual and only the local ones their tangent. The layout's
-// dof geometry gives a subdomain's dofs the body's rigid-mode rows (the same on both sides of the interface).
+// dof geometry gives a subdomain's dofs the body's rigid-mode rows (the same on both sides of the interface). The
+// Newton kernel's elements on 2 or 3 threads give bit for bit the tangent, residual and trial state of 1 thread, and
+// name the same inverted element.
 #include <gtest/gtest.h>
+
+#include "../../common/SaturatingSteel.h"
 
 #include <Eigen/SparseCholesky>
 
@@ -106,6 +110,77 @@ TEST(GroupAssembler, SubdomainGeometryHasTheBodysRigidModeRows) {
       EXPECT_LT((modes.row(static_cast<long>(l)) - body.row(dec.subdomains[s].free_dofs[l])).norm(), 1e-14)
           << "subdomain " << s << ", local dof " << l;
   }
+}
+
+namespace {
+/// A finite-strain J2 block of 10 × 8 × 4 elements (more than one chunk of the threaded kernel) stretched 2 % along x
+/// and sheared, so that its points yield; assembled at u on `threads` threads.
+struct Plastic {
+  Model m = test::block_model(3, {10, 8, 4});
+  Plastic() {
+    m.bodies[0].material = rollsim::testing::saturating_steel();
+    m.bodies[0].kinematics = Kinematics::Finite;
+    m.bodies[0].formulation = Formulation::BBar;
+    test::support(m, test::nodes_in_box(m, {0, 0, 0}, {0, 8, 4}));
+  }
+  /// u: x-stretch plus a shear wave (every free dof moves); `fold` pushes one corner node through its element.
+  std::vector<Eigen::VectorXd> displacement(const GroupLayout& layout, bool fold) const {
+    const Mesh& mesh = m.bodies[0].mesh;
+    Eigen::VectorXd all(3 * mesh.num_nodes());
+    for (int n = 0; n < mesh.num_nodes(); ++n) {
+      const auto& x = mesh.nodes[n];
+      all.segment<3>(3 * n) << 0.02 * x[0], 0.01 * x[0] * std::sin(x[2]), 0.005 * x[1];
+    }
+    if (fold) all.segment<3>(3 * (mesh.num_nodes() - 1)) << -3.0, -3.0, -3.0;
+    return {layout.body_dofs()[0]->restrict_to_free(all)};
+  }
+  struct Out {
+    InvertedElement bad;
+    Group group;
+    std::vector<double> trial;
+  };
+  Out assemble(int threads, bool fold = false) const {
+    GroupLayout layout(m, false, Multipliers::NonRedundant);
+    BlockSystem& sys = layout.system();
+    layout.assembler().set_threads(threads);
+    const std::vector<size_t> all = all_groups(sys);
+    Out out;
+    out.bad = layout.assembler().assemble_newton(all, all, displacement(layout, fold), {1.0, 1.0, 0.0}, sys);
+    out.group = sys.groups[0];
+    layout.assembler().commit();
+    out.trial = layout.assembler().committed_state(0, m.bodies[0].mesh.num_elements());
+    return out;
+  }
+};
+
+bool same_bits(const Eigen::Ref<const Eigen::VectorXd>& a, const Eigen::Ref<const Eigen::VectorXd>& b) {
+  return a.size() == b.size() && std::equal(a.data(), a.data() + a.size(), b.data());
+}
+}  // namespace
+
+TEST(GroupAssembler, NewtonElementsOnThreadsGiveTheOneThreadResultBitForBit) {
+  const Plastic block;
+  const Plastic::Out one = block.assemble(1);
+  ASSERT_FALSE(one.bad);
+  ASSERT_GT(*std::max_element(one.trial.begin(), one.trial.end()), 0.0) << "points yield";
+  for (int threads : {2, 3}) {
+    SCOPED_TRACE(threads);
+    const Plastic::Out many = block.assemble(threads);
+    ASSERT_FALSE(many.bad);
+    EXPECT_TRUE(same_bits(many.group.f, one.group.f));
+    ASSERT_EQ(many.group.K.nonZeros(), one.group.K.nonZeros());
+    EXPECT_TRUE(
+        std::equal(one.group.K.valuePtr(), one.group.K.valuePtr() + one.group.K.nonZeros(), many.group.K.valuePtr()));
+    EXPECT_EQ(many.trial, one.trial);
+  }
+}
+
+TEST(GroupAssembler, NewtonElementsOnThreadsNameTheSameInvertedElement) {
+  const Plastic block;
+  const Plastic::Out one = block.assemble(1, true), two = block.assemble(2, true);
+  ASSERT_TRUE(one.bad);
+  EXPECT_EQ(two.bad.group, one.bad.group);
+  EXPECT_EQ(two.bad.element, one.bad.element);
 }
 
 }  // namespace test_group_assembler
