@@ -78,13 +78,15 @@ bool FiniteStrainElement<D>::tangent_and_force(const typename El::Coords& X, con
         column.noalias() = A.middleCols<D>(m * 3) * g.col(b);
         if (fbar) column += (gc(m, b) - g(m, b)) * (q / D - tau9);
       }
-    // K_(ai)(bm) = (J / J̄) ∫ (Σ_j ∂N_a/∂x_j δτ_ij − Σ_j τ_ij ∂N_b/∂x_j ∂N_a/∂x_m) dV0
-    Eigen::Matrix<double, NN * D, 9> gradients = Eigen::Matrix<double, NN * D, 9>::Zero();  // (ai, ij): ∂N_a/∂x_j
-    for (int a = 0; a < NN; ++a)
-      for (int i = 0; i < D; ++i)
-        for (int j = 0; j < D; ++j) gradients(a * D + i, j * 3 + i) = g(j, a);
+    // K_(ai)(bm) = (J / J̄) ∫ (Σ_j ∂N_a/∂x_j δτ_ij − Σ_j τ_ij ∂N_b/∂x_j ∂N_a/∂x_m) dV0; the first term, for one i,
+    // is gᵀ (NN × D) times the rows δτ_ij, j < D (D × NN·D): D products per entry instead of a 9-long sum of zeros
     const double w = ratio * dv0[p];
-    Ke->noalias() += w * (gradients * dtau);
+    for (int i = 0; i < D; ++i) {
+      Eigen::Matrix<double, D, NN * D> rows_i;
+      for (int j = 0; j < D; ++j) rows_i.row(j) = dtau.row(j * 3 + i);
+      const Eigen::Matrix<double, NN, NN* D> first = w * (g.transpose() * rows_i);
+      for (int a = 0; a < NN; ++a) Ke->row(a * D + i) += first.row(a);
+    }
     const Eigen::Matrix<double, D, NN> tau_g = tau.topLeftCorner<D, D>() * g;
     for (int a = 0; a < NN; ++a)
       for (int i = 0; i < D; ++i)
