@@ -20,6 +20,9 @@ enum class FrictionTangent { Consistent, Lagged };
 enum class FirstTangent { Converged, Fresh };
 /// Under a policy reading residuals: a constant tangent (elastic, small strain) kept, or judged like any group.
 enum class ConstantTangents { Keep, Refactor };
+/// Where a step's first iteration starts: at the converged state with the prescribed increment carried by the tangent
+/// (tangent), or at the converged state plus the last converged step's displacement scaled to this step (extrapolate).
+enum class Predictor { Tangent, Extrapolate };
 
 template <>
 inline const std::vector<std::string>& words<ContactTangent>() {
@@ -34,6 +37,11 @@ inline const std::vector<std::string>& words<FrictionTangent>() {
 template <>
 inline const std::vector<std::string>& words<FirstTangent>() {
   static const std::vector<std::string> w{"converged", "fresh"};
+  return w;
+}
+template <>
+inline const std::vector<std::string>& words<Predictor>() {
+  static const std::vector<std::string> w{"tangent", "extrapolate"};
   return w;
 }
 template <>
@@ -53,6 +61,7 @@ struct NewtonOptions {
   FirstTangent first_tangent = FirstTangent::Converged;
   ContactTangent contact_tangent = ContactTangent::Groups;
   ConstantTangents constant_tangents = ConstantTangents::Keep;
+  Predictor predictor = Predictor::Tangent;
   // how the user makes the steps smaller, for a diverged run's advice (a process's own step: "a smaller
   // process.travel_increment (now 1 mm)"); empty: more analysis.increments
   std::string smaller_steps;
@@ -87,6 +96,13 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
                "where a zero strain increment returns elastically, so a flowing body starts each step with its "
                "elastic stiffness (docs/BENCHMARKS-ROLLING.md: what made `--update always` fail on the rolling pass)"),
            &N::first_tangent),
+      bind(str("predictor",
+               "Newton: where a step's first iteration starts — tangent: the converged state, the prescribed motion's "
+               "increment carried into the body by the tangent assembled there (elastic where a zero strain increment "
+               "returns elastically); extrapolate: the converged state plus the last converged step's displacement "
+               "scaled to this step, the prescribed dofs at their new values (a steadily flowing body starts near "
+               "its answer; docs/BENCHMARKS-NONLINEAR.md \"Predictors\")"),
+           &N::predictor),
       bind(str("contact_tangent",
                "Newton with contact pairs that slide `large_every_iteration`: the contact's geometric stiffness (how "
                "the rows' normal and projection turn with the displacement: node-to-segment in 2D, node-to-face in "

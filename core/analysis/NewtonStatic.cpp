@@ -133,6 +133,9 @@ class NewtonRun {
   std::vector<TangentChoice> tangent_choices(const std::vector<size_t>& tangent, const std::vector<double>& share,
                                              const std::string& all_why) const;
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
+  /// Under `predictor: extrapolate`, u_ moved on by the last converged step's displacement scaled from its load-factor
+  /// span to this step's; false when there is none yet (the first step) or the option is `tangent`.
+  bool extrapolate(double span);
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
   const Model& model_;
@@ -162,6 +165,9 @@ class NewtonRun {
   double slope_ = 0;                              // the line search's s(0)
   double assembly_s_ = 0;                         // residual and tangent assembly, over the run
   std::tuple<std::vector<Eigen::VectorXd>, std::vector<PairState>, Eigen::VectorXd, bool> saved_;
+  std::vector<Eigen::VectorXd> last_step_;  // the last converged step's displacement and its load-factor span
+  double last_span_ = 0;
+  double last_scale_ = 0, attempt_scale_ = 0;  // the residual scale of the last converged step, of the last attempt
   std::vector<NewtonIteration> log_;
 };
 
@@ -381,9 +387,12 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
   step_start_ = body_displacements(from);
+  const bool extrapolated = extrapolate(lf - from);
   new_step(pairs_);
   const std::vector<size_t> all = all_groups(sys);
-  double first = 0, correction = 0;
+  // the residual's scale; from an extrapolated start, at least the last step's scaled to this one: how far the step
+  // is from balance does not depend on how well it was predicted, and the tolerance stays the same force
+  double first = extrapolated ? last_scale_ * (lf - from) / last_span_ : 0, correction = 0;
   int changed = 0;
   std::string unmet;            // the check the last iterate failed, with its value and limit
   bool searched_again = false;  // the last iteration only searched the projections again
@@ -391,8 +400,10 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     if (obs_.cancel_requested())
       return {{Status::cancelled, Reason::none, "cancelled in increment " + std::to_string(increment)}, "", k - 1};
     set_constraints(lf, k == 1);
-    // the first iteration starts from the converged state, the prescribed increment predicted by the tangent
-    const GroupAssembler::Factors at{lf, k == 1 ? from : lf, k == 1 ? lf - from : 0.0};
+    // the first iteration starts from the converged state, the prescribed increment predicted by the tangent (or
+    // from the extrapolated state, the prescribed dofs already at lf)
+    const bool predict = k == 1 && !extrapolated;
+    const GroupAssembler::Factors at{lf, predict ? from : lf, predict ? lf - from : 0.0};
     std::vector<size_t> tangent = all;
     const bool residuals_first = assembled_once_ && !refresh_all_ && policy_.uses_residuals();
     std::vector<double> share;
@@ -413,7 +424,8 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     // afresh (every group of its body, so that subdomains do as their body does): its predictor (the prescribed
     // increment times the tangent) and its matrix must be the same tangent.
     std::vector<size_t> fresh = tangent;
-    if (opt_.first_tangent == FirstTangent::Converged && k == 1 && assembled_once_ && !refresh_all_) {
+    // An extrapolated first iterate has its strain increment, so its own tangent flows: it is assembled there.
+    if (opt_.first_tangent == FirstTangent::Converged && k == 1 && assembled_once_ && !refresh_all_ && !extrapolated) {
       std::erase_if(tangent, [&](size_t g) { return !unfactored_[g] && !prescribed_moves(g, at); });
       fresh = tangent;
       std::erase_if(fresh, [&](size_t g) { return !prescribed_moves(g, at); });
@@ -444,7 +456,10 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     if (unmet.empty()) {
       const ProjectionDrift drift =
           step_sliding_ ? projection_drift(model_, body_displacements(lf), pairs_) : ProjectionDrift{};
-      if (drift.moved == 0) return {{}, "", k - 1};
+      if (drift.moved == 0) {
+        attempt_scale_ = first;
+        return {{}, "", k - 1};
+      }
       unmet = unmet_projections(relative, drift);
       search_again_ = searched_again = true;  // converged on the step's first projections: iterate on, projected
       changed = 1;                            // where it now is
@@ -485,6 +500,12 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     log_.push_back({increment, attempt_no, k, lf, residual, relative, correction, 1.0, static_cast<int>(tangent.size()),
                     changed, solver_.stats().cg_iterations - cg_before, describe(choices)});
   }
+}
+
+bool NewtonRun::extrapolate(double span) {
+  if (opt_.predictor != Predictor::Extrapolate || last_span_ <= 0) return false;
+  for (size_t g = 0; g < u_.size(); ++g) u_[g] += (span / last_span_) * last_step_[g];
+  return true;
 }
 
 Results NewtonRun::run() {
@@ -542,6 +563,10 @@ Results NewtonRun::run() {
     }
     layout_.assembler().commit();
     accumulate_slip(model_, body_displacements(target), step_start_, pairs_);
+    last_step_ = u_;
+    for (size_t g = 0; g < u_.size(); ++g) last_step_[g] -= std::get<0>(saved_)[g];
+    last_span_ = target - lf;
+    last_scale_ = attempt_scale_;
     save();
     lf = target;
     ++increment;

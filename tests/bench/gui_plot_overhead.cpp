@@ -129,7 +129,7 @@ Sample run_once(const Project& project, Mode mode) {
   const double gui_cpu = thread_cpu_seconds() - gui_cpu_begin;
   if (mode == Mode::LivePlots) plots.flush();
   if (!outcome.results || outcome.status != QLatin1String("converged")) {
-    std::fprintf(stderr, "run failed: %s %s\n", qPrintable(outcome.status), qPrintable(outcome.error));
+    std::fprintf(stderr, "run failed: %s %s\n", qPrintable(outcome.status), qPrintable(outcome.message));
     std::exit(1);
   }
   if (mode == Mode::LivePlots &&
