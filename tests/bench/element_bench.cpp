@@ -34,6 +34,11 @@ Model block(int dim) {
   b.material.hardening_modulus = 2000;
   b.kinematics = Kinematics::Finite;
   b.formulation = Formulation::BBar;
+  DisplacementBC held;  // the face x = 0 held: a supported body (a floating one adds its kernel's update)
+  for (int n = 0; n < b.mesh.num_nodes(); ++n)
+    if (b.mesh.nodes[n][0] == 0.0) held.nodes.push_back(n);
+  for (int c = 0; c < dim; ++c) held.value[c] = 0.0;
+  m.displacements.push_back(held);
   m.bodies.push_back(b);
   return m;
 }

@@ -113,15 +113,15 @@ TEST(GroupAssembler, SubdomainGeometryHasTheBodysRigidModeRows) {
 }
 
 namespace {
-/// A finite-strain J2 block of 10 × 8 × 4 elements (more than one chunk of the threaded kernel) stretched 2 % along x
+/// A finite-strain J2 block of 12 × 8 × 6 elements (more than one chunk of the threaded kernel) stretched 2 % along x
 /// and sheared, so that its points yield; assembled at u on `threads` threads.
 struct Plastic {
-  Model m = test::block_model(3, {10, 8, 4});
+  Model m = test::block_model(3, {12, 8, 6});
   Plastic() {
     m.bodies[0].material = rollsim::testing::saturating_steel();
     m.bodies[0].kinematics = Kinematics::Finite;
     m.bodies[0].formulation = Formulation::BBar;
-    test::support(m, test::nodes_in_box(m, {0, 0, 0}, {0, 8, 4}));
+    test::support(m, test::nodes_in_box(m, {0, 0, 0}, {0, 8, 6}));
   }
   /// u: x-stretch plus a shear wave (every free dof moves); `fold` pushes one corner node through its element.
   std::vector<Eigen::VectorXd> displacement(const GroupLayout& layout, bool fold) const {
