@@ -237,8 +237,14 @@ void NewtonRun::add_contact_stiffness(double lf, const std::vector<size_t>& tang
   BlockSystem& sys = layout_.system();
   const bool full = opt_.contact_tangent == ContactTangent::Full;
   if (full) sys.coupling = SparseMatrix();
+  layout_.set_compliant({}, {});
   if (opt_.contact_tangent == ContactTangent::None) return;
-  std::vector<StiffnessEntry> entries = slip_direction_stiffness(model_, pairs_);  // any sliding, 3D
+  // the friction direction's turn joins slave and master: under `groups`, a solver that takes compliant rows gets it
+  // whole that way (its slab–roll part too), the others its parts within one group
+  std::vector<StiffnessEntry> entries;
+  const SlipDirectionRows turn = slip_direction_rows(model_, pairs_);  // any sliding, 3D
+  if (full || !solver_.solves_compliant() || !layout_.set_compliant(turn.rows, turn.stiffness))
+    entries = slip_direction_stiffness(model_, pairs_);
   const bool rows_follow = iteration_sliding_ && lambda_valid_;
   if (rows_follow) {
     const std::vector<StiffnessEntry> rows = contact_geometric_stiffness(
