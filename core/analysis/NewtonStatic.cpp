@@ -457,6 +457,14 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     if (!searched_again || !balanced) unmet = unmet_check(balanced, relative, changed, correction, step);
     searched_again = false;
     if (unmet.empty()) {
+      // a frozen friction direction must oppose its point's slip where the step ends (Friction.h, release_frozen)
+      if (const int released = release_frozen(model_, body_displacements(lf), step_start_, pairs_); released > 0) {
+        unmet = "the residual ratio " + fmt(relative) + " is within its tolerance " + fmt(opt_.tolerance) +
+                ", but the friction check failed: " + std::to_string(released) +
+                " slipping points with a frozen friction direction do not slip against it";
+        changed = released;
+        continue;
+      }
       const ProjectionDrift drift =
           step_sliding_ ? projection_drift(model_, body_displacements(lf), pairs_) : ProjectionDrift{};
       if (drift.moved == 0) return {{}, "", k - 1};

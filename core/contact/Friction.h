@@ -34,6 +34,19 @@ constexpr double kSlipResolution = 1e-6;
 /// PairState::switches of a point whose friction direction is frozen for the rest of the step (update_friction).
 constexpr int kFrozenDirection = 3;
 
+/// PairState::switches of a point released from its frozen direction (release_frozen): it slips against its slip from
+/// then on, and is not frozen again within the step.
+constexpr int kReleasedDirection = 4;
+/// 1 − cos of the angle between a converged frozen direction and −v_t/|v_t| that release_frozen lets pass.
+constexpr double kDirectionTolerance = 1e-6;
+
+/// At a converged iterate: every frozen point (update_friction) whose slip over the step exceeds the resolution and
+/// does not oppose its friction force gets −v_t/|v_t| and slips on from
+/// there (kReleasedDirection) — a step does not end with a point slipping other than against its friction force.
+/// Returns how many were released.
+int release_frozen(const Model& model, const std::vector<Eigen::VectorXd>& u,
+                   const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs);
+
 /// How many active slipping points have their friction direction frozen (update_friction): at a converged step,
 /// points whose slip over the step need not oppose their friction force (its magnitude is still μ N).
 int frozen_directions(const std::vector<PairState>& pairs);
