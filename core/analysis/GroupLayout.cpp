@@ -219,6 +219,32 @@ void GroupLayout::set_contact(const BodyConstraints& contact) {
   sys_.blocks = {ConstraintBlock{ConstraintKind::Contact, 0, mc, {}, false}, std::move(glue)};
 }
 
+bool GroupLayout::set_compliant(const std::vector<ConstraintRow>& rows, const std::vector<double>& stiffness) {
+  for (const ConstraintRow& row : rows)
+    for (const ConstraintTerm& term : row.terms)
+      if (bodies_[term.body].dec) return false;
+  std::vector<std::vector<Eigen::Triplet<double, int>>> t(sys_.groups.size());
+  std::vector<double> compliance;
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const int at = static_cast<int>(compliance.size());
+    bool any = false;
+    for (const ConstraintTerm& term : rows[r].terms) {
+      const auto [g, eq] = group_equation(term.body, term.node, term.comp);
+      if (g < 0 || eq < 0) continue;  // a prescribed dof: it does not move within the iteration
+      t[g].emplace_back(at, eq, term.coef);
+      any = true;
+    }
+    if (any) compliance.push_back(1.0 / stiffness[r]);
+  }
+  const int m = static_cast<int>(compliance.size());
+  for (size_t g = 0; g < sys_.groups.size(); ++g) {
+    sys_.groups[g].C_compliant = SparseMatrix(m, free_dofs(g));
+    sys_.groups[g].C_compliant.setFromTriplets(t[g].begin(), t[g].end());
+  }
+  sys_.compliance = m ? Eigen::VectorXd(Eigen::Map<Eigen::VectorXd>(compliance.data(), m)) : Eigen::VectorXd();
+  return true;
+}
+
 std::vector<Eigen::VectorXd> GroupLayout::body_solution(const BlockSolution& sol) const {
   std::vector<Eigen::VectorXd> u;
   for (const BodyGroups& bg : bodies_) {

@@ -44,6 +44,10 @@ class GroupLayout {
   /// Puts the contact rows (blocks on the bodies' free dofs) in front of the interface rows; with a coupling
   /// (contact.coupling), the groups' C_eq as well.
   void set_contact(const BodyConstraints& contact);
+  /// Stiffness Σ_i k_i c_iᵀc_i (c_i: rows[i] on the bodies' dofs) as compliant rows (BlockSystem::compliance; terms on
+  /// prescribed dofs drop, a row left without terms goes); no rows clears them. False, with nothing set, when a row
+  /// touches a torn body (its dofs lie in several subdomains).
+  bool set_compliant(const std::vector<ConstraintRow>& rows, const std::vector<double>& stiffness);
   /// Free-dof vector of every body from the groups' solution (interface copies averaged).
   std::vector<Eigen::VectorXd> body_solution(const BlockSolution& sol) const;
 

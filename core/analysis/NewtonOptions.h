@@ -111,8 +111,10 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
                "skyline only; none — the rows' change is not linearised. full pays where points slide over a "
                "deformable master (a block pushed along a base: 60 Newton iterations against 94); a sticking point's "
                "term only shifts the multipliers, so on a sticking pass full repeats none "
-               "(docs/BENCHMARKS-NONLINEAR.md). In 3D the same choice holds the turning of a slipping friction "
-               "force's direction (its slip-direction term)"),
+               "(docs/BENCHMARKS-NONLINEAR.md). In 3D the turning of a slipping friction force's direction (its "
+               "slip-direction term) joins slave and master under groups too where the solver can take it — direct "
+               "and skyline in their global matrix, mixed as compliant interface rows (feti: the parts within one "
+               "group); none leaves it out"),
            &N::contact_tangent),
       bind(str("constant_tangents",
                "Newton under the selective update: keep — a group whose tangent cannot change (elastic, small strain) "

@@ -243,16 +243,32 @@ bool NewtonRun::prescribed_moves(size_t g, GroupAssembler::Factors at) const {
 void NewtonRun::add_contact_stiffness(double lf, const std::vector<size_t>& tangent) {
   BlockSystem& sys = layout_.system();
   const bool full = opt_.contact_tangent == ContactTangent::Full;
-  if (full) sys.coupling = SparseMatrix();
+  // The friction direction's turn (3D) joins slave and master under `groups` too wherever the solver can take it: one
+  // global matrix in its coupling, `mixed` as compliant rows. Without its slave–master part Newton on a 3D Coulomb
+  // pass stalls (a 2-cycle under mixed, halving residuals under direct); the others get its parts within one group.
+  const bool joined = full || solver_.assembles_globally();
+  if (joined) sys.coupling = SparseMatrix();
+  layout_.set_compliant({}, {});
   if (opt_.contact_tangent == ContactTangent::None) return;
-  std::vector<StiffnessEntry> entries = slip_direction_stiffness(model_, pairs_);  // any sliding, 3D
-  const bool rows_follow = iteration_sliding_ && lambda_valid_;
-  if (rows_follow) {
-    const std::vector<StiffnessEntry> rows = contact_geometric_stiffness(
-        model_, pairs_, rows_, contact_.kept, lambda_.head(contact_.d.size()), body_displacements(lf));
-    entries.insert(entries.end(), rows.begin(), rows.end());
+  std::vector<StiffnessEntry> turn;  // any sliding, 3D
+  if (joined || !solver_.solves_compliant()) {
+    turn = slip_direction_stiffness(model_, pairs_);
+  } else if (const SlipDirectionRows r = slip_direction_rows(model_, pairs_);
+             !layout_.set_compliant(r.rows, r.stiffness)) {
+    turn = slip_direction_stiffness(model_, pairs_);  // a torn body: its parts within one subdomain
   }
-  if (rows_follow || !entries.empty()) layout_.add_body_stiffness(entries, tangent, full ? &sys.coupling : nullptr);
+  std::vector<StiffnessEntry> rows;
+  const bool rows_follow = iteration_sliding_ && lambda_valid_;
+  if (rows_follow)
+    rows = contact_geometric_stiffness(model_, pairs_, rows_, contact_.kept, lambda_.head(contact_.d.size()),
+                                       body_displacements(lf));
+  if (full) {
+    turn.insert(turn.end(), rows.begin(), rows.end());
+    if (rows_follow || !turn.empty()) layout_.add_body_stiffness(turn, tangent, &sys.coupling);
+    return;
+  }
+  if (!turn.empty()) layout_.add_body_stiffness(turn, tangent, joined ? &sys.coupling : nullptr);
+  if (rows_follow) layout_.add_body_stiffness(rows, tangent, nullptr);
 }
 
 std::vector<double> NewtonRun::group_residuals() const {
@@ -454,6 +470,14 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     if (!searched_again || !balanced) unmet = unmet_check(balanced, relative, changed, correction, step);
     searched_again = false;
     if (unmet.empty()) {
+      // a frozen friction direction must oppose its point's slip where the step ends (Friction.h, release_frozen)
+      if (const int released = release_frozen(model_, body_displacements(lf), step_start_, pairs_); released > 0) {
+        unmet = "the residual ratio " + fmt(relative) + " is within its tolerance " + fmt(opt_.tolerance) +
+                ", but the friction check failed: " + std::to_string(released) +
+                " slipping points with a frozen friction direction do not slip against it";
+        changed = released;
+        continue;
+      }
       const ProjectionDrift drift =
           step_sliding_ ? projection_drift(model_, body_displacements(lf), pairs_) : ProjectionDrift{};
       if (drift.moved == 0) {

@@ -71,14 +71,22 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
       }
       // slipping: the friction force opposes the slip over the step (backward Euler); a slip along the force means
       // the point sticks where the step began. A point at the limit with next to no slip can chatter (stick, over
-      // μN, slip, along...): it gets one way back per step, then slips with the force against its slip.
+      // μN, slip, along...): it gets one way back per step, then slips with the force against its slip — until its
+      // slip turns along the force once more, which freezes its direction for the rest of the step.
       const Eigen::Vector3d start = relative_position(p, c, u_start, model.dim);
       const Eigen::Vector3d v = tangential_part(relative_position(p, c, u, model.dim) - start, c.normal);
       s.slip_step[j] = 0;
-      if (v.norm() <= 1e-12 * p.search_distance) continue;
+      // a slip below the resolution has no direction (its turn −v_t/|v_t| would be round-off's): on the cone with
+      // next to no slip, any direction is Coulomb's, and the last one stays
+      if (v.norm() <= kSlipResolution * p.search_distance || s.switches[j] == kFrozenDirection) continue;
       if (v.dot(s.friction_dir[j]) > 0 && s.switches[j] < 2) {
         s.slip[j] = 0, s.anchor[j] = start;
         ++s.switches[j], ++changed;
+      } else if (v.dot(s.friction_dir[j]) > 0 && s.switches[j] < kReleasedDirection) {
+        // it came back to slip and now slips along its force again: no slip against it holds this point (it
+        // would stick, but sticking needs more than μN). Turned over, μN would throw it to and fro with growing
+        // slips (3D rolling pass, docs/BENCHMARKS-ROLLING.md), so its direction stays for the rest of the step.
+        s.switches[j] = kFrozenDirection;
       } else {
         s.friction_dir[j] = -v.normalized(), s.slip_step[j] = v.norm();
       }
@@ -89,6 +97,34 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
     }
   }
   return changed;
+}
+
+int frozen_directions(const std::vector<PairState>& pairs) {
+  int n = 0;
+  for (const PairState& s : pairs)
+    for (size_t j = 0; j < s.points.size(); ++j) n += s.active[j] && s.slip[j] && s.switches[j] == kFrozenDirection;
+  return n;
+}
+
+int release_frozen(const Model& model, const std::vector<Eigen::VectorXd>& u,
+                   const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs) {
+  int released = 0;
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    PairState& s = pairs[i];
+    for (size_t j = 0; j < s.points.size(); ++j) {
+      if (!s.active[j] || !s.slip[j] || s.switches[j] != kFrozenDirection) continue;
+      const ContactPoint& c = s.points[j];
+      const Eigen::Vector3d v = tangential_part(
+          relative_position(p, c, u, model.dim) - relative_position(p, c, u_start, model.dim), c.normal);
+      if (v.norm() <= kSlipResolution * p.search_distance) continue;  // next to no slip: any direction on the cone
+      if (-v.normalized().dot(friction_direction(s, j)) >= 1 - kDirectionTolerance) continue;
+      s.friction_dir[j] = -v.normalized(), s.slip_step[j] = v.norm();
+      s.switches[j] = kReleasedDirection;
+      ++released;
+    }
+  }
+  return released;
 }
 
 bool can_slip(const ContactPair& p) {

@@ -16,13 +16,40 @@ namespace rollsim {
 /// now (u) and at the start of the step (u_start; every dof of every body, node-major). Records every active
 /// point's normal force, and a slipping point's slip over the step |v_t| beside the direction −v_t/|v_t| it sets
 /// (PairState::slip_step); returns the number of points that changed between stick and slip. A point that went back
-/// from slip to stick once in the step and slips again stays slipping for the rest of the step (no chatter). A pair
+/// from slip to stick once in the step and slips again stays slipping for the rest of the step (no chatter); when its
+/// slip then turns along its friction force again, its direction is frozen for the rest of the step (PairState::
+/// switches = kFrozenDirection: no slip against any direction holds it, and a direction turned over at every
+/// iteration throws it to and fro with growing slips — the 3D rolling pass's entry and exit rows). A pair
 /// that holds its slave body (ContactPair::holds_slave) keeps the least overloaded of the points that would start to
 /// slip sticking when no other point sticks: with every point slipping nothing would hold the body (a rolling slab
 /// whose friction cannot draw it in: its tangential force then stays above the limit).
 int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
                     const std::vector<Eigen::VectorXd>& u, const std::vector<Eigen::VectorXd>& u_start,
                     std::vector<PairState>& pairs);
+
+/// The slip over a step below which a slipping point's direction stays as it was, as a fraction of its pair's search
+/// distance: there −v_t/|v_t| would turn with round-off, and the direction's stiffness F/|v_t| grows without bound.
+constexpr double kSlipResolution = 1e-6;
+
+/// PairState::switches of a point whose friction direction is frozen for the rest of the step (update_friction).
+constexpr int kFrozenDirection = 3;
+
+/// PairState::switches of a point released from its frozen direction (release_frozen): it slips against its slip from
+/// then on, and is not frozen again within the step.
+constexpr int kReleasedDirection = 4;
+/// 1 − cos of the angle between a converged frozen direction and −v_t/|v_t| that release_frozen lets pass.
+constexpr double kDirectionTolerance = 1e-6;
+
+/// At a converged iterate: every frozen point (update_friction) whose slip over the step exceeds the resolution and
+/// does not oppose its friction force gets −v_t/|v_t| and slips on from
+/// there (kReleasedDirection) — a step does not end with a point slipping other than against its friction force.
+/// Returns how many were released.
+int release_frozen(const Model& model, const std::vector<Eigen::VectorXd>& u,
+                   const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs);
+
+/// How many active slipping points have their friction direction frozen (update_friction): at a converged step,
+/// points whose slip over the step need not oppose their friction force (its magnitude is still μ N).
+int frozen_directions(const std::vector<PairState>& pairs);
 
 /// A step begins: every point may switch between stick and slip, in and out again (the chatter rules of
 /// update_friction and update_active_set); a slipping point's direction is the last step's (no slip_step).

@@ -21,4 +21,14 @@ namespace rollsim {
 /// slave–master part joins two bodies (the entries say which). Every entry (i, j) has its (j, i).
 std::vector<StiffnessEntry> slip_direction_stiffness(const Model& model, const std::vector<PairState>& pairs);
 
+/// The same K_d as one row per slipping point and its stiffness k = F / |v_t|: K_d = Σ k cᵀc with c the row's
+/// coefficients wᵀR̃ (rows[i].dir = w). A solver that cannot join two groups' stiffness takes K_d this way, as rows
+/// c δu − μ_i / k_i = 0 with a multiplier μ_i of their own (a compliant constraint: BlockSystem::compliance), which
+/// holds the slave–master part that its groups' blocks cannot.
+struct SlipDirectionRows {
+  std::vector<ConstraintRow> rows;
+  std::vector<double> stiffness;
+};
+SlipDirectionRows slip_direction_rows(const Model& model, const std::vector<PairState>& pairs);
+
 }  // namespace rollsim

@@ -32,6 +32,9 @@ struct Group {
   // Coulomb point's friction force μ λ_n moves with its normal multiplier (contact/Friction slip_coupling), which
   // makes the system unsymmetric. Empty when it is C; only strategies that solve_unsymmetric() get one.
   SparseMatrix C_eq;
+  // Compliant rows (BlockSystem::compliance) × free dofs: a stiffness that joins this group to another, written as
+  // rows with multipliers of their own (the 3D friction direction's turn, contact/FrictionStiffness); 0 × n: none.
+  SparseMatrix C_compliant;
   long version = 0;   // bumped by mark_updated (solve/UpdatePolicy) when K is re-assembled: strategies refactor
                       // a group only then
   Eigen::MatrixXd R;  // basis of ker K_g (rigid modes left free by the supports); n × 0 when K_g is regular
@@ -73,6 +76,11 @@ struct BlockSystem {
   // `contact_tangent: full`): every group's free dofs one after the other; empty (0 × 0) when none. Only strategies
   // that assemble one global matrix (SolverStrategy::assembles_globally) take it; a change refactors that matrix.
   SparseMatrix coupling;
+  // Per compliant row (the groups' C_compliant): 1/k of the stiffness k cᵀc it stands for, with c the row. The rows
+  // come after every row of d, with multipliers μ that no caller sees: Σ_g C_compliant,g u_g − μ / k = 0, the groups'
+  // equations K_g u_g + C_gᵀλ + C_compliant,gᵀ μ = f_g — so the groups' solution u is that of K + Σ k cᵀc. Empty:
+  // none. Only strategies that solves_compliant() take them.
+  Eigen::VectorXd compliance;
   // A guess of λ (the last Newton iteration's multipliers of the rows that stay, 0 for new rows) where iterative
   // strategies start their interface solve; empty: none (they start from the least-norm λ with Gᵀλ = e).
   Eigen::VectorXd lambda_start;

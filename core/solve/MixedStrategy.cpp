@@ -95,11 +95,13 @@ InterfaceProblem MixedStrategy::interface_problem(const BlockSystem& sys, const 
     p.Gt.resize(static_cast<int>(m), col);
     p.Gt.setFromTriplets(tt.begin(), tt.end());
   }
-  p.F = [this, &sys](const Eigen::VectorXd& lambda) {  // F λ = Σ C_g K_g⁺ C_eq,gᵀ λ
-    return sum_over_groups(sys, [&](size_t g) -> Eigen::VectorXd {
+  p.F = [this, &sys](const Eigen::VectorXd& lambda) {  // F λ = Σ C_g K_g⁺ C_eq,gᵀ λ (+ compliance λ)
+    Eigen::VectorXd y = sum_over_groups(sys, [&](size_t g) -> Eigen::VectorXd {
       const Group& grp = sys.groups[g];
       return groups_[g].apply(grp.equation_C().transpose() * lambda);
     });
+    if (sys.compliance.size() == y.size()) y += sys.compliance.cwiseProduct(lambda);
+    return y;
   };
   p.unsymmetric = unsymmetric;
   return p;
@@ -137,6 +139,7 @@ Eigen::MatrixXd MixedStrategy::formed_interface(const BlockSystem& sys) {
   Eigen::MatrixXd F = Eigen::MatrixXd::Zero(m, m);
   for (const Eigen::MatrixXd& p : parts)  // in group order: the same sum for any thread count
     if (p.size()) F += p;
+  if (sys.compliance.size() == m) F.diagonal() += sys.compliance;
   return F;
 }
 
@@ -164,7 +167,46 @@ ProjectedCGResult MixedStrategy::solve_interface(const BlockSystem& sys, Interfa
   return krylov_gmres ? projected_gmres(problem, cg, observer) : projected_cg(problem, cg, observer);
 }
 
+namespace {
+/// [top; bottom] for two blocks with the same columns.
+SparseMatrix stack(const SparseMatrix& top, const SparseMatrix& bottom) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int j = 0; j < top.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(top, j); it; ++it) t.emplace_back(it.row(), j, it.value());
+  for (int j = 0; j < bottom.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(bottom, j); it; ++it)
+      t.emplace_back(static_cast<int>(top.rows() + it.row()), j, it.value());
+  SparseMatrix S(static_cast<int>(top.rows() + bottom.rows()), top.cols());
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+}  // namespace
+
 BlockSolution MixedStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
+  if (sys.compliance.size() == 0) return solve_plain(sys, observer);
+  // compliant rows: rows of the interface after every other, their multipliers μ with F's diagonal + 1/k — then
+  // dropped from the answer, since no caller knows them
+  BlockSystem aug = sys;
+  const long m = sys.num_multipliers(), mc = sys.compliance.size();
+  for (Group& g : aug.groups) {
+    g.C = stack(SparseMatrix(g.C), g.C_compliant);
+    if (g.C_eq.rows() > 0) g.C_eq = stack(SparseMatrix(g.C_eq), g.C_compliant);
+    g.C_compliant = SparseMatrix(0, g.C.cols());
+  }
+  aug.d = Eigen::VectorXd::Zero(m + mc);
+  aug.d.head(m) = sys.d;
+  aug.compliance = Eigen::VectorXd::Zero(m + mc);
+  aug.compliance.tail(mc) = sys.compliance;
+  if (sys.lambda_start.size() == m) {
+    aug.lambda_start = Eigen::VectorXd::Zero(m + mc);
+    aug.lambda_start.head(m) = sys.lambda_start;
+  }
+  BlockSolution out = solve_plain(aug, observer);
+  out.lambda = Eigen::VectorXd(out.lambda.head(m));
+  return out;
+}
+
+BlockSolution MixedStrategy::solve_plain(const BlockSystem& sys, AnalysisObserver* observer) {
   // Several groups: the threads go to the groups and BLAS / CHOLMOD's OpenMP stay on one, whatever --threads is,
   // so that results are bit-identical for any thread count and `--threads 1` uses one core. One group: the
   // libraries keep the threads.

@@ -24,6 +24,8 @@ class MixedStrategy final : public SolverStrategy {
   const SolverOptions& options() const override { return options_; }
   /// A group with C_eq (slipping Coulomb friction) makes the interface unsymmetric: projected GMRES solves it.
   bool solves_unsymmetric() const override { return true; }
+  /// `mixed` (not `feti`): compliant rows join its interface, each multiplier with its compliance on F's diagonal.
+  bool solves_compliant() const override { return !subdomains_; }
   /// λ is as accurate as the interface CG's relative tolerance (dense: exact, as `direct`'s)
   double multiplier_tolerance() const override {
     return options_.interface_solver == InterfaceSolver::Dense ? SolverStrategy::multiplier_tolerance()
@@ -36,6 +38,8 @@ class MixedStrategy final : public SolverStrategy {
 
  private:
   void factorize_changed(const BlockSystem& sys, AnalysisObserver* observer);
+  /// The solve of a system without compliant rows (solve() adds them to the interface first).
+  BlockSolution solve_plain(const BlockSystem& system, AnalysisObserver* observer);
   InterfaceProblem interface_problem(const BlockSystem& sys, const std::vector<Eigen::VectorXd>& Kf);
   /// F = Σ_g C_g K_g⁺ C_eq,gᵀ formed (the `dense` interface solver), each group's part concurrently
   Eigen::MatrixXd formed_interface(const BlockSystem& sys);

@@ -38,6 +38,9 @@ class SolverStrategy {
   virtual bool solves_unsymmetric() const { return false; }
   /// True when it assembles one global matrix, which can take stiffness joining two groups (BlockSystem::coupling).
   virtual bool assembles_globally() const { return false; }
+  /// True when it takes compliant rows (BlockSystem::compliance: stiffness joining two groups, as rows with a
+  /// multiplier of their own) on a system without torn bodies.
+  virtual bool solves_compliant() const { return false; }
   /// Why the strategy cannot solve a model with contact pairs ("" when it can): asked before the first solve, since
   /// a frictionless pair may start with no active row.
   virtual std::string contact_refusal() const { return ""; }
