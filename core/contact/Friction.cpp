@@ -99,13 +99,6 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
   return changed;
 }
 
-int frozen_directions(const std::vector<PairState>& pairs) {
-  int n = 0;
-  for (const PairState& s : pairs)
-    for (size_t j = 0; j < s.points.size(); ++j) n += s.active[j] && s.slip[j] && s.switches[j] == kFrozenDirection;
-  return n;
-}
-
 int release_frozen(const Model& model, const std::vector<Eigen::VectorXd>& u,
                    const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs) {
   int released = 0;

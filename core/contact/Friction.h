@@ -47,10 +47,6 @@ constexpr double kDirectionTolerance = 1e-6;
 int release_frozen(const Model& model, const std::vector<Eigen::VectorXd>& u,
                    const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs);
 
-/// How many active slipping points have their friction direction frozen (update_friction): at a converged step,
-/// points whose slip over the step need not oppose their friction force (its magnitude is still μ N).
-int frozen_directions(const std::vector<PairState>& pairs);
-
 /// A step begins: every point may switch between stick and slip, in and out again (the chatter rules of
 /// update_friction and update_active_set); a slipping point's direction is the last step's (no slip_step).
 void new_step(std::vector<PairState>& pairs);

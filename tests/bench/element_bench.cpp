@@ -11,35 +11,23 @@
 #include <cstring>
 #include <vector>
 
+#include "../core/partition/PartitionFixtures.h"
 #include "analysis/GroupLayout.h"
 #include "base/DgemmPeak.h"
-#include "mesh/StructuredBlock.h"
 
 using namespace rollsim;
 
 namespace {
+/// A held finite-strain J2 block (the face x = 0 held: a floating one adds its kernel's update to the assembly).
 Model block(int dim) {
-  BlockSpec spec;
-  spec.dim = dim;
-  spec.n = dim == 2 ? std::array<int, 3>{80, 40, 1} : std::array<int, 3>{20, 16, 10};
-  spec.size = {double(spec.n[0]), double(spec.n[1]), double(spec.n[2])};
-  Model m;
-  m.dim = dim;
-  Body b;
-  b.name = "block";
-  b.mesh = make_block(spec);
+  Model m = test::block_model(dim, dim == 2 ? std::array<int, 3>{80, 40, 1} : std::array<int, 3>{20, 16, 10});
+  Body& b = m.bodies[0];
   b.material.E = 200e3;
-  b.material.nu = 0.3;
   b.material.yield_stress = 250;
   b.material.hardening_modulus = 2000;
   b.kinematics = Kinematics::Finite;
   b.formulation = Formulation::BBar;
-  DisplacementBC held;  // the face x = 0 held: a supported body (a floating one adds its kernel's update)
-  for (int n = 0; n < b.mesh.num_nodes(); ++n)
-    if (b.mesh.nodes[n][0] == 0.0) held.nodes.push_back(n);
-  for (int c = 0; c < dim; ++c) held.value[c] = 0.0;
-  m.displacements.push_back(held);
-  m.bodies.push_back(b);
+  test::support(m, test::nodes_in_box(m, {0, 0, 0}, {0, 1e9, 1e9}));
   return m;
 }
 
