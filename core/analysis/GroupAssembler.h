@@ -57,6 +57,10 @@ class GroupAssembler {
   };
   InvertedElement assemble_newton(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                                   const std::vector<Eigen::VectorXd>& u_free, Factors at, BlockSystem& sys);
+  /// The time of the step the next assemblies are for [s] (a rate-dependent material's Δt; 0: no time).
+  void set_step_time(double dt) {
+    for (IntegrationState& s : states_) s.dt = dt;
+  }
   /// Threads for each group's element kernels (fem/Assembler: the result does not depend on the count).
   void set_threads(int threads) { threads_ = threads; }
   /// The groups whose tangents this process assembles (default: all). Under `petsc` every MPI rank runs the Newton

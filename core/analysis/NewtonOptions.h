@@ -62,6 +62,7 @@ struct NewtonOptions {
   ContactTangent contact_tangent = ContactTangent::Groups;
   ConstantTangents constant_tangents = ConstantTangents::Keep;
   Predictor predictor = Predictor::Tangent;
+  double duration = 0;  // the analysis's time [s]: a step of load-factor span Δλ lasts Δλ × duration (0: no time)
   // how the user makes the steps smaller, for a diverged run's advice (a process's own step: "a smaller
   // process.travel_increment (now 1 mm)"); empty: more analysis.increments
   std::string smaller_steps;
@@ -96,6 +97,11 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
                "where a zero strain increment returns elastically, so a flowing body starts each step with its "
                "elastic stiffness (docs/BENCHMARKS-ROLLING.md: what made `--update always` fail on the rolling pass)"),
            &N::first_tangent),
+      bind(non_negative("duration", "s",
+                        "the time the analysis takes: a step lasts its share of it (a cut-back halves it with the "
+                        "step), so that a rate-dependent flow stress (materials[].flow_stress) sees the plastic "
+                        "strain's rate; 0: quasi-static, no time (a rolling pass sets it from process.roll_speed)"),
+           &N::duration),
       bind(str("predictor",
                "Newton: where a step's first iteration starts — tangent: the converged state, the prescribed motion's "
                "increment carried into the body by the tangent assembled there (elastic where a zero strain increment "

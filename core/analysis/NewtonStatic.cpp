@@ -405,6 +405,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
   step_start_ = body_displacements(from);
   const bool extrapolated = extrapolate(lf - from);
   new_step(pairs_);
+  layout_.assembler().set_step_time((lf - from) * opt_.duration);
   const std::vector<size_t> all = all_groups(sys);
   // the residual's scale; from an extrapolated start, at least the last step's scaled to this one: how far the step
   // is from balance does not depend on how well it was predicted, and the tolerance stays the same force

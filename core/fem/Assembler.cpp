@@ -192,7 +192,7 @@ int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::Vector
     for (int k = 0; k < nd * nd; ++k)
       if (s[k] >= 0) val[s[k]] += Ke[k];
   };
-  const auto material = make_material(body_.material);
+  const auto material = make_material(body_.material, state.dt);
   if (m.dim == 2) return newton_elements<2>({body_, *material, u, v, K != nullptr, state}, threads_, scatter);
   return newton_elements<3>({body_, *material, u, v, K != nullptr, state}, threads_, scatter);
 }

@@ -15,6 +15,7 @@ namespace rollsim {
 struct IntegrationState {
   int per_element = 0;  // Gauss points × the material's state_size()
   std::vector<double> committed, trial;
+  double dt = 0;  // the time from the committed to the trial state [s] (0: quasi-static, no time)
 
   /// Zero state for every element of `body` (empty for a material without state).
   static IntegrationState initial(const Body& body);

@@ -22,26 +22,34 @@ Tangent6 deviatoric_projector() {
 double contract(const Voigt6& s) { return s.head<3>().squaredNorm() + 2.0 * s.tail<3>().squaredNorm(); }
 }  // namespace
 
-J2Plasticity::J2Plasticity(const MaterialData& data) : data_(data) {
+J2Plasticity::J2Plasticity(const MaterialData& data, double dt)
+    : flow_(make_flow_stress(data)),
+      dt_(dt),
+      temperature_(data.temperature),
+      frozen_(flow_->rate_dependent() && !(dt > 0)) {
   const LinearElastic e(data.E, data.nu);
   G_ = e.mu();
   K_ = e.lambda() + 2.0 * G_ / 3.0;
   elastic_ = e.tangent3d();
 }
 
-double J2Plasticity::yield_stress(double a) const {
-  double s = data_.yield_stress + data_.hardening_modulus * a;
-  if (data_.saturation_stress > data_.yield_stress)
-    s += (data_.saturation_stress - data_.yield_stress) * (1.0 - std::exp(-data_.saturation_exponent * a));
-  return s;
+FlowStressPoint J2Plasticity::yield_stress(double alpha, double increment) const {
+  FlowStressPoint p = flow_->at(alpha, dt_ > 0 ? increment / dt_ : 0.0, temperature_);
+  p.d_strain += dt_ > 0 ? p.d_rate / dt_ : 0.0;  // along Δα: the rate moves with it
+  return p;
 }
 
-double J2Plasticity::hardening_slope(double a) const {
-  double h = data_.hardening_modulus;
-  if (data_.saturation_stress > data_.yield_stress)
-    h += (data_.saturation_stress - data_.yield_stress) * data_.saturation_exponent *
-         std::exp(-data_.saturation_exponent * a);
-  return h;
+double J2Plasticity::plastic_increment(double q, double alpha_n) const {
+  double dg = 0.0, lo = 0.0, hi = q / (3.0 * G_);  // the root lies between: σ_y > 0
+  for (int it = 0; it < 100; ++it) {
+    const FlowStressPoint y = yield_stress(alpha_n + dg, dg);
+    const double r = q - 3.0 * G_ * dg - y.stress;
+    const double next = dg + r / (3.0 * G_ + y.d_strain);
+    if (std::abs(r) <= 1e-13 * q) return next;
+    (r > 0 ? lo : hi) = dg;
+    dg = next > lo && next < hi ? next : 0.5 * (lo + hi);
+  }
+  return dg;
 }
 
 void J2Plasticity::update(const Deformation& d, const double* committed, double* trial, Voigt6& stress,
@@ -57,15 +65,10 @@ void J2Plasticity::update(const Deformation& d, const double* committed, double*
   const double p = stress.head<3>().sum() / 3.0;
   s.head<3>().array() -= p;
   const double q = std::sqrt(1.5 * contract(s));  // von Mises of the trial stress
-  if (q - yield_stress(alpha_n) <= 1e-12 * yield_stress(alpha_n)) return;
-  // Δγ from q − 3G Δγ − σ_y(α_n + Δγ) = 0 (Newton; one step for linear hardening)
-  double dg = 0.0;
-  for (int it = 0; it < 50; ++it) {
-    const double r = q - 3.0 * G_ * dg - yield_stress(alpha_n + dg);
-    const double slope = 3.0 * G_ + hardening_slope(alpha_n + dg);
-    dg += r / slope;
-    if (std::abs(r) <= 1e-13 * q) break;
-  }
+  const double y0 = yield_stress(alpha_n).stress;
+  if (frozen_ || q - y0 <= 1e-12 * y0) return;
+  // Δγ from q − 3G Δγ − σ_y(α_n + Δγ) = 0 (one Newton step for linear hardening)
+  const double dg = plastic_increment(q, alpha_n);
   if (!(dg > 0.0) || !std::isfinite(dg)) throw std::runtime_error("J2 return mapping failed to converge");
   const Voigt6 n = s / std::sqrt(contract(s));  // unit normal, tensor components
   const double scale = 1.0 - 3.0 * G_ * dg / q;
@@ -76,7 +79,7 @@ void J2Plasticity::update(const Deformation& d, const double* committed, double*
   dep.tail<3>() *= 2.0;
   ep = ep_n + dep;
   trial[kAlpha] = alpha_n + dg;
-  const double H = hardening_slope(alpha_n + dg);
+  const double H = yield_stress(alpha_n + dg, dg).d_strain;
   tangent = elastic_ - (6.0 * G_ * G_ * dg / q) * deviatoric_projector() +
             6.0 * G_ * G_ * (dg / q - 1.0 / (3.0 * G_ + H)) * (n * n.transpose());
 }

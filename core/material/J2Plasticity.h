@@ -2,14 +2,22 @@
 // J2 (von Mises) plasticity with isotropic hardening, small strain: radial return and its consistent (algorithmic)
 // tangent (Simo & Hughes 1998, box 3.2; de Souza Neto, Perić & Owen 2008, box 7.4). The return is the one the
 // finite-strain layer applies to logarithmic elastic strains (Simo 1992's exponential map), so this class is its
-// kernel. State per integration point: plastic strain (6, engineering shears) and equivalent plastic strain α.
+// kernel. State per integration point: plastic strain (6, engineering shears) and equivalent plastic strain α. The
+// yield stress is a flow stress law σ_f(α, α̇, T) (material/FlowStress): with a rate-dependent one, α̇ = Δα/Δt over
+// the increment's time Δt, and the return's scalar equation and consistent tangent take dσ_f/dΔα = ∂σ_f/∂α +
+// ∂σ_f/∂α̇ / Δt (the body's temperature is fixed over the increment: no temperature term).
+#include <memory>
+
+#include "material/FlowStress.h"
 #include "material/Material.h"
 
 namespace rollsim {
 
 class J2Plasticity final : public Material {
  public:
-  explicit J2Plasticity(const MaterialData& data);
+  /// `dt`: the increment's time [s]. With a rate-dependent law and dt = 0 no time passes: the state is frozen and
+  /// the response elastic from it (what recovering the stresses of a converged state asks).
+  explicit J2Plasticity(const MaterialData& data, double dt = 0);
   std::string name() const override { return "j2_plasticity"; }
   int state_size() const override { return kStateSize; }
   int equivalent_plastic_strain_index() const override { return kAlpha; }
@@ -21,15 +29,20 @@ class J2Plasticity final : public Material {
   void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
                      FiniteTangent* tangent) const override;
 
-  /// σ_y(α) and its slope dσ_y/dα [stress].
-  double yield_stress(double alpha) const;
-  double hardening_slope(double alpha) const;
+  /// σ_y at equivalent plastic strain α reached by Δα in this increment, and its slope dσ_y/dΔα [stress].
+  FlowStressPoint yield_stress(double alpha, double increment = 0) const;
 
   static constexpr int kStateSize = 7;  // ε_p (xx, yy, zz, γxy, γyz, γzx), α
   static constexpr int kAlpha = 6;
 
  private:
-  MaterialData data_;
+  /// Δα of the return from the trial von Mises stress q: q − 3G Δα = σ_y(α_n + Δα), Newton safeguarded by bisection
+  /// (a rate-dependent σ_y rises steeply from zero rate).
+  double plastic_increment(double q, double alpha_n) const;
+
+  std::unique_ptr<FlowStress> flow_;
+  double dt_, temperature_;
+  bool frozen_;  // rate-dependent without time: no return
   double G_, K_;
   Tangent6 elastic_;
 };

@@ -50,8 +50,8 @@ void Material::update_finite(const Eigen::Matrix3d& F, const double* committed, 
   if (tangent) *tangent = {modulus, b};
 }
 
-std::unique_ptr<Material> make_material(const MaterialData& data) {
-  if (data.plastic()) return std::make_unique<J2Plasticity>(data);
+std::unique_ptr<Material> make_material(const MaterialData& data, double dt) {
+  if (data.plastic()) return std::make_unique<J2Plasticity>(data, dt);
   return std::make_unique<LinearElastic>(data.E, data.nu);
 }
 

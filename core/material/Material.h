@@ -50,8 +50,9 @@ class Material {
   Tangent6 initial_tangent() const;
 };
 
-/// The behaviour for `data`: J2Plasticity when it has a yield stress, else LinearElastic.
-std::unique_ptr<Material> make_material(const MaterialData& data);
+/// The behaviour for `data`: J2Plasticity when it is plastic (a yield stress or a flow stress law), else
+/// LinearElastic; `dt` is the time of the increment it is updated over [s] (0: none, as for a stress recovery).
+std::unique_ptr<Material> make_material(const MaterialData& data, double dt = 0);
 
 /// ½ ln(b) of a symmetric positive definite b given by its spectrum, as a Voigt strain (engineering shears).
 Voigt6 log_strain(const Spectrum& b);

@@ -10,6 +10,7 @@
 #include "partition/PartitionCheck.h"
 #include "partition/PartitionSpec.h"
 #include "process/ProcessRegistry.h"
+#include "project/Materials.h"
 #include "project/MeshFactory.h"
 #include "project/ModelLimits.h"
 #include "project/PrescribedConflicts.h"
@@ -227,42 +228,10 @@ void check_supports(const json& project, std::vector<Issue>& issues) {
 
 }  // namespace
 
-MaterialData material_data(const json& mat) {
-  MaterialData m;
-  m.E = mat.at("E").get<double>();
-  m.nu = mat.at("nu").get<double>();
-  m.yield_stress = mat.value("yield_stress", 0.0);
-  m.hardening_modulus = mat.value("hardening_modulus", 0.0);
-  m.saturation_stress = mat.value("saturation_stress", 0.0);
-  m.saturation_exponent = mat.value("saturation_exponent", 0.0);
-  return m;
-}
-
-void check_plasticity(const json& materials, std::vector<Issue>& issues) {
-  for (size_t i = 0; i < materials.size(); ++i) {
-    const json& m = materials[i];
-    const std::string path = at("materials", i);
-    const bool has_yield = m.contains("yield_stress");
-    if (m.value("model", "linear_elastic") == "j2_plasticity" && !has_yield)
-      issues.push_back({path + ".yield_stress", "j2_plasticity needs a yield stress"});
-    if (m.value("model", "") == "linear_elastic" && has_yield)
-      issues.push_back(
-          {path + ".model", "linear_elastic has no yield stress: remove yield_stress or say j2_plasticity"});
-    const bool plastic_fields = m.contains("saturation_stress") || m.value("hardening_modulus", 0.0) > 0 ||
-                                m.value("saturation_exponent", 0.0) > 0;
-    if (!has_yield && plastic_fields)
-      issues.push_back({path + ".yield_stress", "hardening is given but no yield stress: the material is elastic"});
-    if (has_yield && m.contains("saturation_stress") &&
-        m["saturation_stress"].get<double>() < m["yield_stress"].get<double>())
-      issues.push_back({path + ".saturation_stress",
-                        "must be at least yield_stress (" + std::to_string(m["yield_stress"].get<double>()) +
-                            "): a saturation below the initial yield stress would soften the material"});
-  }
-}
-
 std::string nonlinear_because(const json& d) {
   for (const json& m : d.at("materials"))
-    if (m.contains("yield_stress")) return "material '" + m.value("name", "") + "' has a yield stress";
+    if (m.contains("yield_stress") || m.contains("flow_stress"))
+      return "material '" + m.value("name", "") + "' is plastic";
   for (const json& b : d.at("bodies"))
     if (b.value("kinematics", "small") == "finite") return "body '" + b.value("name", "") + "' has finite kinematics";
   for (const json& c : d.value("contacts", json::array()))
@@ -294,7 +263,7 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
   if (d.at("materials").empty()) issues.push_back({"materials", "no material: give `materials` or a `process`"});
   check_project_name(d, issues);
   check_unique(d.at("materials"), "materials", issues);
-  check_plasticity(d.at("materials"), issues);
+  check_materials(d, issues);
   check_analysis_type(d, issues);
   check_unique(d.at("bodies"), "bodies", issues);
   check_unique(d.at("probes"), "probes", issues);
@@ -572,6 +541,7 @@ Model build_model(const Project& project) {
     model.probes.push_back(std::move(probe));
   }
   for (std::string& w : conditioning_warnings(model)) model.warnings.push_back(std::move(w));
+  for (std::string& w : material_warnings(d)) model.warnings.push_back(std::move(w));
   return model;
 }
 

@@ -5,6 +5,7 @@
 #include "analysis/NewtonOptions.h"
 #include "base/SchemaFields.h"
 #include "io/OutputFields.h"
+#include "material/FlowStress.h"
 #include "process/ProcessRegistry.h"
 #include "project/RunProject.h"
 #include "solve/SolverStrategy.h"
@@ -249,7 +250,8 @@ const ObjectSchema kMaterial{
     "Isotropic material: linear elastic, or elastoplastic (J2, isotropic hardening) when it has a yield stress: "
     "σ_y(α) = yield_stress + hardening_modulus·α + (saturation_stress − yield_stress)(1 − "
     "exp(−saturation_exponent·α)), "
-    "α the equivalent plastic strain. A plastic body is solved by the Newton analysis.",
+    "α the equivalent plastic strain; or when it has a flow_stress law of strain, strain rate and temperature (hot "
+    "forming). A plastic body is solved by the Newton analysis.",
     {req(str("name", "material name, unique")),
      [] {
        Field f = choice("model", {"linear_elastic", "j2_plasticity"}, "",
@@ -261,7 +263,18 @@ const ObjectSchema kMaterial{
      positive("yield_stress", "stress", "initial yield stress σ_0 (J2 plasticity)"),
      def(non_negative("hardening_modulus", "stress", "linear isotropic hardening modulus H"), 0.0),
      positive("saturation_stress", "stress", "saturation stress σ_∞ ≥ σ_0 of the exponential hardening term"),
-     def(non_negative("saturation_exponent", "-", "exponent δ of the saturation term"), 0.0)},
+     def(non_negative("saturation_exponent", "-", "exponent δ of the saturation term"), 0.0),
+     [] {
+       Field f = object("flow_stress", flow_stress_schema(),
+                        "a flow stress law σ_f(α, α̇, T) instead of yield_stress and its hardening (J2 plasticity)");
+       f.default_value = json();
+       return f;
+     }(),
+     def(bounded(num("temperature", "°C",
+                     "the temperature of the bodies made of it, uniform and constant (what a flow_stress law is "
+                     "taken at)"),
+                 -273.15, 5000),
+         20.0)},
     "",
     {}};
 

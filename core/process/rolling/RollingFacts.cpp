@@ -46,10 +46,11 @@ void loads(const RollingPass& pass, const RollingTheory& t, int dim, std::vector
 void speed(const RollingPass& pass, const RollingTheory& t, int dim, std::vector<ProcessFact>& facts) {
   if (pass.rpm <= 0) return;
   const double omega = pass.rpm * 2 * M_PI / 60, v = omega * pass.radius;  // [1/s], [mm/s]
-  const double strain = std::log(pass.entry_thickness / pass.exit_thickness);
+  const double strain = 2 / std::sqrt(3.0) * std::log(pass.entry_thickness / pass.exit_thickness);
   facts.push_back({"roll surface speed", format("%.3g m/s", v / 1e3), format("ωR at %g rpm", pass.rpm)});
   facts.push_back({"time in the roll gap", format("%.3g ms", 1e3 * t.contact_length / v), "L / v"});
-  facts.push_back({"mean strain rate", format("%.3g 1/s", strain * v / t.contact_length), "ln(h0/h1) · v / L"});
+  facts.push_back({"mean strain rate", format("%.3g 1/s", strain * v / t.contact_length),
+                   "equivalent (von Mises, plane strain): (2/√3) ln(h0/h1) · v / L"});
   facts.push_back({"time of the pass", format("%.3g s", std::min(pass.travel, travel_through(pass)) / v),
                    "the travel the run covers / v"});
   const double power = t.sims_torque * omega / 1e6;  // [kW] (N·mm/s = 1e-6 kW)
@@ -83,6 +84,11 @@ std::vector<ProcessFact> rolling_facts(const RollingPass& pass, int dim) {
   facts.push_back({"contact length", format("%.1f mm", t.contact_length), "projected arc √(R Δh)"});
   facts.push_back(bite(pass, t.bite_angle));
   profile(pass, facts);
+  if (!pass.flow_law.empty())
+    facts.push_back(
+        {"slab flow stress", format("%.4g MPa", pass.flow_stress),
+         format("the %s law's mean over ε 0 → %.3f at ε̇ %.3g 1/s and %g °C (Sims's k = σ̄/√3)", pass.flow_law.c_str(),
+                2 / std::sqrt(3.0) * std::log(h0 / h1), pass.mean_strain_rate, pass.temperature)});
   loads(pass, t, dim, facts);
   speed(pass, t, dim, facts);
   const double through = travel_through(pass);

@@ -23,6 +23,7 @@ const std::vector<RollingMeasure>& rolling_measures() {
       {{"mean_spread", "spread of the mean width", "mm"}, "mm", &R::mean_spread},
       {{"volume_change", "slab volume change", "-"}, "-", &R::volume_change},
       {{"mean_pressure", "mean roll pressure", "MPa"}, "MPa", &R::mean_pressure},
+      {{"roll_power", "roll power per roll", "kW/mm (per unit width)"}, "kW", &R::roll_power},
   };
   return table;
 }
@@ -203,6 +204,7 @@ RollingIncrement roll_load(const RollingPass& pass, const Model& model, const In
   hub_reaction(model, pass, inc.bodies[static_cast<size_t>(pass.roll)], r);
   r.roll_force *= symmetry;
   r.roll_torque *= symmetry;
+  r.roll_power = r.roll_torque * pass.rpm * 2 * M_PI / 60 * 1e-6;  // N·mm · 1/s = 1e-6 kW
   return r;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // A rolling pass as the model knows it (built from the project's `process`): which bodies are the slab and the roll,
 // which prescribed motion turns the roll, and the nominal pass geometry the rolling quantities are measured against.
+#include <string>
+
 #include "mesh/RadiusProfile.h"
 
 namespace rollsim {
@@ -17,8 +19,13 @@ struct RollingPass {
   double slab_length = 0;                          // the slab's length before the pass [length]
   double rpm = 0;                                  // roll speed [1/min] (0: not given)
   double travel = 0;                               // roll surface travel R θ at load factor 1 [length]
-  double flow_stress = 0;                          // the slab's σ_0 [stress]
-  double roll_E = 0, roll_nu = 0.3;                // the roll's elasticity (E 0: a rigid roll) [stress, -]
+  // the slab's σ_0, or with a flow stress law its mean over the pass: over ε from 0 to (2/√3) ln(h0/h1) at the mean
+  // rate ε ωR / √(R Δh) (Δh = h0 − h1) and the slab's temperature [stress]
+  double flow_stress = 0;
+  std::string flow_law;              // the slab's flow stress law ("": σ_0 and linear hardening)
+  double temperature = 0;            // the slab's temperature with a law [°C]
+  double mean_strain_rate = 0;       // the rate its mean flow stress is taken at [1/s]
+  double roll_E = 0, roll_nu = 0.3;  // the roll's elasticity (E 0: a rigid roll) [stress, -]
   double friction = -1;  // Coulomb's μ of the roll–slab contact (frictionless: 0); −1: sticking (always bites) [-]
   RadiusProfile profile;  // 3D: the radius's change (≤ 0) by distance from the barrel's centre [length]
 };

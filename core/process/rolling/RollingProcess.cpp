@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "base/SchemaFields.h"
+#include "material/FlowStress.h"
 #include "mesh/StructuredBlock.h"
 #include "process/rolling/RollingReport.h"
 #include "process/rolling/RollingRun.h"
@@ -72,8 +73,8 @@ const ObjectSchema& rolling_process_schema() {
        optional(number("roll_diameter", "length", 0, 0, 2e6, "roll diameter 2R, instead of `roll_radius`")),
        optional(number("roll_speed", "rpm", 0, 0, 1e4,
                        "roll speed [revolutions per minute]: the surface speed ωR, the time of the pass, the mean "
-                       "strain rate and the roll power (torque × ω) follow from it (without it: travel only; the "
-                       "slab's flow stress does not depend on rate yet)")),
+                       "strain rate and the roll power (torque × ω) follow from it; it sets analysis.duration, the "
+                       "time a rate-dependent slab_flow_stress needs (without it: travel only)")),
        number("roll_hub_radius", "length", 150, 0, 1e6,
               "inner radius of the modelled roll ring (the hub, turned as a rigid body)"),
        number("barrel_width", "length", 400, 0, 1e6, "roll barrel width (3D; half is modelled)"),
@@ -112,6 +113,18 @@ const ObjectSchema& rolling_process_schema() {
          f.min_exclusive = false;
          return f;
        }(),
+       [] {
+         Field f = object("slab_flow_stress", flow_stress_schema(),
+                          "the slab's flow stress law σ_f(ε, ε̇, T) (materials[].flow_stress: hensel_spittel, shida, "
+                          "johnson_cook), instead of slab_yield_stress and slab_hardening; Sims's force and a Coulomb "
+                          "pass's shear limit take its mean over the pass (at the mean strain rate, which needs "
+                          "roll_speed when the law depends on it)");
+         f.default_value = json();
+         return f;
+       }(),
+       optional(number("slab_temperature", "°C", 0, -273.15, 5000,
+                       "the slab's temperature with slab_flow_stress (default 1100), uniform and constant: heat "
+                       "transfer is not modelled yet")),
        poisson("slab_nu", "slab Poisson's ratio"),
        choice("roll", {"elastic", "rigid"}, "elastic",
               "the roll: elastic (its hub turned, the ring deforms: roll flattening) or rigid (every node of the ring "
@@ -168,6 +181,24 @@ double roll_radius(const json& p) {
 
 bool half_width(const json& process) { return process.value("width_symmetry", true); }
 
+constexpr double kDefaultSlabTemperature = 1100;  // [°C]
+
+/// The slab's material: J2 with slab_yield_stress and slab_hardening, or with slab_flow_stress at slab_temperature.
+MaterialData slab_material_data(const json& p) {
+  MaterialData m;
+  m.E = p.at("slab_E"), m.nu = p.at("slab_nu");
+  if (p.contains("slab_flow_stress")) {
+    m.flow_stress = flow_stress_data(p.at("slab_flow_stress"));
+    m.temperature = p.value("slab_temperature", kDefaultSlabTemperature);
+  } else {
+    m.yield_stress = p.at("slab_yield_stress"), m.hardening_modulus = p.at("slab_hardening");
+  }
+  return m;
+}
+
+/// ω R [length/s], 0 without a roll speed.
+double surface_speed(const json& p) { return p.value("roll_speed", 0.0) * 2 * M_PI / 60 * roll_radius(p); }
+
 RadiusProfile roll_profile(const json& p) {
   RadiusProfile profile;
   for (const json& point : p.value("roll_profile", json::array()))
@@ -179,6 +210,27 @@ RadiusProfile roll_profile(const json& p) {
 double exit_thickness(const json& p) {
   if (p.contains("exit_thickness")) return p.at("exit_thickness").get<double>();
   return p.at("slab_thickness").get<double>() * (1 - p.value("reduction", kPaperReduction));
+}
+
+/// The pass's equivalent strain (2/√3) ln(h0/h1) (plane strain) and its mean rate over the arc √(R Δh) at ωR.
+std::pair<double, double> pass_strain_and_rate(const json& p) {
+  const double h0 = p.at("slab_thickness"), h1 = exit_thickness(p);
+  const double strain = 2 / std::sqrt(3.0) * std::log(h0 / h1);
+  return {strain, strain * surface_speed(p) / std::sqrt(roll_radius(p) * (h0 - h1))};
+}
+
+/// The slab's flow stress for the closed forms: σ_0, or its law's mean over the pass's strain at the mean rate
+/// (Simpson's rule, 64 intervals).
+double pass_flow_stress(const json& p) {
+  const MaterialData m = slab_material_data(p);
+  if (m.flow_stress.law.empty()) return m.yield_stress;
+  const auto flow = make_flow_stress(m);
+  const auto [strain, rate] = pass_strain_and_rate(p);
+  constexpr int n = 64;
+  double sum = 0;
+  for (int i = 0; i <= n; ++i)
+    sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * flow->at(strain * i / n, rate, m.temperature).stress;
+  return sum / (3 * n);
 }
 }  // namespace
 
@@ -196,6 +248,24 @@ void check_ignored(const json& project, std::vector<Issue>& issues) {
     issues.push_back(
         {"process.friction_coefficient", "has no effect with process.friction: " + p.at("friction").get<std::string>() +
                                              " (μ is Coulomb's: set process.friction to coulomb, or remove it)"});
+  if (p.contains("slab_flow_stress")) {
+    if (p.at("slab_hardening").get<double>() > 0)
+      issues.push_back({"process.slab_hardening",
+                        "has no effect with process.slab_flow_stress (its law hardens the "
+                        "slab): remove one"});
+    if (p.at("slab_yield_stress") != find_field(rolling_process_schema(), "slab_yield_stress")->default_value)
+      issues.push_back({"process.slab_yield_stress",
+                        "has no effect with process.slab_flow_stress (its law gives "
+                        "the slab's yield stress): remove one"});
+  } else if (p.contains("slab_temperature")) {
+    issues.push_back({"process.slab_temperature",
+                      "has no effect without process.slab_flow_stress (slab_yield_stress "
+                      "does not depend on temperature): give the slab a flow stress law"});
+  }
+  if (project.at("analysis").value("duration", 0.0) > 0)
+    issues.push_back({"analysis.duration",
+                      "a rolling pass's time follows from process.roll_speed (the travel over "
+                      "the roll's surface speed): give that instead"});
   const json& materials = project.at("materials");
   for (size_t i = 0; i < materials.size(); ++i) {
     const std::string name = materials[i].value("name", "");
@@ -255,10 +325,27 @@ void check_geometry(const json& project, std::vector<Issue>& issues) {
     issues.push_back({"process.slab_width", mm(W) + " is wider than the roll barrel (process.barrel_width: " +
                                                 mm(barrel) + "): the slab's edges would pass beside the roll"});
 }
+/// The slab's flow stress law in the process's terms: its coefficients, a positive flow stress at slab_temperature,
+/// and the roll speed a rate-dependent law needs.
+void check_slab_law(const json& p, std::vector<Issue>& issues) {
+  if (!p.contains("slab_flow_stress")) return;
+  const MaterialData slab = slab_material_data(p);
+  const double v = surface_speed(p), duration = v > 0 ? p.at("travel").get<double>() / v : 0.0;
+  for (const Issue& i : check_flow_stress(slab, duration)) {
+    if (i.path == "flow_stress")  // the rate needs time: the roll's speed gives it
+      issues.push_back({"process.roll_speed", "is needed: the slab's flow stress law (" + slab.flow_stress.law +
+                                                  ") depends on the strain rate, which the roll's speed sets"});
+    else if (i.path == "temperature")
+      issues.push_back({"process.slab_temperature", i.message});
+    else
+      issues.push_back({"process.slab_" + i.path, i.message});
+  }
+}
 }  // namespace
 
 void check_rolling(const json& project, std::vector<Issue>& issues) {
   check_ignored(project, issues);
+  check_slab_law(project.at("process"), issues);
   check_geometry(project, issues);
   check_profile(project, issues);
   const json& p = project.at("process");
@@ -307,12 +394,14 @@ json expand_rolling(const json& project) {
   const double axis = h1 / 2 + R;  // roll axis height above the slab's mid-plane
   json out = project;
   // every field written out, defaults included: the generated entries skip schema validation
-  json slab_material = {{"name", "slab"},
-                        {"model", "j2_plasticity"},
-                        {"E", p.at("slab_E")},
-                        {"nu", p.at("slab_nu")},
-                        {"yield_stress", p.at("slab_yield_stress")}};
-  if (p.at("slab_hardening").get<double>() > 0) slab_material["hardening_modulus"] = p.at("slab_hardening");
+  json slab_material = {{"name", "slab"}, {"model", "j2_plasticity"}, {"E", p.at("slab_E")}, {"nu", p.at("slab_nu")}};
+  if (p.contains("slab_flow_stress")) {
+    slab_material["flow_stress"] = p.at("slab_flow_stress");
+    slab_material["temperature"] = p.value("slab_temperature", kDefaultSlabTemperature);
+  } else {
+    slab_material["yield_stress"] = p.at("slab_yield_stress");
+    if (p.at("slab_hardening").get<double>() > 0) slab_material["hardening_modulus"] = p.at("slab_hardening");
+  }
   out["materials"].push_back(slab_material);
   out["materials"].push_back(
       {{"name", "roll"}, {"model", "linear_elastic"}, {"E", p.at("roll_E")}, {"nu", p.at("roll_nu")}});
@@ -377,8 +466,7 @@ json expand_rolling(const json& project) {
   if (friction == "coulomb") out["contacts"].back()["friction"] = friction_coefficient(p);
   // Coulomb's friction stress never exceeds the slab's shear yield stress k = σ_0/√3. Sticking has no cap: the slab's
   // surface layer, yielding in shear, is what limits it (a cap made the arc chatter between stick and slip)
-  if (friction == "coulomb")
-    out["contacts"].back()["shear_limit"] = p.at("slab_yield_stress").get<double>() / std::sqrt(3.0);
+  if (friction == "coulomb") out["contacts"].back()["shear_limit"] = pass_flow_stress(p) / std::sqrt(3.0);
   json& bcs = out["boundary_conditions"];
   bcs.push_back({{"type", "symmetry"}, {"body", "slab"}, {"set", mid}, {"normal", dim == 2 ? "y" : "z"}});
   // the hub turns so that the roll's lowest point moves along +x: counter-clockwise about z in 2D, about −y in 3D
@@ -397,6 +485,7 @@ json expand_rolling(const json& project) {
   bcs.push_back(hub);
   out["analysis"]["increments"] =
       static_cast<int>(std::ceil(p.at("travel").get<double>() / p.at("travel_increment").get<double>() - 1e-9));
+  if (surface_speed(p) > 0) out["analysis"]["duration"] = p.at("travel").get<double>() / surface_speed(p);
   return out;
 }
 
@@ -421,7 +510,12 @@ RollingPass rolling_pass(const json& p, const Model& model) {
   pass.exit_thickness = exit_thickness(p);
   pass.width = p.at("slab_width");
   pass.travel = p.at("travel");
-  pass.flow_stress = p.at("slab_yield_stress");
+  pass.flow_stress = pass_flow_stress(p);
+  if (p.contains("slab_flow_stress")) {
+    pass.flow_law = p.at("slab_flow_stress").at("law").get<std::string>();
+    pass.temperature = p.value("slab_temperature", kDefaultSlabTemperature);
+    pass.mean_strain_rate = pass_strain_and_rate(p).second;
+  }
   if (p.at("roll") == "elastic") pass.roll_E = p.at("roll_E"), pass.roll_nu = p.at("roll_nu");
   const std::string friction = p.at("friction");
   if (friction != "sticking") pass.friction = friction == "coulomb" ? friction_coefficient(p) : 0.0;

@@ -20,6 +20,7 @@ struct RollingIncrement {
   double mean_spread = 0;
   double volume_change = 0;  // the slab's current volume (area in 2D) / its initial one − 1 [-]
   double mean_pressure = 0;  // roll force / contact length (2D) or area (3D): the mean pressure on the arc [stress]
+  double roll_power = 0;     // torque × ω per roll (0 without a roll speed) [kW (per mm of width in 2D)]
 };
 
 /// One slab node in contact along the arc, in the rolling plane (3D: every node of the contact zone, across the

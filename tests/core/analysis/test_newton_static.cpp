@@ -4,7 +4,8 @@
 // increment when no equilibrium exists, and leaves the last converged increment when cancelled. A step that runs out
 // of iterations names the check that failed with its value and limit; a run that ends on an inverted element names
 // the step size the user sets (a rolling pass's process.travel_increment) as the remedy. `predictor: extrapolate`
-// upsets a block between sticking platens in fewer iterations than the tangent predictor, to the same force.
+// upsets a block between sticking platens in fewer iterations than the tangent predictor, to the same force. A
+// rate-dependent flow stress (Shida's) compressed over analysis.duration equals its material point at that rate.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,9 +51,9 @@ Results run(const json& j, AnalysisObserver* obs = nullptr) {
 
 /// σ_yy of the material point with ε_yy given, the lateral stresses zero (σ_xx; 3D also σ_zz) and, in 2D, ε_zz = 0,
 /// loaded in the same steps: Newton on the free strains with the consistent tangent.
-double material_point(int dim, double strain, int steps) {
-  MaterialData data{E, nu, sy, H, 0, 0};
-  const J2Plasticity m(data);
+double material_point(int dim, double strain, int steps, const MaterialData& data = {E, nu, sy, H, 0, 0},
+                      double dt = 0) {
+  const J2Plasticity m(data, dt);
   double committed[J2Plasticity::kStateSize] = {}, trial[J2Plasticity::kStateSize];
   Deformation d;
   Voigt6 s;
@@ -100,6 +101,30 @@ TEST(NewtonStatic, HomogeneousCompressionEqualsTheMaterialPoint) {
     // every element carries the same stress
     for (const auto& s : r.bodies[0].element_stress) EXPECT_NEAR(s[1], expected, 1e-6 * std::abs(expected));
   }
+}
+
+TEST(NewtonStatic, RateDependentCompressionEqualsTheMaterialPointAtItsRate) {
+  // hot steel (Shida, 0.2 % C, 1000 °C) compressed 20 % in 8 steps over 0.1 s: strain rates near 2 /s
+  json j = compression(2, 2.0, 8);
+  j["materials"][0] = {{"name", "steel"},
+                       {"E", E},
+                       {"nu", nu},
+                       {"flow_stress", {{"law", "shida"}, {"carbon", 0.2}}},
+                       {"temperature", 1000}};
+  j["analysis"]["duration"] = 0.1;
+  const Results r = run(j);
+  ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
+  MaterialData hot{E, nu};
+  hot.flow_stress = {"shida", {{"carbon", 0.2}}};
+  hot.temperature = 1000;
+  const double expected = material_point(2, -0.2, 8, hot, 0.1 / 8);
+  EXPECT_NEAR(top_stress(r, 2, 2.0), expected, 1e-6 * std::abs(expected));
+  // ten times slower: the same strain at a tenth of the rate, (1/10)^m of the flow stress (m ≈ 0.12 at 1000 °C)
+  j["analysis"]["duration"] = 1.0;
+  const Results slow = run(j);
+  ASSERT_EQ(slow.status.status, Status::converged) << slow.status.message;
+  EXPECT_NEAR(top_stress(slow, 2, 2.0), material_point(2, -0.2, 8, hot, 1.0 / 8), 1e-6 * std::abs(expected));
+  EXPECT_LT(top_stress(slow, 2, 2.0) / expected, 0.8);
 }
 
 TEST(NewtonStatic, ConvergesQuadratically) {

@@ -2,7 +2,8 @@
 // top cut to the roll's polygon over the arc) and a roll, half thickness (and half width in 3D) by symmetry;
 // bad process values are refused with their JSON path; grading toward the roll gap moves the slab's nodes only.
 // What the pass would ignore (a material no body uses, μ without Coulomb friction) or cannot build (a slab wider than
-// the barrel, a hub outside the roll) is refused at the user's own path, never a generated body's.
+// the barrel, a hub outside the roll) is refused at the user's own path, never a generated body's. A hot pass takes
+// its slab's flow stress law, temperature and the roll's time, and refuses what it lacks or would ignore.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,10 +11,12 @@
 #include <map>
 
 #include "contact/ContactConstraints.h"
+#include "material/FlowStress.h"
 #include "mesh/Mesh.h"
 #include "process/rolling/RollingProcess.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
+#include "project/RunConfig.h"
 
 namespace test_rolling_process {
 
@@ -261,6 +264,53 @@ TEST(RollingProcess, WhatThePassWouldIgnoreIsRefusedNamingIt) {
   }
   EXPECT_EQ(refusal({{"type", "rolling"}, {"friction", "coulomb"}, {"friction_coefficient", 0.35}}), "accepted");
   EXPECT_EQ(pass_of(2, {{"friction", "coulomb"}}).friction, 0.3);  // μ's default under Coulomb friction
+}
+
+TEST(RollingProcess, AHotPassTakesItsFlowStressLawItsTemperatureAndTheRollsTime) {
+  const json shida = {{"law", "shida"}, {"carbon", 0.2}};
+  const json hot = {
+      {"slab_flow_stress", shida}, {"slab_temperature", 1050.0}, {"reduction", 0.2}, {"roll_speed", 30.0}};
+  const Model model = rolling(2, hot);
+  const MaterialData& slab = model.bodies[0].material;
+  EXPECT_EQ(slab.flow_stress.law, "shida");
+  EXPECT_EQ(slab.temperature, 1050.0);
+  EXPECT_EQ(slab.yield_stress, 0.0);
+  // Sims's flow stress: the law's mean over ε 0 → (2/√3) ln(1.25) at ε̇ = ε ωR / √(R Δh), by a finer trapezoid rule
+  const RollingPass pass = pass_of(2, hot);
+  const double strain = 2 / std::sqrt(3.0) * std::log(1.25), v = 30 * 2 * M_PI / 60 * 300;
+  const double rate = strain * v / std::sqrt(300 * 20.0);
+  EXPECT_NEAR(pass.mean_strain_rate, rate, 1e-12 * rate);
+  const auto law = make_flow_stress(slab);
+  double mean = 0;
+  const int n = 4000;
+  for (int i = 0; i <= n; ++i) mean += (i == 0 || i == n ? 0.5 : 1.0) * law->at(strain * i / n, rate, 1050).stress / n;
+  EXPECT_NEAR(pass.flow_stress, mean, 1e-4 * mean);
+  json j = {{"dimension", 2}, {"process", hot}};
+  j["process"]["type"] = "rolling";
+  EXPECT_NEAR(read_run_config(parse_project(j.dump(), "hot").data).newton.duration, 100 / v, 1e-12);  // travel / ωR
+}
+
+TEST(RollingProcess, AHotPassesMissingOrIdleFieldsAreRefusedAtTheProcesssPath) {
+  const json shida = {{"law", "shida"}, {"carbon", 0.2}};
+  const std::string speed = refusal({{"type", "rolling"}, {"slab_flow_stress", shida}});
+  EXPECT_NE(speed.find("process.roll_speed: is needed: the slab's flow stress law (shida) depends on the strain rate"),
+            std::string::npos)
+      << speed;
+  const std::string idle = refusal({{"type", "rolling"}, {"slab_temperature", 1100.0}});
+  EXPECT_NE(idle.find("process.slab_temperature: has no effect without process.slab_flow_stress"), std::string::npos)
+      << idle;
+  const std::string hardening =
+      refusal({{"type", "rolling"}, {"slab_flow_stress", shida}, {"roll_speed", 30.0}, {"slab_hardening", 300.0}});
+  EXPECT_NE(hardening.find("process.slab_hardening: has no effect with process.slab_flow_stress"), std::string::npos)
+      << hardening;
+  const std::string duration =
+      refusal({{"type", "rolling"}, {"roll_speed", 30.0}}, 2, {{"analysis", {{"duration", 2.0}}}});
+  EXPECT_NE(duration.find("analysis.duration: a rolling pass's time follows from process.roll_speed"),
+            std::string::npos)
+      << duration;
+  const std::string cold =
+      refusal({{"type", "rolling"}, {"slab_flow_stress", shida}, {"roll_speed", 30.0}, {"slab_temperature", 500.0}});
+  EXPECT_EQ(cold, "accepted") << "outside Shida's range is a warning of the run, not a refusal";
 }
 
 TEST(RollingProcess, GeometryThatCannotBeBuiltIsRefusedAtTheProcesssPath) {

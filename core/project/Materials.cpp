@@ -1,0 +1,72 @@
+#include "project/Materials.h"
+
+#include "material/FlowStress.h"
+
+namespace rollsim {
+
+namespace {
+std::string at(size_t i) { return "materials[" + std::to_string(i) + "]"; }
+
+/// A material's own hardening fields: consistent with each other and with its model.
+void check_hardening(const json& m, const std::string& path, std::vector<Issue>& issues) {
+  const bool has_yield = m.contains("yield_stress"), has_law = m.contains("flow_stress");
+  if (has_yield && has_law)
+    issues.push_back({path + ".flow_stress", "give either yield_stress (and its hardening) or a flow_stress law"});
+  if (m.value("model", "linear_elastic") == "j2_plasticity" && !has_yield && !has_law)
+    issues.push_back({path + ".yield_stress", "j2_plasticity needs a yield stress or a flow_stress law"});
+  if (m.value("model", "") == "linear_elastic" && (has_yield || has_law))
+    issues.push_back({path + ".model", "linear_elastic has no yield stress: remove " +
+                                           std::string(has_yield ? "yield_stress" : "flow_stress") +
+                                           " or say j2_plasticity"});
+  const bool plastic_fields = m.contains("saturation_stress") || m.value("hardening_modulus", 0.0) > 0 ||
+                              m.value("saturation_exponent", 0.0) > 0;
+  if (!has_yield && plastic_fields)
+    issues.push_back({path + ".yield_stress", has_law ? "hardening fields are yield_stress's: the flow_stress law "
+                                                        "gives the hardening (remove them)"
+                                                      : "hardening is given but no yield stress: the material is "
+                                                        "elastic"});
+  if (has_yield && m.contains("saturation_stress") &&
+      m["saturation_stress"].get<double>() < m["yield_stress"].get<double>())
+    issues.push_back({path + ".saturation_stress",
+                      "must be at least yield_stress (" + std::to_string(m["yield_stress"].get<double>()) +
+                          "): a saturation below the initial yield stress would soften the material"});
+}
+
+}  // namespace
+
+MaterialData material_data(const json& mat) {
+  MaterialData m;
+  m.E = mat.at("E").get<double>();
+  m.nu = mat.at("nu").get<double>();
+  m.yield_stress = mat.value("yield_stress", 0.0);
+  m.hardening_modulus = mat.value("hardening_modulus", 0.0);
+  m.saturation_stress = mat.value("saturation_stress", 0.0);
+  m.saturation_exponent = mat.value("saturation_exponent", 0.0);
+  m.temperature = mat.value("temperature", m.temperature);
+  if (mat.contains("flow_stress")) m.flow_stress = flow_stress_data(mat.at("flow_stress"));
+  return m;
+}
+
+void check_materials(const json& d, std::vector<Issue>& issues) {
+  const json& materials = d.at("materials");
+  const double duration = d.at("analysis").value("duration", 0.0);
+  for (size_t i = 0; i < materials.size(); ++i) {
+    std::vector<Issue> found;
+    check_hardening(materials[i], at(i), found);
+    if (found.empty() && materials[i].contains("flow_stress"))
+      for (const Issue& issue : check_flow_stress(material_data(materials[i]), duration))
+        found.push_back({at(i) + "." + issue.path, issue.message});
+    issues.insert(issues.end(), found.begin(), found.end());
+  }
+}
+
+std::vector<std::string> material_warnings(const json& d) {
+  std::vector<std::string> warnings;
+  const json& materials = d.at("materials");
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (const std::string w = temperature_warning(material_data(materials[i])); !w.empty())
+      warnings.push_back(at(i) + ".temperature: " + w);
+  return warnings;
+}
+
+}  // namespace rollsim

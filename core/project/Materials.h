@@ -1,0 +1,20 @@
+#pragma once
+// A project's materials: read into MaterialData, checked beyond their schema (a plastic material's hardening and
+// flow stress law, the law's coefficients and the time a rate-dependent law needs), and what a run is warned of (a
+// body's temperature outside the range its law was fitted over).
+#include <string>
+#include <vector>
+
+#include "base/Schema.h"
+#include "model/MaterialData.h"
+
+namespace rollsim {
+
+/// The MaterialData of one validated materials[] entry.
+MaterialData material_data(const json& material);
+/// Problems of the materials of a validated, process-expanded project (paths materials[i]…).
+void check_materials(const json& expanded_project, std::vector<Issue>& issues);
+/// Warnings for the run: materials whose temperature lies outside their flow stress law's range.
+std::vector<std::string> material_warnings(const json& expanded_project);
+
+}  // namespace rollsim
