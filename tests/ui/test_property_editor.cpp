@@ -1,5 +1,6 @@
 // The schema-driven property editor: typing a value updates the project and the mesh counts, a bad value is refused
-// with the validator's message and the project keeps its old value, the solver form lists the registry's names.
+// with the validator's message and the project keeps its old value, the solver form lists the registry's names; a
+// hot pass's flow stress law is edited in the process form like any field, its range refused there.
 #include <QCheckBox>
 #include <QComboBox>
 #include <QLineEdit>
@@ -91,6 +92,26 @@ class TestPropertyEditor : public QObject {
     QVERIFY(mesh);
     for (const Field& f : fields_of(*mesh, doc.project().data["bodies"][0]["mesh"]))
       QVERIFY2(editor.editor_for("/bodies/0/mesh/" + f.name), f.name.c_str());
+  }
+
+  void a_hot_pass_edits_its_flow_stress_law_in_the_process_form() {
+    ProjectDocument doc;
+    doc.open(QStringLiteral(ROLLSIM_SOURCE_DIR "/samples/rolling-2d-hot.json"));
+    PropertyEditor editor(&doc);
+    editor.set_object("/process");
+    editor.show();
+    auto* law = qobject_cast<QComboBox*>(editor.editor_for("/process/slab_flow_stress/law"));
+    QVERIFY(law);
+    QCOMPARE(law->currentText(), QStringLiteral("shida"));
+    auto* carbon = qobject_cast<QLineEdit*>(editor.editor_for("/process/slab_flow_stress/carbon"));
+    QVERIFY(carbon);
+    QCOMPARE(carbon->text(), QStringLiteral("0.2"));
+    retype(carbon, QStringLiteral("0.45"));
+    QVERIFY(editor.message().isEmpty());
+    QCOMPARE(doc.document()["process"]["slab_flow_stress"]["carbon"].get<double>(), 0.45);
+    retype(carbon, QStringLiteral("2"));  // beyond the 0.07–1.2 % Shida fitted
+    QVERIFY(editor.message().startsWith(QStringLiteral("process.slab_flow_stress.carbon")));
+    QCOMPARE(doc.document()["process"]["slab_flow_stress"]["carbon"].get<double>(), 0.45);
   }
 
   void solver_panel_lists_registry_and_writes_the_solver_section() {
