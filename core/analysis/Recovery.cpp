@@ -19,9 +19,11 @@ void recover_elements(const Body& body, const std::vector<double>& state, BodyRe
   std::array<typename El::Stress6, El::NGP> gp;
   const auto material = make_material(body.material);
   const int ns = material->state_size(), alpha = material->equivalent_plastic_strain_index();
+  const int rise = body.material.thermal() ? material->temperature_rise_index() : -1;
   const size_t per_element = static_cast<size_t>(El::NGP * ns);
   const bool stateful = ns > 0 && state.size() == per_element * static_cast<size_t>(ne);
   if (stateful && alpha >= 0) r.plastic_strain.assign(static_cast<size_t>(ne), 0.0);
+  if (stateful && rise >= 0) r.temperature.assign(static_cast<size_t>(ne), body.material.temperature);
   for (int e = 0; e < ne; ++e) {
     const int* conn = m.element(e);
     for (int a = 0; a < El::NN; ++a)
@@ -37,6 +39,8 @@ void recover_elements(const Body& body, const std::vector<double>& state, BodyRe
     }
     if (!r.plastic_strain.empty())
       for (int p = 0; p < El::NGP; ++p) r.plastic_strain[e] += committed[p * ns + alpha] / El::NGP;
+    if (!r.temperature.empty())
+      for (int p = 0; p < El::NGP; ++p) r.temperature[e] += committed[p * ns + rise] / El::NGP;
     for (int a = 0; a < El::NN; ++a)
       for (int i = 0; i < D; ++i) r.nodal_force[conn[a] * D + i] += fe(a * D + i);
     for (int c = 0; c < 6; ++c) {

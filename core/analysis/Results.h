@@ -21,6 +21,9 @@ struct BodyResults {
   std::vector<std::array<double, 6>> nodal_stress;    // extrapolated from Gauss points, averaged at nodes
   std::vector<int> subdomain;                         // per element (0 while bodies are not partitioned)
   std::vector<double> plastic_strain;  // per element: mean equivalent plastic strain (plastic bodies only) [-]
+  // per element: mean temperature, the material's plus the rise from plastic work (bodies whose material has a flow
+  // stress law or a heat capacity only) [°C]
+  std::vector<double> temperature;
   // per node, sized only when the model has contact pairs: f·n / tributary length (2D) or area (3D) of each
   // contact point of a slave surface (positive in compression), 0 on every other node [stress]
   Eigen::VectorXd contact_pressure;

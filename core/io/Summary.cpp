@@ -65,6 +65,10 @@ json results_section(const Model& m, const Results& r) {
     if (!r.bodies[b].plastic_strain.empty())
       out["max_plastic_strain"][m.bodies[b].name] =
           *std::max_element(r.bodies[b].plastic_strain.begin(), r.bodies[b].plastic_strain.end());
+  for (size_t b = 0; b < r.bodies.size(); ++b)
+    if (!r.bodies[b].temperature.empty())
+      out["max_temperature"][m.bodies[b].name] =
+          *std::max_element(r.bodies[b].temperature.begin(), r.bodies[b].temperature.end());
   return out;
 }
 

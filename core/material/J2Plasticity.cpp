@@ -26,6 +26,7 @@ J2Plasticity::J2Plasticity(const MaterialData& data, double dt)
     : flow_(make_flow_stress(data)),
       dt_(dt),
       temperature_(data.temperature),
+      heating_(data.heat_capacity > 0 ? data.taylor_quinney / data.heat_capacity : 0.0),
       frozen_(flow_->rate_dependent() && !(dt > 0)) {
   const LinearElastic e(data.E, data.nu);
   G_ = e.mu();
@@ -33,16 +34,16 @@ J2Plasticity::J2Plasticity(const MaterialData& data, double dt)
   elastic_ = e.tangent3d();
 }
 
-FlowStressPoint J2Plasticity::yield_stress(double alpha, double increment) const {
-  FlowStressPoint p = flow_->at(alpha, dt_ > 0 ? increment / dt_ : 0.0, temperature_);
+FlowStressPoint J2Plasticity::yield_stress(double alpha, double increment, double rise) const {
+  FlowStressPoint p = flow_->at(alpha, dt_ > 0 ? increment / dt_ : 0.0, temperature_ + rise);
   p.d_strain += dt_ > 0 ? p.d_rate / dt_ : 0.0;  // along Δα: the rate moves with it
   return p;
 }
 
-double J2Plasticity::plastic_increment(double q, double alpha_n) const {
+double J2Plasticity::plastic_increment(double q, double alpha_n, double rise) const {
   double dg = 0.0, lo = 0.0, hi = q / (3.0 * G_);  // the root lies between: σ_y > 0
   for (int it = 0; it < 100; ++it) {
-    const FlowStressPoint y = yield_stress(alpha_n + dg, dg);
+    const FlowStressPoint y = yield_stress(alpha_n + dg, dg, rise);
     const double r = q - 3.0 * G_ * dg - y.stress;
     const double next = dg + r / (3.0 * G_ + y.d_strain);
     if (std::abs(r) <= 1e-13 * q) return next;
@@ -55,20 +56,21 @@ double J2Plasticity::plastic_increment(double q, double alpha_n) const {
 void J2Plasticity::update(const Deformation& d, const double* committed, double* trial, Voigt6& stress,
                           Tangent6& tangent) const {
   const Eigen::Map<const Voigt6> ep_n(committed);
-  const double alpha_n = committed[kAlpha];
+  const double alpha_n = committed[kAlpha], rise = committed[kHeat];
   stress = elastic_ * (d.strain - ep_n);  // elastic trial
   tangent = elastic_;
   Eigen::Map<Voigt6> ep(trial);
   ep = ep_n;
   trial[kAlpha] = alpha_n;
+  trial[kHeat] = rise;
   Voigt6 s = stress;
   const double p = stress.head<3>().sum() / 3.0;
   s.head<3>().array() -= p;
   const double q = std::sqrt(1.5 * contract(s));  // von Mises of the trial stress
-  const double y0 = yield_stress(alpha_n).stress;
+  const double y0 = yield_stress(alpha_n, 0, rise).stress;
   if (frozen_ || q - y0 <= 1e-12 * y0) return;
   // Δγ from q − 3G Δγ − σ_y(α_n + Δγ) = 0 (one Newton step for linear hardening)
-  const double dg = plastic_increment(q, alpha_n);
+  const double dg = plastic_increment(q, alpha_n, rise);
   if (!(dg > 0.0) || !std::isfinite(dg)) throw std::runtime_error("J2 return mapping failed to converge");
   const Voigt6 n = s / std::sqrt(contract(s));  // unit normal, tensor components
   const double scale = 1.0 - 3.0 * G_ * dg / q;
@@ -79,7 +81,10 @@ void J2Plasticity::update(const Deformation& d, const double* committed, double*
   dep.tail<3>() *= 2.0;
   ep = ep_n + dep;
   trial[kAlpha] = alpha_n + dg;
-  const double H = yield_stress(alpha_n + dg, dg).d_strain;
+  const FlowStressPoint y = yield_stress(alpha_n + dg, dg, rise);
+  if (heating_ > 0)  // the plastic work ∫ τ_y dα over the step (trapezoid, at the step's rate), a share β as heat
+    trial[kHeat] = rise + heating_ * 0.5 * (yield_stress(alpha_n, dg, rise).stress + y.stress) * dg;
+  const double H = y.d_strain;
   tangent = elastic_ - (6.0 * G_ * G_ * dg / q) * deviatoric_projector() +
             6.0 * G_ * G_ * (dg / q - 1.0 / (3.0 * G_ + H)) * (n * n.transpose());
 }
@@ -92,12 +97,13 @@ void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committ
   Deformation d;
   const Spectrum b = spectrum(F * Cp_inv * F.transpose());  // elastic trial left Cauchy–Green tensor
   d.strain = log_strain(b);
-  double log_committed[kStateSize] = {0, 0, 0, 0, 0, 0, committed[kAlpha]}, log_trial[kStateSize];
+  double log_committed[kStateSize] = {0, 0, 0, 0, 0, 0, committed[kAlpha], committed[kHeat]}, log_trial[kStateSize];
   Tangent6 modulus;
   update(d, log_committed, log_trial, tau, modulus);
   if (tangent) *tangent = {modulus, b};
   std::copy(committed, committed + kStateSize, trial);
   trial[kAlpha] = log_trial[kAlpha];
+  trial[kHeat] = log_trial[kHeat];
   if (log_trial[kAlpha] == committed[kAlpha]) return;  // elastic: C_p unchanged
   // ε_e = ε_e trial − Δε_p, coaxial with b (Δε_p ∝ the trial deviator), so b_e = exp(2 ε_e) = Q diag(λ e^(−2 Δε_p,k))
   // Qᵀ with Δε_p,k its principal values on b's eigenvectors

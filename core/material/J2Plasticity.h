@@ -5,7 +5,9 @@
 // kernel. State per integration point: plastic strain (6, engineering shears) and equivalent plastic strain α. The
 // yield stress is a flow stress law σ_f(α, α̇, T) (material/FlowStress): with a rate-dependent one, α̇ = Δα/Δt over
 // the increment's time Δt, and the return's scalar equation and consistent tangent take dσ_f/dΔα = ∂σ_f/∂α +
-// ∂σ_f/∂α̇ / Δt (the body's temperature is fixed over the increment: no temperature term).
+// ∂σ_f/∂α̇ / Δt. With a volumetric heat capacity ρc, plastic work heats each point adiabatically (no conduction yet):
+// ΔT = β ∫ τ_y dα / ρc over the step (trapezoid) after the return, staggered — the increment's flow stress is taken at
+// its starting temperature, so the tangent has no temperature term.
 #include <memory>
 
 #include "material/FlowStress.h"
@@ -21,6 +23,7 @@ class J2Plasticity final : public Material {
   std::string name() const override { return "j2_plasticity"; }
   int state_size() const override { return kStateSize; }
   int equivalent_plastic_strain_index() const override { return kAlpha; }
+  int temperature_rise_index() const override { return kHeat; }
   void update(const Deformation& d, const double* committed, double* trial, Voigt6& stress,
               Tangent6& tangent) const override;
   /// Multiplicative plasticity (Simo 1992): b_e trial = F C_p⁻¹ Fᵀ, the return above on ε_e = ½ ln b_e (Hencky
@@ -29,20 +32,23 @@ class J2Plasticity final : public Material {
   void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
                      FiniteTangent* tangent) const override;
 
-  /// σ_y at equivalent plastic strain α reached by Δα in this increment, and its slope dσ_y/dΔα [stress].
-  FlowStressPoint yield_stress(double alpha, double increment = 0) const;
+  /// σ_y at equivalent plastic strain α reached by Δα in this increment, the point `rise` above the material's
+  /// temperature, and its slope dσ_y/dΔα [stress].
+  FlowStressPoint yield_stress(double alpha, double increment = 0, double rise = 0) const;
 
-  static constexpr int kStateSize = 7;  // ε_p (xx, yy, zz, γxy, γyz, γzx), α
+  static constexpr int kStateSize = 8;  // ε_p (xx, yy, zz, γxy, γyz, γzx), α, the temperature rise ΔT [K]
   static constexpr int kAlpha = 6;
+  static constexpr int kHeat = 7;
 
  private:
   /// Δα of the return from the trial von Mises stress q: q − 3G Δα = σ_y(α_n + Δα), Newton safeguarded by bisection
   /// (a rate-dependent σ_y rises steeply from zero rate).
-  double plastic_increment(double q, double alpha_n) const;
+  double plastic_increment(double q, double alpha_n, double rise) const;
 
   std::unique_ptr<FlowStress> flow_;
   double dt_, temperature_;
-  bool frozen_;  // rate-dependent without time: no return
+  double heating_;  // β / ρc [K / stress]: the temperature rise per unit plastic work (0: none)
+  bool frozen_;     // rate-dependent without time: no return
   double G_, K_;
   Tangent6 elastic_;
 };

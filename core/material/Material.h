@@ -35,6 +35,8 @@ class Material {
   virtual int state_size() const { return 0; }
   /// Where the equivalent plastic strain sits in the state (-1: the material has none).
   virtual int equivalent_plastic_strain_index() const { return -1; }
+  /// Where the temperature rise from plastic work sits in the state [K] (-1: the material has none).
+  virtual int temperature_rise_index() const { return -1; }
   /// σ and the consistent tangent at one integration point from `d` and the committed state (`state_size()`
   /// values); writes the trial state into `trial` (both may be null when state_size() is 0).
   virtual void update(const Deformation& d, const double* committed, double* trial, Voigt6& stress,

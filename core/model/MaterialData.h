@@ -31,9 +31,13 @@ struct MaterialData {
   double saturation_stress = 0.0;    // σ_∞ [stress]; ≤ σ_0: no saturation term
   double saturation_exponent = 0.0;  // δ [-]
   FlowStressData flow_stress;        // a law of strain, strain rate and temperature instead of the hardening above
-  double temperature = 20.0;         // the body's temperature [°C], uniform (what a flow stress law is taken at)
+  double temperature = 20.0;    // the body's initial temperature [°C], uniform (what a flow stress law is taken at)
+  double heat_capacity = 0.0;   // volumetric ρc [stress / K]: plastic work heats it adiabatically (0: never)
+  double taylor_quinney = 0.9;  // β: the share of plastic work turned into heat [-]
 
   bool plastic() const { return yield_stress > 0.0 || !flow_stress.law.empty(); }
+  /// Whether its temperature matters: a flow stress law reads it, or plastic work raises it.
+  bool thermal() const { return plastic() && (!flow_stress.law.empty() || heat_capacity > 0.0); }
 };
 
 }  // namespace rollsim

@@ -271,10 +271,17 @@ const ObjectSchema kMaterial{
        return f;
      }(),
      def(bounded(num("temperature", "°C",
-                     "the temperature of the bodies made of it, uniform and constant (what a flow_stress law is "
-                     "taken at)"),
+                     "the initial temperature of the bodies made of it, uniform (what a flow_stress law is taken at; "
+                     "plastic work raises it where heat_capacity is given)"),
                  -273.15, 5000),
-         20.0)},
+         20.0),
+     positive("heat_capacity", "stress/K",
+              "volumetric heat capacity ρc of a plastic material (MPa/K = J/(cm³·K) with mm and MPa; hot steel about "
+              "4.9): with it, plastic work heats each point adiabatically, ΔT = β ∫ τ_y dα / ρc (no conduction yet), "
+              "and a flow_stress law softens with it"),
+     def(bounded(num("taylor_quinney", "-", "β: the share of plastic work turned into heat (with heat_capacity)"), 0,
+                 1),
+         0.9)},
     "",
     {}};
 

@@ -125,6 +125,10 @@ const ObjectSchema& rolling_process_schema() {
        optional(number("slab_temperature", "°C", 0, -273.15, 5000,
                        "the slab's temperature with slab_flow_stress (default 1100), uniform and constant: heat "
                        "transfer is not modelled yet")),
+       optional(number("slab_heat_capacity", "stress/K", 0, 0, 1e3,
+                       "the slab's volumetric heat capacity ρc (MPa/K; hot steel about 4.9): with it, plastic work "
+                       "heats the slab adiabatically (β = 0.9; no conduction to the roll or air yet) and "
+                       "slab_flow_stress softens with it")),
        poisson("slab_nu", "slab Poisson's ratio"),
        choice("roll", {"elastic", "rigid"}, "elastic",
               "the roll: elastic (its hub turned, the ring deforms: roll flattening) or rigid (every node of the ring "
@@ -183,16 +187,17 @@ bool half_width(const json& process) { return process.value("width_symmetry", tr
 
 constexpr double kDefaultSlabTemperature = 1100;  // [°C]
 
-/// The slab's material: J2 with slab_yield_stress and slab_hardening, or with slab_flow_stress at slab_temperature.
+/// The slab's material: J2 with slab_yield_stress and slab_hardening, or with slab_flow_stress, at slab_temperature,
+/// heated by its plastic work with slab_heat_capacity.
 MaterialData slab_material_data(const json& p) {
   MaterialData m;
   m.E = p.at("slab_E"), m.nu = p.at("slab_nu");
-  if (p.contains("slab_flow_stress")) {
+  if (p.contains("slab_flow_stress"))
     m.flow_stress = flow_stress_data(p.at("slab_flow_stress"));
-    m.temperature = p.value("slab_temperature", kDefaultSlabTemperature);
-  } else {
+  else
     m.yield_stress = p.at("slab_yield_stress"), m.hardening_modulus = p.at("slab_hardening");
-  }
+  m.temperature = p.value("slab_temperature", kDefaultSlabTemperature);
+  m.heat_capacity = p.value("slab_heat_capacity", 0.0);
   return m;
 }
 
@@ -397,11 +402,13 @@ json expand_rolling(const json& project) {
   json slab_material = {{"name", "slab"}, {"model", "j2_plasticity"}, {"E", p.at("slab_E")}, {"nu", p.at("slab_nu")}};
   if (p.contains("slab_flow_stress")) {
     slab_material["flow_stress"] = p.at("slab_flow_stress");
-    slab_material["temperature"] = p.value("slab_temperature", kDefaultSlabTemperature);
   } else {
     slab_material["yield_stress"] = p.at("slab_yield_stress");
     if (p.at("slab_hardening").get<double>() > 0) slab_material["hardening_modulus"] = p.at("slab_hardening");
   }
+  if (p.contains("slab_heat_capacity")) slab_material["heat_capacity"] = p.at("slab_heat_capacity");
+  if (p.contains("slab_flow_stress") || p.contains("slab_heat_capacity"))
+    slab_material["temperature"] = p.value("slab_temperature", kDefaultSlabTemperature);
   out["materials"].push_back(slab_material);
   out["materials"].push_back(
       {{"name", "roll"}, {"model", "linear_elastic"}, {"E", p.at("roll_E")}, {"nu", p.at("roll_nu")}});

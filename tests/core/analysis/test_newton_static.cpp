@@ -5,7 +5,8 @@
 // of iterations names the check that failed with its value and limit; a run that ends on an inverted element names
 // the step size the user sets (a rolling pass's process.travel_increment) as the remedy. `predictor: extrapolate`
 // upsets a block between sticking platens in fewer iterations than the tangent predictor, to the same force. A
-// rate-dependent flow stress (Shida's) compressed over analysis.duration equals its material point at that rate.
+// rate-dependent flow stress (Shida's) compressed over analysis.duration equals its material point at that rate, and
+// a block with a heat capacity heats by β times its plastic work over ρc (softening where its law says so).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -125,6 +126,36 @@ TEST(NewtonStatic, RateDependentCompressionEqualsTheMaterialPointAtItsRate) {
   ASSERT_EQ(slow.status.status, Status::converged) << slow.status.message;
   EXPECT_NEAR(top_stress(slow, 2, 2.0), material_point(2, -0.2, 8, hot, 1.0 / 8), 1e-6 * std::abs(expected));
   EXPECT_LT(top_stress(slow, 2, 2.0) / expected, 0.8);
+}
+
+TEST(NewtonStatic, AdiabaticHeatingOfAHomogeneousCompressionIsItsPlasticWork) {
+  // ΔT = β ∫ σ_y dα / ρc with σ_y = σ_0 + H α: β (σ_0 α + H α² / 2) / ρc, every element alike
+  const double rho_c = 3.5, beta = 0.9;
+  json j = compression(3, 2.0, 20);
+  j["materials"][0]["heat_capacity"] = rho_c;
+  j["materials"][0]["temperature"] = 900.0;
+  const Results r = run(j);
+  ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
+  ASSERT_EQ(r.bodies[0].temperature.size(), r.bodies[0].plastic_strain.size());
+  for (size_t e = 0; e < r.bodies[0].temperature.size(); ++e) {
+    const double a = r.bodies[0].plastic_strain[e], rise = beta * (sy * a + H * a * a / 2) / rho_c;
+    EXPECT_GT(rise, 10.0);
+    EXPECT_NEAR(r.bodies[0].temperature[e] - 900.0, rise, 0.01 * rise) << "element " << e;
+  }
+  // a flow stress that softens with temperature (Johnson–Cook, m = 1): the heated block carries less
+  json soft = j;
+  soft["materials"][0].erase("yield_stress");
+  soft["materials"][0].erase("hardening_modulus");
+  soft["materials"][0]["flow_stress"] = {
+      {"law", "johnson_cook"}, {"A", sy}, {"B", 300.0}, {"n", 0.5}, {"m", 1.0}, {"melting_temperature", 1500.0}};
+  const Results heated = run(soft);
+  soft["materials"][0].erase("heat_capacity");
+  const Results cold = run(soft);
+  ASSERT_EQ(heated.status.status, Status::converged) << heated.status.message;
+  ASSERT_EQ(cold.status.status, Status::converged) << cold.status.message;
+  EXPECT_TRUE(cold.bodies[0].temperature.size() == cold.bodies[0].plastic_strain.size());
+  EXPECT_EQ(cold.bodies[0].temperature[0], 900.0) << "without a heat capacity the temperature stays";
+  EXPECT_LT(std::abs(top_stress(heated, 3, 2.0)), 0.99 * std::abs(top_stress(cold, 3, 2.0)));
 }
 
 TEST(NewtonStatic, ConvergesQuadratically) {

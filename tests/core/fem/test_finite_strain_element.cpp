@@ -135,7 +135,7 @@ TEST(FiniteStrainElement, RigidMotionGivesNoForce) {
   const Eigen::Matrix3d R = rotation<3>(2.5);
   El::Dofs u, f;
   for (int a = 0; a < El::NN; ++a) u.segment<3>(a * 3) = R * X.col(a) - X.col(a) + Eigen::Vector3d(3, -1, 2);
-  std::vector<double> c(El::NGP * 7, 0.0), t(c.size());
+  std::vector<double> c(static_cast<size_t>(El::NGP * mat->state_size()), 0.0), t(c.size());
   ASSERT_TRUE(FiniteStrainElement<3>::tangent_and_force(X, *mat, Formulation::Full, u, c.data(), t.data(), nullptr, f));
   EXPECT_LT(f.norm(), 1e-8);
 }

@@ -13,8 +13,9 @@ using namespace rollsim;
 
 TEST(OutputFields, NamesAreDistinctAndInTheRegistrysOrder) {
   const std::vector<std::string> names = output_field_names();
-  const std::vector<std::string> expected{"displacement", "stress",        "von_mises",      "contact_pressure",
-                                          "contact_slip", "contact_shear", "plastic_strain", "jacobian_ratio"};
+  const std::vector<std::string> expected{"displacement",     "stress",       "von_mises",
+                                          "contact_pressure", "contact_slip", "contact_shear",
+                                          "plastic_strain",   "temperature",  "jacobian_ratio"};
   EXPECT_EQ(names, expected);
   for (const OutputField& f : output_fields())
     EXPECT_NE(std::find(names.begin(), names.end(), f.name), names.end()) << f.name;

@@ -268,12 +268,17 @@ TEST(RollingProcess, WhatThePassWouldIgnoreIsRefusedNamingIt) {
 
 TEST(RollingProcess, AHotPassTakesItsFlowStressLawItsTemperatureAndTheRollsTime) {
   const json shida = {{"law", "shida"}, {"carbon", 0.2}};
-  const json hot = {
-      {"slab_flow_stress", shida}, {"slab_temperature", 1050.0}, {"reduction", 0.2}, {"roll_speed", 30.0}};
+  const json hot = {{"slab_flow_stress", shida},
+                    {"slab_temperature", 1050.0},
+                    {"reduction", 0.2},
+                    {"roll_speed", 30.0},
+                    {"slab_heat_capacity", 4.9}};
   const Model model = rolling(2, hot);
   const MaterialData& slab = model.bodies[0].material;
   EXPECT_EQ(slab.flow_stress.law, "shida");
   EXPECT_EQ(slab.temperature, 1050.0);
+  EXPECT_EQ(slab.heat_capacity, 4.9);
+  EXPECT_EQ(model.bodies[1].material.heat_capacity, 0.0) << "the roll is elastic: nothing heats it";
   EXPECT_EQ(slab.yield_stress, 0.0);
   // Sims's flow stress: the law's mean over ε 0 → (2/√3) ln(1.25) at ε̇ = ε ωR / √(R Δh), by a finer trapezoid rule
   const RollingPass pass = pass_of(2, hot);
