@@ -572,6 +572,7 @@ Model build_model(const Project& project) {
     model.probes.push_back(std::move(probe));
   }
   for (std::string& w : conditioning_warnings(model)) model.warnings.push_back(std::move(w));
+  for (std::string& w : project.config().warnings) model.warnings.push_back(std::move(w));
   return model;
 }
 
