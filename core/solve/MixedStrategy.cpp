@@ -58,10 +58,13 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
     if (observer) observer->on_factorization(sys.groups[g].name);
   }
   stats_.analyze_s = stats_.factorize_s = stats_.factor_flops_total = 0;
-  for (const GroupSolver& gs : groups_) {
+  stats_.factor.flops = stats_.factor.nnz_factor = 0;  // one factorization of every group: what one global factor
+  for (const GroupSolver& gs : groups_) {              // would report
     stats_.analyze_s += gs.stats().analyze_s;
     stats_.factorize_s += gs.stats().factorize_s;
     stats_.factor_flops_total += gs.stats().flops_total();
+    stats_.factor.flops += gs.stats().flops;
+    stats_.factor.nnz_factor += gs.stats().nnz_factor;
   }
 }
 
