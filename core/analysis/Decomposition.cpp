@@ -97,7 +97,7 @@ BodyDecomposition decompose_body(const Body& body, int b, const DofMap& dofs, co
     assembler.add(subdomain_source(dec.subdomains[s], b, nodal_load, dec.interface.multiplicity));
   }
   if (options.assemble) {
-    BlockSystem local{std::move(dec.groups), {}, {}, {}, {}, {}, {}};
+    BlockSystem local{std::move(dec.groups), {}, {}, {}, {}, {}, {}, {}};
     assembler.assemble(all_groups(local), {}, 1.0, local);
     dec.groups = std::move(local.groups);
   }

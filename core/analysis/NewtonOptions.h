@@ -23,6 +23,19 @@ enum class ConstantTangents { Keep, Refactor };
 /// Where a step's first iteration starts: at the converged state with the prescribed increment carried by the tangent
 /// (tangent), or at the converged state plus the last converged step's displacement scaled to this step (extrapolate).
 enum class Predictor { Tangent, Extrapolate };
+/// The interface Krylov solve's relative tolerance per Newton iteration (mixed, feti, petsc): solver.cg_tolerance at
+/// every iteration (fixed), or following the Newton residual (Eisenstat–Walker; analysis/ForcingSequence).
+enum class Forcing { Fixed, EisenstatWalker };
+
+/// The interface tolerance under Newton two orders below Newton's residual tolerance: the interface solve's relative
+/// residual is the constraint error it leaves (gaps, sticking points' slips, glue) relative to the interface's data;
+/// Newton's constraint, correction and projection checks measure the same error against one step (a rolling pass at
+/// 1e-4 diverged after 0.12 mm of travel). solver.cg_tolerance left unset under `fixed` forcing; the tightest tolerance
+/// (the floor) of `eisenstat_walker`.
+inline constexpr double kInterfaceTolerancePerNewton = 1e-2;
+/// The loosest interface tolerance of `eisenstat_walker` forcing when solver.cg_tolerance is unset: on the main job
+/// 1e-2 took 24 % more Newton iterations than a fixed 1e-10, 1e-4 1.4 %, 1e-5 0.3 % (docs/BENCHMARKS-NONLINEAR.md).
+inline constexpr double kLoosestForcing = 1e-5;
 
 template <>
 inline const std::vector<std::string>& words<ContactTangent>() {
@@ -45,6 +58,11 @@ inline const std::vector<std::string>& words<Predictor>() {
   return w;
 }
 template <>
+inline const std::vector<std::string>& words<Forcing>() {
+  static const std::vector<std::string> w{"fixed", "eisenstat_walker"};
+  return w;
+}
+template <>
 inline const std::vector<std::string>& words<ConstantTangents>() {
   static const std::vector<std::string> w{"keep", "refactor"};
   return w;
@@ -63,6 +81,7 @@ struct NewtonOptions {
   ConstantTangents constant_tangents = ConstantTangents::Keep;
   Predictor predictor = Predictor::Tangent;
   double duration = 0;  // the analysis's time [s]: a step of load-factor span Δλ lasts Δλ × duration (0: no time)
+  Forcing forcing = Forcing::Fixed;
   // how the user makes the steps smaller, for a diverged run's advice (a process's own step: "a smaller
   // process.travel_increment (now 1 mm)"); empty: more analysis.increments
   std::string smaller_steps;
@@ -109,6 +128,13 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
                "scaled to this step, the prescribed dofs at their new values (a steadily flowing body starts near "
                "its answer; docs/BENCHMARKS-NONLINEAR.md \"Predictors\")"),
            &N::predictor),
+      bind(str("forcing",
+               "Newton under mixed, feti and petsc: the interface Krylov solve's relative tolerance at each iteration "
+               "— fixed: solver.cg_tolerance at every iteration; eisenstat_walker: loose while the Newton residual "
+               "falls slowly and tighter as it falls fast (Eisenstat & Walker's choice 2), solver.cg_tolerance (unset: "
+               "1e-5) its loosest value and analysis.tolerance / 100 its tightest, the constraint rows still met to "
+               "analysis.tolerance before a step is accepted (docs/BENCHMARKS-NONLINEAR.md \"Inexact Newton\")"),
+           &N::forcing),
       bind(str("contact_tangent",
                "Newton with contact pairs that slide `large_every_iteration`: the contact's geometric stiffness (how "
                "the rows' normal and projection turn with the displacement: node-to-segment in 2D, node-to-face in "

@@ -12,6 +12,7 @@
 #include "analysis/ConstraintAssembly.h"
 #include "analysis/ContactResults.h"
 #include "analysis/DriverSteps.h"
+#include "analysis/ForcingSequence.h"
 #include "analysis/GroupLayout.h"
 #include "analysis/LinearStatic.h"
 #include "analysis/Recovery.h"
@@ -35,6 +36,20 @@ struct Attempt {
 
 /// The multipliers' accuracy of an exact (direct or dense) solve: a looser one is an interface Krylov solve's.
 constexpr double kExactInterface = 1e-10;
+/// The share of the constraint check's limit an inexact interface solve need not go below (the rest is left to the
+/// nonlinear change of the rows over the iteration).
+constexpr double kEnoughConstraint = 0.1;
+
+/// What one iterate measures against Newton's checks.
+struct Iterate {
+  bool balanced = false;        // the residual ratio is within analysis.tolerance
+  double relative = 0;          // ‖r_k‖ / the step's residual scale
+  int changed = 0;              // contact points whose status the last solve changed
+  double correction = 0;        // ‖du‖ of the last solve
+  double step = 0;              // ‖u − u_n‖, the step's displacement so far
+  double constraint = 0;        // max |C u − d| over the contact and glue rows
+  double constraint_limit = 0;  // analysis.tolerance × max(max |u − u_n|, BlockSystem::d_reference)
+};
 
 std::string fmt(double v) {
   char buf[32];
@@ -61,7 +76,8 @@ class NewtonRun {
         policy_(policy),
         obs_(obs),
         opt_(opt),
-        layout_(model, solver.uses_subdomains(), multiplier_choice(solver.options())) {
+        layout_(model, solver.uses_subdomains(), multiplier_choice(solver.options())),
+        forcing_(opt.forcing, solver.options().cg_tolerance, kInterfaceTolerancePerNewton * opt.tolerance) {
     for (const Group& g : layout_.system().groups) u_.push_back(Eigen::VectorXd::Zero(g.R.rows()));
     unfactored_.assign(u_.size(), 0);
     // petsc: every rank runs this driver alike, assembling the tangent of its own subdomain only
@@ -117,10 +133,12 @@ class NewtonRun {
   std::string line_search(const std::vector<size_t>& tangent, GroupAssembler::Factors at, double& eta);
   /// Stick/slip and active-set update from the last solve (its λ and the iterate); the number of points changed.
   int update_statuses(double lf);
-  /// The first of Newton's checks the iterate fails — the residual ratio, the contact statuses, the correction
-  /// ‖du‖ against the step's displacement — with its value and limit; "" when it passes them (then the projections
-  /// are checked: unmet_projections).
-  std::string unmet_check(bool balanced, double relative, int changed, double correction, double step) const;
+  /// The first of Newton's checks the iterate fails — the residual ratio, the contact statuses, the constraint rows
+  /// against the step's displacement, the correction ‖du‖ against it — with its value and limit; "" when it passes
+  /// them (then the projections are checked: unmet_projections).
+  std::string unmet_check(const Iterate& it) const;
+  /// The iterate's residual ratio, step and constraint error (the rows set at it); `from`: u where the step began.
+  Iterate measure(double residual, double first, int k, const std::vector<Eigen::VectorXd>& from) const;
   std::string unmet_projections(double relative, const ProjectionDrift& drift) const;
   /// For a check an inexact interface solve can fail: its tolerance named as a remedy ("" for an exact solve).
   std::string interface_hint() const;
@@ -145,6 +163,7 @@ class NewtonRun {
   AnalysisObserver& obs_;
   const NewtonOptions& opt_;
   GroupLayout layout_;
+  ForcingSequence forcing_;         // the interface solve's tolerance per iteration (analysis.forcing)
   std::vector<Eigen::VectorXd> u_;  // free dofs per group, the current iterate
   std::vector<PairState> pairs_;
   std::vector<ConstraintRow> rows_;
@@ -361,17 +380,41 @@ std::vector<TangentChoice> NewtonRun::tangent_choices(const std::vector<size_t>&
   return out;
 }
 
-std::string NewtonRun::unmet_check(bool balanced, double relative, int changed, double correction, double step) const {
-  const std::string ratio = "the residual ratio " + fmt(relative);
-  if (!balanced) return ratio + " is above its tolerance " + fmt(opt_.tolerance) + " (analysis.tolerance)";
+Iterate NewtonRun::measure(double residual, double first, int k, const std::vector<Eigen::VectorXd>& from) const {
+  Iterate it;
+  it.relative = first > 0 ? residual / first : 0.0;
+  it.balanced = residual == 0.0 || (k > 1 && it.relative <= opt_.tolerance);
+  double largest = 0;
+  for (size_t g = 0; g < u_.size(); ++g) {
+    const Eigen::VectorXd du = u_[g] - from[g];
+    it.step += du.squaredNorm();
+    if (du.size()) largest = std::max(largest, du.lpNorm<Eigen::Infinity>());
+  }
+  it.step = std::sqrt(it.step);
+  const BlockSystem& sys = layout_.system();
+  it.constraint = sys.d.size() ? sys.d.lpNorm<Eigen::Infinity>() : 0.0;  // d − C u at the iterate
+  // of the step's displacement, or of the terms d was computed from (a fixed interface tolerance leaves errors of the
+  // whole interface's data, which do not shrink with the correction)
+  it.constraint_limit = opt_.tolerance * std::max(largest, sys.d_reference);
+  return it;
+}
+
+std::string NewtonRun::unmet_check(const Iterate& it) const {
+  const std::string ratio = "the residual ratio " + fmt(it.relative);
+  if (!it.balanced) return ratio + " is above its tolerance " + fmt(opt_.tolerance) + " (analysis.tolerance)";
   const std::string but = ratio + " is within its tolerance " + fmt(opt_.tolerance) + ", but ";
-  if (!lambda_valid_ || changed)
-    return but + "the contact check failed: " + std::to_string(changed) +
+  if (!lambda_valid_ || it.changed)
+    return but + "the contact check failed: " + std::to_string(it.changed) +
            " contact points changed status (in or out, stick or slip) in the last iteration";
-  const double limit = opt_.displacement_tolerance * step;
-  if (correction > limit)
-    return but + "the correction check failed: ‖du‖ = " + fmt(correction) + " is above " +
-           fmt(opt_.displacement_tolerance) + " × the step's displacement " + fmt(step) + " = " + fmt(limit) +
+  if (it.constraint > it.constraint_limit)
+    return but + "the constraint check failed: a contact or glue row is unmet by " + fmt(it.constraint) +
+           ", above analysis.tolerance × the rows' scale (the step's largest displacement, or the terms of their "
+           "right-hand side) = " +
+           fmt(it.constraint_limit) + interface_hint();
+  const double limit = opt_.displacement_tolerance * it.step;
+  if (it.correction > limit)
+    return but + "the correction check failed: ‖du‖ = " + fmt(it.correction) + " is above " +
+           fmt(opt_.displacement_tolerance) + " × the step's displacement " + fmt(it.step) + " = " + fmt(limit) +
            interface_hint();
   return "";
 }
@@ -384,10 +427,9 @@ std::string NewtonRun::unmet_projections(double relative, const ProjectionDrift&
 }
 
 std::string NewtonRun::interface_hint() const {
-  const double tol = solver_.multiplier_tolerance();
-  if (!(tol > kExactInterface)) return "";
+  if (!(solver_.multiplier_tolerance() > kExactInterface)) return "";
   return " — the interface solve leaves constraint errors of its tolerance: a tighter solver.cg_tolerance (now " +
-         fmt(tol) + ")";
+         fmt(solver_.options().cg_tolerance) + ")";
 }
 
 std::string NewtonRun::advice(const std::string& cause) const {
@@ -403,6 +445,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
   step_start_ = body_displacements(from);
+  forcing_.restart();
   const bool extrapolated = extrapolate(lf - from);
   new_step(pairs_);
   layout_.assembler().set_step_time((lf - from) * opt_.duration);
@@ -461,14 +504,13 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     // the scale: the first residual, or the second where the increment is driven by motions that the first does not
     // see (a prescribed rigid body, a moved contact surface: ‖r_1‖ is the last increment's round-off)
     if (k <= 2) first = std::max(first, residual);
-    const double relative = first > 0 ? residual / first : 0.0;
-    double step = 0;
-    for (size_t g = 0; g < u_.size(); ++g) step += (u_[g] - u_start[g]).squaredNorm();
-    step = std::sqrt(step);
+    Iterate it = measure(residual, first, k, u_start);
+    it.changed = changed, it.correction = correction;
+    const double relative = it.relative;
     if (k > 1) obs_.on_newton_iteration(increment, k - 1, relative);
-    const bool balanced = residual == 0.0 || (k > 1 && relative <= opt_.tolerance);
+    const bool balanced = it.balanced;
     // the check this iterate fails, kept for the message: a search again after the projection check counts as it
-    if (!searched_again || !balanced) unmet = unmet_check(balanced, relative, changed, correction, step);
+    if (!searched_again || !balanced) unmet = unmet_check(it);
     searched_again = false;
     if (unmet.empty()) {
       // a frozen friction direction must oppose its point's slip where the step ends (Friction.h, release_frozen)
@@ -501,6 +543,7 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     for (size_t g : tangent) unfactored_[g] = 0;
     const long cg_before = solver_.stats().cg_iterations;
     check_floating_groups_held(sys);
+    sys.interface_tolerance = forcing_.next(residual, balanced, kEnoughConstraint * it.constraint_limit);
     BlockSolution sol;
     try {  // the first solve's failures are the model's (supports, options): solve_checked names them
       sol = solved_once_ ? solver_.solve(sys, &obs_) : solve_checked(model_, layout_.body_dofs(), solver_, sys, obs_);

@@ -542,6 +542,7 @@ Model build_model(const Project& project) {
   }
   for (std::string& w : conditioning_warnings(model)) model.warnings.push_back(std::move(w));
   for (std::string& w : material_warnings(d)) model.warnings.push_back(std::move(w));
+  for (std::string& w : project.config().warnings) model.warnings.push_back(std::move(w));
   return model;
 }
 

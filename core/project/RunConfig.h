@@ -25,8 +25,9 @@ struct RunConfig {
   IncrementOptions steps;  // analysis.increments (a rolling pass: from its travel) and the active-set limit
   NewtonOptions newton;    // newton.increments = steps.increments
   OutputConfig output;
-  const Process* process = nullptr;  // process.type from the registry (null: none)
-  nlohmann::json process_section;    // its validated section, what ProcessRun is started from
+  const Process* process = nullptr;   // process.type from the registry (null: none)
+  nlohmann::json process_section;     // its validated section, what ProcessRun is started from
+  std::vector<std::string> warnings;  // options that work against each other (model.warnings gets them)
 };
 
 /// The configuration of a validated project (defaults filled in, process expanded where it sets the increments).

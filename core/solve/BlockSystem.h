@@ -65,6 +65,18 @@ struct ConstraintBlock {
   long size() const { return end - begin; }
 };
 
+/// An interface Krylov solve's stopping test (mixed, feti; petsc: its rtol): ‖Pᵀr_k‖ ≤ max(relative × ‖Pᵀr_0‖,
+/// absolute), the projected residual being the constraint error its λ leaves. What an inexact Newton iteration asks of
+/// its solve (analysis/ForcingSequence).
+struct InterfaceTolerance {
+  double relative = 0;  // 0: the strategy's solver.cg_tolerance
+  double absolute = 0;  // 0: none
+  // r_0 the residual at lambda_start (the last iteration's λ, whatever solver.interface_start says), not at the
+  // least-norm start: λ is the total multiplier, so only the residual at the last λ is of the size of the correction
+  // Newton asks for — the forcing term's reference (a loose tolerance of the least-norm start's residual undoes it)
+  bool from_last = false;
+};
+
 struct BlockSystem {
   std::vector<Group> groups;
   Eigen::VectorXd d;                    // right-hand side of the constraints, one entry per multiplier
@@ -84,6 +96,8 @@ struct BlockSystem {
   // A guess of λ (the last Newton iteration's multipliers of the rows that stay, 0 for new rows) where iterative
   // strategies start their interface solve; empty: none (they start from the least-norm λ with Gᵀλ = e).
   Eigen::VectorXd lambda_start;
+  // This solve's interface tolerance where a Newton driver sets one; {0, 0}: solver.cg_tolerance.
+  InterfaceTolerance interface_tolerance;
 
   long num_dofs() const {
     long n = 0;

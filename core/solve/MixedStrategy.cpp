@@ -58,10 +58,13 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
     if (observer) observer->on_factorization(sys.groups[g].name);
   }
   stats_.analyze_s = stats_.factorize_s = stats_.factor_flops_total = 0;
-  for (const GroupSolver& gs : groups_) {
+  stats_.factor.flops = stats_.factor.nnz_factor = 0;  // one factorization of every group: what one global factor
+  for (const GroupSolver& gs : groups_) {              // would report
     stats_.analyze_s += gs.stats().analyze_s;
     stats_.factorize_s += gs.stats().factorize_s;
     stats_.factor_flops_total += gs.stats().flops_total();
+    stats_.factor.flops += gs.stats().flops;
+    stats_.factor.nnz_factor += gs.stats().nnz_factor;
   }
 }
 
@@ -143,6 +146,12 @@ Eigen::MatrixXd MixedStrategy::formed_interface(const BlockSystem& sys) {
   return F;
 }
 
+ProjectedCGOptions MixedStrategy::krylov_options(const BlockSystem& sys, int solve) {
+  const InterfaceTolerance& t = sys.interface_tolerance;
+  last_tolerance_ = t.relative > 0 ? t.relative : options_.cg_tolerance;
+  return {last_tolerance_, options_.max_interface_iterations, {}, solve, t.absolute, t.from_last};
+}
+
 ProjectedCGResult MixedStrategy::solve_interface(const BlockSystem& sys, InterfaceProblem& problem,
                                                  bool new_preconditioner, int solve, AnalysisObserver* observer) {
   if (options_.interface_solver == InterfaceSolver::Dense) {
@@ -155,13 +164,14 @@ ProjectedCGResult MixedStrategy::solve_interface(const BlockSystem& sys, Interfa
     r.lambda = basis_.minimum_norm(r.lambda);  // a dependent row's share spread as the Krylov solvers spread it
     return r;
   }
-  if (options_.interface_start == InterfaceStart::Previous) problem.start = sys.lambda_start;
+  if (options_.interface_start == InterfaceStart::Previous || sys.interface_tolerance.from_last)
+    problem.start = sys.lambda_start;
   // an indefinite group factor (CholeskyOrLU) makes F symmetric but possibly indefinite on ker Gᵀ, where CG may
   // break down: GMRES then, as for an unsymmetric F; positive definite groups keep CG
   const bool krylov_gmres = problem.unsymmetric || any_indefinite();
   if (preconditioner_ && options_.projector == ProjectorMetric::Preconditioner && problem.Gs.cols() && !krylov_gmres)
     problem.QG = &weighted_modes(sys, problem.Gs, new_preconditioner);
-  ProjectedCGOptions cg{options_.cg_tolerance, options_.max_interface_iterations, {}, solve};
+  ProjectedCGOptions cg = krylov_options(sys, solve);
   if (preconditioner_) cg.preconditioner = [&](const Eigen::VectorXd& w) { return preconditioner_->apply(sys, w); };
   gmres_solves_ += krylov_gmres;
   return krylov_gmres ? projected_gmres(problem, cg, observer) : projected_cg(problem, cg, observer);
@@ -234,8 +244,7 @@ BlockSolution MixedStrategy::solve_plain(const BlockSystem& sys, AnalysisObserve
   stats_.cg_lambda_max = last_.lambda_max;
   BlockSolution out;
   out.lambda = last_.lambda;
-  out.status =
-      cg_status(last_, ProjectedCGOptions{options_.cg_tolerance, options_.max_interface_iterations, {}, solve});
+  out.status = cg_status(last_, krylov_options(sys, solve));
   if (options_.interface_solver == InterfaceSolver::Dense && !last_.converged) {
     char what[300];
     std::snprintf(what, sizeof what,

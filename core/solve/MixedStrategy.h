@@ -26,10 +26,10 @@ class MixedStrategy final : public SolverStrategy {
   bool solves_unsymmetric() const override { return true; }
   /// `mixed` (not `feti`): compliant rows join its interface, each multiplier with its compliance on F's diagonal.
   bool solves_compliant() const override { return !subdomains_; }
-  /// λ is as accurate as the interface CG's relative tolerance (dense: exact, as `direct`'s)
+  /// λ is as accurate as the last interface CG's relative tolerance (dense: exact, as `direct`'s)
   double multiplier_tolerance() const override {
     return options_.interface_solver == InterfaceSolver::Dense ? SolverStrategy::multiplier_tolerance()
-                                                               : options_.cg_tolerance;
+                                                               : last_tolerance_;
   }
   /// The last interface solve (residual history, constraint error), for tests and reports.
   const ProjectedCGResult& last_interface_solve() const { return last_; }
@@ -44,6 +44,9 @@ class MixedStrategy final : public SolverStrategy {
   /// F = Σ_g C_g K_g⁺ C_eq,gᵀ formed (the `dense` interface solver), each group's part concurrently
   Eigen::MatrixXd formed_interface(const BlockSystem& sys);
   /// The interface solve: dense, or projected CG / GMRES (with the preconditioner, when there is one)
+  /// The Krylov solve's options: the system's interface tolerance where it sets one, else solver.cg_tolerance
+  /// (kept as the multipliers' accuracy).
+  ProjectedCGOptions krylov_options(const BlockSystem& sys, int solve);
   ProjectedCGResult solve_interface(const BlockSystem& sys, InterfaceProblem& problem, bool new_preconditioner,
                                     int solve, AnalysisObserver* observer);
 
@@ -73,6 +76,7 @@ class MixedStrategy final : public SolverStrategy {
   std::vector<long> factored_version_;
   ProjectedCGResult last_;
   long gmres_solves_ = 0;
+  double last_tolerance_ = options_.cg_tolerance;  // the relative tolerance of the last interface solve
   SolveStats stats_;
 };
 

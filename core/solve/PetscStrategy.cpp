@@ -239,7 +239,7 @@ class PetscStrategy final : public SolverStrategy {
   BlockSolution solve(const BlockSystem& sys, AnalysisObserver* observer) override;
   const SolveStats& stats() const override { return stats_; }
   bool uses_subdomains() const override { return true; }
-  double multiplier_tolerance() const override { return options_.cg_tolerance; }
+  double multiplier_tolerance() const override { return rtol_; }
   const SolverOptions& options() const override { return options_; }
   std::vector<size_t> local_groups(std::vector<size_t> groups) const override {
     start_petsc();
@@ -259,7 +259,11 @@ class PetscStrategy final : public SolverStrategy {
   void release();
 
   SolverOptions options_;
+  /// The Krylov solves' relative tolerance: the system's interface tolerance where it sets one (an inexact Newton
+  /// iteration's forcing term), else solver.cg_tolerance; both KSPs get it (KSPFETIDP's inner CG on the multipliers).
+  void set_tolerance(const BlockSystem& sys);
   SolveStats stats_;
+  double rtol_ = options_.cg_tolerance;
   Numbering num_;
   Mat A_ = nullptr;
   KSP ksp_ = nullptr, inner_ = nullptr;  // inner_: FETI-DP's CG on the multipliers (bddc: ksp_ itself)
@@ -392,11 +396,20 @@ void PetscStrategy::set_up(const BlockSystem& sys) {
   ROLLSIM_PETSC(PCBDDCSetDofsSplittingLocal(bddc, dim, fields.data()));
   for (IS& f : fields) ROLLSIM_PETSC(ISDestroy(&f));
   // KSPFETIDP hands its own tolerances to the CG on the multipliers at set-up: both get them
-  ROLLSIM_PETSC(KSPSetTolerances(ksp_, options_.cg_tolerance, 1e-300, PETSC_DEFAULT, 10000));
-  ROLLSIM_PETSC(KSPSetTolerances(inner_, options_.cg_tolerance, 1e-300, PETSC_DEFAULT, 10000));
+  ROLLSIM_PETSC(KSPSetTolerances(ksp_, rtol_, 1e-300, PETSC_DEFAULT, 10000));
+  ROLLSIM_PETSC(KSPSetTolerances(inner_, rtol_, 1e-300, PETSC_DEFAULT, 10000));
   ROLLSIM_PETSC(KSPSetFromOptions(ksp_));
   ROLLSIM_PETSC(KSPSetUp(ksp_));
   versions_ = versions(sys);
+}
+
+void PetscStrategy::set_tolerance(const BlockSystem& sys) {
+  const double rtol = sys.interface_tolerance.relative > 0 ? sys.interface_tolerance.relative : options_.cg_tolerance;
+  if (rtol == rtol_) return;
+  rtol_ = rtol;
+  if (!ksp_) return;  // set_up gives it
+  ROLLSIM_PETSC(KSPSetTolerances(ksp_, rtol_, 1e-300, PETSC_DEFAULT, 10000));
+  ROLLSIM_PETSC(KSPSetTolerances(inner_, rtol_, 1e-300, PETSC_DEFAULT, 10000));
 }
 
 BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
@@ -409,6 +422,7 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
     ROLLSIM_PETSC(PetscOptionsInsertString(nullptr, options_.petsc_options.c_str()));
   // set-up is collective: every rank sets up again when any group's K changed (a Newton iteration of the selective
   // update may re-assemble one subdomain only) — the driver runs on every rank alike, so the versions are the same
+  set_tolerance(sys);
   if (versions_ != versions(sys) || !ksp_) {
     Stopwatch t;
     set_up(sys);

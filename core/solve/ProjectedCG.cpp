@@ -1,5 +1,6 @@
 #include "solve/ProjectedCG.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -75,11 +76,12 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
     if (wg.norm() < w0) res.lambda = std::move(guess), r = std::move(rg), w = std::move(wg);
   }
   res.residuals.push_back(w0 > floor ? w.norm() / w0 : 0.0);
+  const double target = std::max(o.tolerance * (o.relative_to_start ? w.norm() : w0), o.absolute);
   res.max_constraint_error = constraint_error(G, p.e, res.lambda, g_max);
   Eigen::VectorXd dir;
   double wy_prev = 0;
   std::vector<double> steps, updates;  // CG's a_k, b_k for the eigenvalue estimate
-  res.converged = w0 <= floor || res.residuals[0] <= o.tolerance;
+  res.converged = w0 <= floor || w.norm() <= target;
   while (!res.converged && res.iterations < o.max_iterations) {
     const Eigen::VectorXd y = P.direction(o.preconditioner ? o.preconditioner(w) : w);
     const double wy = w.dot(y);
@@ -102,7 +104,7 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
     res.residuals.push_back(rel);
     res.max_constraint_error = std::max(res.max_constraint_error, constraint_error(G, p.e, res.lambda, g_max));
     if (observer) observer->on_cg_iteration(o.solve, res.iterations, rel);
-    res.converged = rel <= o.tolerance;
+    res.converged = w.norm() <= target;
     if (!res.converged && w.norm() <= floor) {  // no digit left to gain: the tolerance is below round-off here
       res.round_off = true;
       break;

@@ -39,8 +39,10 @@ struct InterfaceProblem {
 struct ProjectedCGOptions {
   double tolerance = 1e-4;  // on ‖Pᵀ r_k‖ / ‖Pᵀ r_0‖
   int max_iterations = 10000;
-  LinearOperator preconditioner;  // z = M⁻¹ w (empty: identity)
-  int solve = 1;                  // the linear solve's number, reported with every iteration
+  LinearOperator preconditioner;   // z = M⁻¹ w (empty: identity)
+  int solve = 1;                   // the linear solve's number, reported with every iteration
+  double absolute = 0;             // or on ‖Pᵀ r_k‖ itself (0: none): converged at the larger of the two
+  bool relative_to_start = false;  // `tolerance` of the start's residual (the guess's, when it is kept), not of w_0
 };
 
 struct ProjectedCGResult {

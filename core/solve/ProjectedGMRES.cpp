@@ -1,5 +1,6 @@
 #include "solve/ProjectedGMRES.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -56,7 +57,10 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
     if (rg.norm() < r0) res.lambda = std::move(guess), raw = std::move(raw_g), r = std::move(rg);
   }
   res.residuals.push_back(r0 > floor ? r.norm() / r0 : 0.0);
-  res.converged = r0 <= floor || res.residuals[0] <= o.tolerance;
+  // the relative tolerance (of the start's residual, when asked), or the absolute one, as a residual relative to r0
+  const double tolerance =
+      std::max(o.tolerance * (o.relative_to_start ? res.residuals[0] : 1.0), r0 > 0 ? o.absolute / r0 : 0.0);
+  res.converged = r0 <= floor || res.residuals[0] <= tolerance;
   while (!res.converged && !res.breakdown && !res.cancelled && res.iterations < o.max_iterations) {
     const double beta = r.norm();
     Hessenberg h(beta);
@@ -86,7 +90,7 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
         res.breakdown = true;
         break;
       }
-      if (rel <= o.tolerance || next <= 1e-14 * beta) {  // converged, or the Krylov space is exhausted
+      if (rel <= tolerance || next <= 1e-14 * beta) {  // converged, or the Krylov space is exhausted
         ++k;
         break;
       }
@@ -103,7 +107,7 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
     raw = p.b - p.F(res.lambda);
     r = P.direction(raw);
     res.residuals.back() = r.norm() / r0;  // the true residual at the cycle's end
-    res.converged = res.residuals.back() <= o.tolerance;
+    res.converged = res.residuals.back() <= tolerance;
     // below the floor, or F singular on the projected space and the data not quite in its range (a multiplier that
     // no dof carries, a kernel mode kept at round-off): no iterate gets closer, the best one is the answer
     if (!res.converged && (r.norm() <= floor || null_space)) res.round_off = true;

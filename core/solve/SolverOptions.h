@@ -123,9 +123,11 @@ inline const std::vector<BoundField<SolverOptions>>& solver_option_fields() {
       without_default(bind(flag(below(positive("cg_tolerance", "-",
                                                "relative residual tolerance of the interface CG (mixed/feti; petsc: "
                                                "its Krylov solver's rtol). Unset: 1e-4 in a linear analysis; under "
-                                               "Newton analysis.tolerance / 100 (1e-10 by default), since the "
-                                               "constraint error a looser solve leaves keeps Newton's checks from "
-                                               "being met (project/RunConfig)"),
+                                               "Newton with analysis.forcing fixed analysis.tolerance / 100 (1e-10 "
+                                               "by default), since the constraint error a looser solve leaves keeps "
+                                               "Newton's checks from being met (a looser one is warned of); under "
+                                               "eisenstat_walker the loosest tolerance of an iteration (unset: 1e-5; "
+                                               "project/RunConfig)"),
                                       1.0),
                                 "cg-tolerance"),
                            &S::cg_tolerance)),

@@ -385,8 +385,8 @@ TEST(NewtonStatic, ExtrapolatedPredictorUpsetsInFewerIterationsToTheSameForce) {
 }
 
 // The paper's pass with the interface solved to 1e-4 (explicitly: unset, it follows Newton's tolerance): the residual
-// ratio falls below 1e-8, but the slab's contact points stay off their projections by the interface's error. The
-// message names that check, its value and limit, and the tolerance to tighten — not only "no convergence".
+// ratio falls below 1e-8, but the contact rows stay unmet by the interface's error. The message names that check,
+// its value and limit, and the tolerance to tighten — not only "no convergence".
 TEST(NewtonStatic, AStepBalancedButNotConvergedNamesTheCheckThatFailed) {
   json pass = testing_support::paper_pass_2d(4.0, 1.0);
   pass["solver"] = {{"mode", "mixed"}, {"update", "selective"}, {"cg_tolerance", 1e-4}};
@@ -394,8 +394,10 @@ TEST(NewtonStatic, AStepBalancedButNotConvergedNamesTheCheckThatFailed) {
   ASSERT_EQ(r.status.status, Status::diverged) << r.status.message;
   const std::string& m = r.status.message;
   EXPECT_NE(m.find("no convergence in 25 iterations: the residual ratio "), std::string::npos) << m;
-  EXPECT_NE(m.find(" is within its tolerance 1e-08, but the projection check failed: "), std::string::npos) << m;
-  EXPECT_NE(m.find("contact points are off their projection on the master surface by up to "), std::string::npos) << m;
+  EXPECT_NE(
+      m.find(" is within its tolerance 1e-08, but the constraint check failed: a contact or glue row is unmet by "),
+      std::string::npos)
+      << m;
   EXPECT_NE(m.find("a tighter solver.cg_tolerance (now 0.0001)"), std::string::npos) << m;
 }
 

@@ -1,5 +1,7 @@
 // Projected CG reports each iteration with its solve number and stops at the observer's cancel request between
-// iterations, returning its current iterate: still feasible (Gᵀλ = e) and nearer the solution than the start.
+// iterations, returning its current iterate: still feasible (Gᵀλ = e) and nearer the solution than the start. An
+// inexact Newton iteration's tolerance (BlockSystem::InterfaceTolerance) stops it at an absolute residual, or at a
+// share of its guess's residual rather than of the least-norm start's.
 #include <gtest/gtest.h>
 
 #include "solve/ProjectedCG.h"
@@ -144,6 +146,27 @@ TEST(ProjectedCG, StartsFromAGuessWithTheToleranceOfTheLeastNormStart) {
   EXPECT_EQ(far.residuals[0], 1.0);
   EXPECT_EQ(far.iterations, cold.iterations);
   EXPECT_EQ(far.lambda, cold.lambda);
+}
+
+TEST(ProjectedCG, StopsAtAnAbsoluteResidualOrAShareOfItsGuesssResidual) {
+  InterfaceProblem p = laplacian(200);
+  ProjectedCGOptions o;
+  o.tolerance = 1e-12;
+  const ProjectedCGResult exact = projected_cg(p, o);
+  o.absolute = 1e-3 * p.b.norm();
+  const ProjectedCGResult loose = projected_cg(p, o);
+  EXPECT_TRUE(loose.converged);
+  EXPECT_LT(loose.iterations, exact.iterations);
+  // a guess near the answer: 1e-2 of the least-norm start's residual is met at once, 1e-2 of the guess's is not
+  p.start = exact.lambda + 1e-6 * Eigen::VectorXd::LinSpaced(200, -1, 1);
+  o = ProjectedCGOptions{};
+  o.tolerance = 1e-2;
+  EXPECT_EQ(projected_cg(p, o).iterations, 0);
+  o.relative_to_start = true;
+  const ProjectedCGResult from_guess = projected_cg(p, o);
+  EXPECT_TRUE(from_guess.converged);
+  EXPECT_GT(from_guess.iterations, 0);
+  EXPECT_LE(from_guess.residuals.back(), 1e-2 * from_guess.residuals.front());
 }
 
 }  // namespace test_projected_cg
