@@ -66,12 +66,14 @@ void check_materials(const json& d, std::vector<Issue>& issues) {
   }
 }
 
-std::vector<std::string> material_warnings(const json& d) {
+std::vector<std::string> material_warnings(const json& d, size_t own) {
   std::vector<std::string> warnings;
   const json& materials = d.at("materials");
   for (size_t i = 0; i < materials.size(); ++i)
     if (const std::string w = temperature_warning(material_data(materials[i])); !w.empty())
-      warnings.push_back(at(i) + ".temperature: " + w);
+      warnings.push_back(
+          (i < own ? at(i) + ".temperature" : "process (its material '" + materials[i].value("name", "") + "')") +
+          ": " + w);
   return warnings;
 }
 

@@ -14,7 +14,9 @@ namespace rollsim {
 MaterialData material_data(const json& material);
 /// Problems of the materials of a validated, process-expanded project (paths materials[i]…).
 void check_materials(const json& expanded_project, std::vector<Issue>& issues);
-/// Warnings for the run: materials whose temperature lies outside their flow stress law's range.
-std::vector<std::string> material_warnings(const json& expanded_project);
+/// Warnings for the run: materials whose temperature lies outside their flow stress law's range. The first
+/// `own` materials are the project's (named by their path); the rest a process made (named by the process and
+/// the material's name: their paths are not in the user's file).
+std::vector<std::string> material_warnings(const json& expanded_project, size_t own);
 
 }  // namespace rollsim

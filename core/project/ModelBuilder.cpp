@@ -541,7 +541,8 @@ Model build_model(const Project& project) {
     model.probes.push_back(std::move(probe));
   }
   for (std::string& w : conditioning_warnings(model)) model.warnings.push_back(std::move(w));
-  for (std::string& w : material_warnings(d)) model.warnings.push_back(std::move(w));
+  for (std::string& w : material_warnings(d, project.data.at("materials").size()))
+    model.warnings.push_back(std::move(w));
   for (std::string& w : project.config().warnings) model.warnings.push_back(std::move(w));
   return model;
 }

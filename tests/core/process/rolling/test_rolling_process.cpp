@@ -316,6 +316,10 @@ TEST(RollingProcess, AHotPassesMissingOrIdleFieldsAreRefusedAtTheProcesssPath) {
   const std::string cold =
       refusal({{"type", "rolling"}, {"slab_flow_stress", shida}, {"roll_speed", 30.0}, {"slab_temperature", 500.0}});
   EXPECT_EQ(cold, "accepted") << "outside Shida's range is a warning of the run, not a refusal";
+  const Model model = rolling(2, {{"slab_flow_stress", shida}, {"roll_speed", 30.0}, {"slab_temperature", 500.0}});
+  ASSERT_EQ(model.warnings.size(), 1u);
+  EXPECT_EQ(model.warnings[0].rfind("process (its material 'slab'): 500 °C is outside the range the shida law", 0), 0u)
+      << model.warnings[0] << ": the generated material's path is not in the user's file";
 }
 
 TEST(RollingProcess, GeometryThatCannotBeBuiltIsRefusedAtTheProcesssPath) {
