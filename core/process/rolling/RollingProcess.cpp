@@ -204,6 +204,12 @@ MaterialData slab_material_data(const json& p) {
 /// ω R [length/s], 0 without a roll speed.
 double surface_speed(const json& p) { return p.value("roll_speed", 0.0) * 2 * M_PI / 60 * roll_radius(p); }
 
+/// The pass's time, travel / ωR [s] (analysis.duration); 0 without a roll speed.
+double pass_duration(const json& p) {
+  const double v = surface_speed(p);
+  return v > 0 ? p.at("travel").get<double>() / v : 0.0;
+}
+
 RadiusProfile roll_profile(const json& p) {
   RadiusProfile profile;
   for (const json& point : p.value("roll_profile", json::array()))
@@ -335,8 +341,7 @@ void check_geometry(const json& project, std::vector<Issue>& issues) {
 void check_slab_law(const json& p, std::vector<Issue>& issues) {
   if (!p.contains("slab_flow_stress")) return;
   const MaterialData slab = slab_material_data(p);
-  const double v = surface_speed(p), duration = v > 0 ? p.at("travel").get<double>() / v : 0.0;
-  for (const Issue& i : check_flow_stress(slab, duration)) {
+  for (const Issue& i : check_flow_stress(slab, pass_duration(p))) {
     if (i.path == "flow_stress")  // the rate needs time: the roll's speed gives it
       issues.push_back({"process.roll_speed", "is needed: the slab's flow stress law (" + slab.flow_stress.law +
                                                   ") depends on the strain rate, which the roll's speed sets"});
@@ -492,7 +497,7 @@ json expand_rolling(const json& project) {
   bcs.push_back(hub);
   out["analysis"]["increments"] =
       static_cast<int>(std::ceil(p.at("travel").get<double>() / p.at("travel_increment").get<double>() - 1e-9));
-  if (surface_speed(p) > 0) out["analysis"]["duration"] = p.at("travel").get<double>() / surface_speed(p);
+  if (pass_duration(p) > 0) out["analysis"]["duration"] = pass_duration(p);
   return out;
 }
 
