@@ -114,6 +114,23 @@ std::vector<double> GroupAssembler::committed_state(int body, int elements) cons
   return all;
 }
 
+void GroupAssembler::set_committed_state(int body, const std::vector<double>& all) {
+  for (size_t g = 0; g < sources_.size(); ++g) {
+    const GroupSource& src = sources_[g];
+    IntegrationState& st = states_[g];
+    if (src.model_body != body || st.per_element == 0) continue;
+    if (src.body_elements.empty()) {
+      st.committed = all;
+    } else {
+      const size_t per = static_cast<size_t>(st.per_element);
+      for (size_t e = 0; e < src.body_elements.size(); ++e)
+        std::copy_n(all.begin() + static_cast<std::ptrdiff_t>(per * static_cast<size_t>(src.body_elements[e])), per,
+                    st.committed.begin() + static_cast<std::ptrdiff_t>(per * e));
+    }
+    st.trial = st.committed;
+  }
+}
+
 std::vector<size_t> all_groups(const BlockSystem& sys) {
   std::vector<size_t> all(sys.groups.size());
   std::iota(all.begin(), all.end(), size_t{0});

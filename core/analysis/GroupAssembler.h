@@ -78,6 +78,9 @@ class GroupAssembler {
   /// The committed state of the `elements` elements of body `body`, gathered from its groups (element-major;
   /// empty for a material without state).
   std::vector<double> committed_state(int body, int elements) const;
+  /// Sets the committed (and trial) state of body `body` from `all` (element-major, as committed_state gives it): a
+  /// staggered field, such as the points' temperatures after the heat step, written back between steps.
+  void set_committed_state(int body, const std::vector<double>& all);
   /// Frees the kept assemblers (a linear analysis assembles once: their patterns would only add to its peak memory).
   void release_assemblers() { assemblers_.clear(); }
   /// Tangent evaluations per group so far (assemble and assemble_newton with K).

@@ -14,6 +14,7 @@
 #include "analysis/DriverSteps.h"
 #include "analysis/ForcingSequence.h"
 #include "analysis/GroupLayout.h"
+#include "analysis/HeatConduction.h"
 #include "analysis/LinearStatic.h"
 #include "analysis/Recovery.h"
 #include "base/Stopwatch.h"
@@ -93,6 +94,7 @@ class NewtonRun {
       iteration_sliding_ = iteration_sliding_ || p.sliding == ContactPair::Sliding::Iteration;
       couple_slip_ = couple_slip_ || p.kind == ContactKind::Coulomb;
     }
+    if (model.conducts_heat()) heat_ = std::make_unique<HeatConduction>(model);
     couple_slip_ = couple_slip_ && opt.friction_tangent == FrictionTangent::Consistent && solver.solves_unsymmetric();
     if (opt.contact_tangent == ContactTangent::Full && !solver.assembles_globally())
       throw AnalysisError(
@@ -150,6 +152,9 @@ class NewtonRun {
   /// against the policy's threshold, `all_why` when no residuals were taken (every group new), or a constant tangent.
   std::vector<TangentChoice> tangent_choices(const std::vector<size_t>& tangent, const std::vector<double>& share,
                                              const std::string& all_why) const;
+  /// A converged step of load-factor span `span` ending at `lf`: the heat conducted over its time (HeatConduction),
+  /// the points' temperatures written back into the committed state. `slid_before`: the pairs' slip where it began.
+  void heat_step(double span, double lf, const std::vector<std::vector<double>>& slid_before);
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
   /// Under `predictor: extrapolate`, u_ moved on by the last converged step's displacement scaled from its load-factor
   /// span to this step's; false when there is none yet (the first step) or the option is `tangent`.
@@ -188,6 +193,7 @@ class NewtonRun {
   double last_span_ = 0;
   double last_scale_ = 0, attempt_scale_ = 0;  // the residual scale of the last converged step, of the last attempt
   std::vector<NewtonIteration> log_;
+  std::unique_ptr<HeatConduction> heat_;  // the bodies that conduct heat (null: none does)
 };
 
 void NewtonRun::set_constraints(double lf, bool step_begins) {
@@ -304,6 +310,16 @@ std::vector<Eigen::VectorXd> NewtonRun::body_displacements(double lf) const {
   return full_displacements(layout_.body_dofs(), layout_.body_solution(s), lf);
 }
 
+void NewtonRun::heat_step(double span, double lf, const std::vector<std::vector<double>>& slid_before) {
+  std::vector<std::vector<double>> states;
+  for (size_t b = 0; b < model_.bodies.size(); ++b)
+    states.push_back(layout_.assembler().committed_state(static_cast<int>(b), model_.bodies[b].mesh.num_elements()));
+  const std::vector<Eigen::VectorXd> u = body_displacements(lf);
+  heat_->step({span * opt_.duration, &u, &pairs_, &slid_before}, states);
+  for (size_t b = 0; b < model_.bodies.size(); ++b)
+    if (!states[b].empty()) layout_.assembler().set_committed_state(static_cast<int>(b), states[b]);
+}
+
 void NewtonRun::recover_into(Results& into, double lf) const {
   const std::vector<Eigen::VectorXd> u = body_displacements(lf);
   into.bodies.clear();
@@ -313,6 +329,8 @@ void NewtonRun::recover_into(Results& into, double lf) const {
         recover(model_, static_cast<int>(b), u[b], lf, layout_.assembler().committed_state(static_cast<int>(b), ne)));
     if (!model_.bodies[b].partition.element_subdomain.empty())
       into.bodies.back().subdomain = model_.bodies[b].partition.element_subdomain;
+    if (heat_ && heat_->temperature(static_cast<int>(b)).size() > 0)
+      set_nodal_temperature(model_.bodies[b].mesh, heat_->temperature(static_cast<int>(b)), into.bodies.back());
   }
   const Eigen::VectorXd lc =
       lambda_valid_ ? Eigen::VectorXd(lambda_.head(contact_.d.size())) : Eigen::VectorXd::Zero(contact_.d.size());
@@ -630,7 +648,10 @@ Results NewtonRun::run() {
       continue;
     }
     layout_.assembler().commit();
+    std::vector<std::vector<double>> slid_before;
+    for (const PairState& s : pairs_) slid_before.push_back(s.slid);
     accumulate_slip(model_, body_displacements(target), step_start_, pairs_);
+    if (heat_) heat_step(target - lf, target, slid_before);
     last_step_ = u_;
     for (size_t g = 0; g < u_.size(); ++g) last_step_[g] -= std::get<0>(saved_)[g];
     last_span_ = target - lf;
@@ -673,6 +694,7 @@ Results NewtonRun::run() {
   res.timing.factorize_s = res.solver.factorize_s;
   res.timing.solve_s = res.solver.solve_s;
   res.timing.stiffness_s = assembly_s_;
+  if (heat_) res.timing.heat_s = heat_->seconds(), res.timing.heat_factorizations = heat_->factorizations();
   const BlockSystem& sys = layout_.system();
   for (size_t g = 0; g < sys.groups.size(); ++g)
     res.stiffness_evaluations[sys.groups[g].name] = layout_.assembler().tangent_evaluations()[g];
@@ -693,6 +715,10 @@ Results NewtonRun::run() {
 
 Results run_newton_static(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy,
                           AnalysisObserver* observer, const NewtonOptions& options, const IncrementMeasure* measure) {
+  if (model.conducts_heat() && !(options.duration > 0))
+    throw AnalysisError(
+        "heat conduction needs the analysis's time: give analysis.duration (a rolling pass: "
+        "process.roll_speed)");
   if (options.increments < 1 || options.increments > kMaxIncrements)
     throw AnalysisError("increments must be an integer in [1, " + std::to_string(kMaxIncrements) + "], got " +
                         std::to_string(options.increments));

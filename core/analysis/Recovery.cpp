@@ -82,4 +82,14 @@ std::array<double, 3> set_resultant(const BodyResults& r, int dim, const std::ve
   return s;
 }
 
+void set_nodal_temperature(const Mesh& mesh, const Eigen::VectorXd& T, BodyResults& r) {
+  r.nodal_temperature = T;
+  r.temperature.assign(static_cast<size_t>(mesh.num_elements()), 0.0);
+  const int nn = mesh.nodes_per_elem();
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    for (int a = 0; a < nn; ++a) r.temperature[static_cast<size_t>(e)] += T[mesh.element(e)[a]];
+    r.temperature[static_cast<size_t>(e)] /= nn;
+  }
+}
+
 }  // namespace rollsim

@@ -12,6 +12,9 @@ namespace rollsim {
 BodyResults recover(const Model& model, int body_index, Eigen::VectorXd displacement, double load_factor = 1.0,
                     const std::vector<double>& state = {});
 
+/// A conducting body's nodal temperatures into its results, with each element's mean of them as its temperature.
+void set_nodal_temperature(const Mesh& mesh, const Eigen::VectorXd& T, BodyResults& r);
+
 /// Sum of nodal forces over a node set, per component.
 std::array<double, 3> set_resultant(const BodyResults& r, int dim, const std::vector<int>& nodes);
 

@@ -22,8 +22,9 @@ struct BodyResults {
   std::vector<int> subdomain;                         // per element (0 while bodies are not partitioned)
   std::vector<double> plastic_strain;  // per element: mean equivalent plastic strain (plastic bodies only) [-]
   // per element: mean temperature, the material's plus the rise from plastic work (bodies whose material has a flow
-  // stress law or a heat capacity only) [°C]
+  // stress law or a heat capacity only), or the mean of its nodes' in a body that conducts heat [°C]
   std::vector<double> temperature;
+  Eigen::VectorXd nodal_temperature;  // per node, bodies that conduct heat (analysis/HeatConduction) [°C]
   // per node, sized only when the model has contact pairs: f·n / tributary length (2D) or area (3D) of each
   // contact point of a slave surface (positive in compression), 0 on every other node [stress]
   Eigen::VectorXd contact_pressure;
@@ -73,6 +74,8 @@ struct NewtonIteration {
 
 struct Timing {
   double total_s = 0, stiffness_s = 0, analyze_s = 0, factorize_s = 0, solve_s = 0, recovery_s = 0;
+  double heat_s = 0;            // the heat steps (analysis/HeatConduction): assembly, factorization and solve
+  int heat_factorizations = 0;  // of the heat system, one per converged step
 };
 
 struct Results {

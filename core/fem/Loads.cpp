@@ -86,6 +86,17 @@ Eigen::VectorXd traction_nodal_load(const Mesh& m, const Traction& t) {
   return F;
 }
 
+Eigen::VectorXd surface_node_areas(const Mesh& m, const std::vector<Facet>& facets, const Eigen::VectorXd* u) {
+  // the facets' load of a unit pressure along x whatever their normal: |n| dA spread by the shape functions
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.num_nodes()) * m.dim);
+  for (const Facet& f : facets)
+    add_facet_load(
+        m, f, [](const V3& n) { return V3(n.norm(), 0, 0); }, F, u);
+  Eigen::VectorXd areas(m.num_nodes());
+  for (int n = 0; n < m.num_nodes(); ++n) areas[n] = F[static_cast<Eigen::Index>(n) * m.dim];
+  return areas;
+}
+
 Eigen::VectorXd external_nodal_load(const Model& model, int b) {
   const Mesh& m = model.bodies[b].mesh;
   Eigen::VectorXd F = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.num_nodes()) * m.dim);

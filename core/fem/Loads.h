@@ -35,4 +35,9 @@ Eigen::MatrixXd follower_facet_stiffness(const Mesh& mesh, const Facet& facet, d
 /// The consistent nodal forces of one traction on `mesh` (its body's mesh), every dof.
 Eigen::VectorXd traction_nodal_load(const Mesh& mesh, const Traction& traction);
 
+/// ∫ N_a dA of every node a over the facets (2D: per unit thickness) in the positions X + u (u: node-major, every
+/// dof; null: as meshed): each node's share of the surface, where a flux per unit area becomes a nodal one.
+Eigen::VectorXd surface_node_areas(const Mesh& mesh, const std::vector<Facet>& facets,
+                                   const Eigen::VectorXd* u = nullptr);
+
 }  // namespace rollsim

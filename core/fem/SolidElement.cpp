@@ -117,6 +117,24 @@ auto SolidElement<D>::shape_integrals(const Coords& x) -> Eigen::Matrix<double, 
 }
 
 template <int D>
+auto SolidElement<D>::gauss_shape() -> const Eigen::Matrix<double, NGP, NN>& {
+  static const Eigen::Matrix<double, NGP, NN> at = [] {
+    const double q = 1.0 / std::sqrt(3.0);
+    Eigen::Matrix<double, NGP, NN> m;
+    Eigen::Matrix<double, NN, 1> N;
+    Eigen::Matrix<double, D, NN> dNxi;
+    for (int p = 0; p < NGP; ++p) {
+      double xi[3] = {0, 0, 0};
+      for (int i = 0; i < D; ++i) xi[i] = q * natural<D>(p, i);
+      shape<D>(xi, N, dNxi);
+      m.row(p) = N.transpose();
+    }
+    return m;
+  }();
+  return at;
+}
+
+template <int D>
 bool SolidElement<D>::gradients(const Coords& x, std::array<Gradients, NGP>& dN, std::array<double, NGP>& dv,
                                 Gradients& centre) {
   const double q = 1.0 / std::sqrt(3.0);

@@ -40,6 +40,9 @@ struct SolidElement {
   /// ∫ N_a dV over the element for every node a (2-point Gauss rule per direction): the consistent nodal share of
   /// a uniform load per unit volume (a body force b puts b ∫ N_a dV on node a).
   static Eigen::Matrix<double, NN, 1> shape_integrals(const Coords& x);
+  /// The shape functions at the Gauss points: row p holds N_a(ξ_p) for every node a (a point's value from its
+  /// element's nodes, and a point's share spread back onto them).
+  static const Eigen::Matrix<double, NGP, NN>& gauss_shape();
   /// Corner-node value from Gauss-point values (bilinear/trilinear extrapolation).
   static double extrapolate_to_node(const std::array<double, NGP>& gp, int node);
 };

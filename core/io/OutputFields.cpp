@@ -41,6 +41,9 @@ void plastic_strain(const Model&, size_t, const BodyResults& r, int e, double* o
 void temperature(const Model& m, size_t b, const BodyResults& r, int e, double* out) {
   out[0] = static_cast<size_t>(e) < r.temperature.size() ? r.temperature[e] : m.bodies[b].material.temperature;
 }
+void nodal_temperature(const Model& m, size_t b, const BodyResults& r, int n, double* out) {
+  out[0] = n < r.nodal_temperature.size() ? r.nodal_temperature[n] : m.bodies[b].material.temperature;
+}
 void jacobian_ratio(const Model& m, size_t b, const BodyResults& r, int e, double* out) {
   const Mesh& mesh = m.bodies[b].mesh;
   const bool displaced = r.displacement.size() == static_cast<Eigen::Index>(mesh.num_nodes()) * mesh.dim;
@@ -55,8 +58,10 @@ bool has_plasticity(const Model& m) {
   return std::any_of(m.bodies.begin(), m.bodies.end(), [](const Body& b) { return b.material.plastic(); });
 }
 bool has_temperature(const Model& m) {
-  return std::any_of(m.bodies.begin(), m.bodies.end(), [](const Body& b) { return b.material.thermal(); });
+  return std::any_of(m.bodies.begin(), m.bodies.end(),
+                     [](const Body& b) { return b.material.thermal() || b.material.conducts(); });
 }
+bool conducts_heat(const Model& m) { return m.conducts_heat(); }
 }  // namespace
 
 const std::vector<OutputField>& output_fields() {
@@ -74,8 +79,11 @@ const std::vector<OutputField>& output_fields() {
       {"von_mises", "von Mises stress (element mean)", "von Mises", "stress", L::Cell, 1, false, {}, element_von_mises},
       {"plastic_strain", "equivalent plastic strain (element mean)", "plastic strain", "-", L::Cell, 1, true,
        has_plasticity, plastic_strain},
-      {"temperature", "temperature (element mean: the material's plus the rise from plastic work)", "temperature", "°C",
-       L::Cell, 1, true, has_temperature, temperature},
+      {"temperature", "temperature (nodal: heat conduction)", "temperature", "°C", L::Node, 1, true, conducts_heat,
+       nodal_temperature},
+      {"temperature",
+       "temperature (element mean: the material's plus the rise from plastic work, or its nodes' where heat conducts)",
+       "temperature", "°C", L::Cell, 1, true, has_temperature, temperature},
       {"jacobian_ratio", "element quality: smallest corner Jacobian, deformed / undeformed (≤ 0: folded)", "J ratio",
        "-", L::Cell, 1, true, has_finite_strain, jacobian_ratio},
   };

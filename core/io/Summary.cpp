@@ -180,6 +180,10 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
                  {"analyze_s", r.timing.analyze_s}, {"factorize_s", r.timing.factorize_s},
                  {"solve_s", r.timing.solve_s},     {"recovery_s", r.timing.recovery_s}};
   if (run.peak_probe_s > 0) s["timing"]["peak_probe_s"] = run.peak_probe_s;
+  if (r.timing.heat_factorizations > 0) {
+    s["timing"]["heat_s"] = r.timing.heat_s;
+    s["timing"]["heat_factorizations"] = r.timing.heat_factorizations;
+  }
   s["config"] = run.config;  // every option as the run resolved it, defaults included
   s["increments"] = increments_section(model, r);
   if (!r.status.ok()) return s;

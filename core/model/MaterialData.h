@@ -32,12 +32,17 @@ struct MaterialData {
   double saturation_exponent = 0.0;  // δ [-]
   FlowStressData flow_stress;        // a law of strain, strain rate and temperature instead of the hardening above
   double temperature = 20.0;    // the body's initial temperature [°C], uniform (what a flow stress law is taken at)
-  double heat_capacity = 0.0;   // volumetric ρc [stress / K]: plastic work heats it adiabatically (0: never)
+  double heat_capacity = 0.0;   // volumetric ρc [stress / K]: plastic work heats it (0: never)
   double taylor_quinney = 0.9;  // β: the share of plastic work turned into heat [-]
+  // thermal conductivity k [W/(m K) = N/(s K) with mm, N and s]: with a heat capacity, the body conducts heat
+  // (nodal temperatures, analysis/HeatConduction); 0: each point keeps its own heat (adiabatic)
+  double conductivity = 0.0;
 
   bool plastic() const { return yield_stress > 0.0 || !flow_stress.law.empty(); }
   /// Whether its temperature matters: a flow stress law reads it, or plastic work raises it.
   bool thermal() const { return plastic() && (!flow_stress.law.empty() || heat_capacity > 0.0); }
+  /// Whether bodies of it carry a nodal temperature field: heat conducts through them.
+  bool conducts() const { return conductivity > 0.0 && heat_capacity > 0.0; }
 };
 
 }  // namespace rollsim

@@ -106,6 +106,26 @@ struct ContactPair {
   // the search projects a slave node only on master facets whose bounding box is within search_distance
   // (analysis.contact_search: boxes); false: on every facet (all)
   bool box_search = true;
+  // heat across the pair where its points touch, h_c (T_master − T_slave) per unit area [kW/(m² K) = N/(mm s K)]
+  // (0: none); and the share of the friction work, μ N × slip, that heats the slave (the rest heats the master)
+  double conductance = 0;
+  double friction_heat_to_slave = 0.5;
+};
+
+/// Heat a body's surface gives to the air around it: convection h (T − T_air) and radiation ε σ (T⁴ − T_air⁴) per
+/// unit area [kW/(m² K) = N/(mm s K) with mm, N and s; ε: -]. Its points in contact exchange with the other body
+/// instead.
+struct AirCooling {
+  int body = 0;
+  std::string surface;
+  double convection = 0;
+  double emissivity = 0;
+};
+
+/// What heat leaves the bodies that conduct (materials with a conductivity): to the air at `ambient` [°C].
+struct HeatExchange {
+  double ambient = 20;
+  std::vector<AirCooling> air;
 };
 
 struct Model {
@@ -118,9 +138,12 @@ struct Model {
   std::vector<BodyForce> body_forces;
   std::vector<Probe> probes;
   std::vector<ContactPair> contacts;
+  HeatExchange heat;
   std::vector<std::string> warnings;  // said to the user, e.g. a partition piece split automatically
 
   long total_nodes() const;
+  /// True when a body conducts heat (its material has a conductivity and a heat capacity).
+  bool conducts_heat() const;
   long total_elements() const;
 };
 

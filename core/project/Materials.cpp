@@ -25,10 +25,10 @@ void check_hardening(const json& m, const std::string& path, std::vector<Issue>&
                                                         "gives the hardening (remove them)"
                                                       : "hardening is given but no yield stress: the material is "
                                                         "elastic"});
-  if (m.contains("heat_capacity") && !has_yield && !has_law)
+  if (m.contains("heat_capacity") && !has_yield && !has_law && !m.contains("conductivity"))
     issues.push_back({path + ".heat_capacity",
-                      "has no effect on an elastic material (only plastic work heats it "
-                      "here): give it a yield stress or a flow_stress law, or remove it"});
+                      "has no effect on an elastic material that does not conduct (only plastic work would heat "
+                      "it): give it a conductivity, a yield stress or a flow_stress law, or remove it"});
   if (has_yield && m.contains("saturation_stress") &&
       m["saturation_stress"].get<double>() < m["yield_stress"].get<double>())
     issues.push_back({path + ".saturation_stress",
@@ -49,6 +49,7 @@ MaterialData material_data(const json& mat) {
   m.temperature = mat.value("temperature", m.temperature);
   m.heat_capacity = mat.value("heat_capacity", 0.0);
   m.taylor_quinney = mat.value("taylor_quinney", m.taylor_quinney);
+  m.conductivity = mat.value("conductivity", 0.0);
   if (mat.contains("flow_stress")) m.flow_stress = flow_stress_data(mat.at("flow_stress"));
   return m;
 }

@@ -10,6 +10,7 @@
 #include "partition/PartitionCheck.h"
 #include "partition/PartitionSpec.h"
 #include "process/ProcessRegistry.h"
+#include "project/HeatProject.h"
 #include "project/Materials.h"
 #include "project/MeshFactory.h"
 #include "project/ModelLimits.h"
@@ -234,6 +235,9 @@ std::string nonlinear_because(const json& d) {
       return "material '" + m.value("name", "") + "' is plastic";
   for (const json& b : d.at("bodies"))
     if (b.value("kinematics", "small") == "finite") return "body '" + b.value("name", "") + "' has finite kinematics";
+  for (const json& m : d.at("materials"))
+    if (m.contains("conductivity"))
+      return "material '" + m.value("name", "") + "' conducts heat (a heat step follows each Newton step)";
   for (const json& c : d.value("contacts", json::array()))
     if (c.value("type", "") == "sticking" || c.value("type", "") == "coulomb")
       return "contact pair '" + c.value("name", "") + "' has friction";
@@ -264,6 +268,7 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
   check_project_name(d, issues);
   check_unique(d.at("materials"), "materials", issues);
   check_materials(d, issues);
+  check_heat(d, issues);
   check_analysis_type(d, issues);
   check_unique(d.at("bodies"), "bodies", issues);
   check_unique(d.at("probes"), "probes", issues);
@@ -466,6 +471,8 @@ void add_contacts(Model& model, const json& d) {
                                   : ContactKind::Frictionless;
     p.friction = c.value("friction", 0.0);
     p.shear_limit = c.value("shear_limit", 0.0);
+    p.conductance = c.value("conductance", 0.0);
+    p.friction_heat_to_slave = c.value("friction_heat_to_slave", p.friction_heat_to_slave);
     p.slave_body = find_named(d.at("bodies"), c.at("slave_body").get<std::string>());
     p.master_body = find_named(d.at("bodies"), c.at("master_body").get<std::string>());
     p.slave_surface = c.at("slave_surface").get<std::string>();
@@ -517,6 +524,12 @@ Model build_model(const Project& project) {
     add_condition(model, conditions[i], d.at("bodies"), static_cast<int>(i));
   for (Issue& conflict : prescribed_conflicts(model)) issues.push_back(std::move(conflict));
   add_contacts(model, d);
+  add_heat(model, d);
+  for (size_t i = 0; i < model.heat.air.size(); ++i)
+    if (!model.bodies[static_cast<size_t>(model.heat.air[i].body)].mesh.surfaces.count(model.heat.air[i].surface))
+      issues.push_back({"heat.air[" + std::to_string(i) + "].surface",
+                        "no surface '" + model.heat.air[i].surface + "' in body '" +
+                            model.bodies[static_cast<size_t>(model.heat.air[i].body)].name + "'"});
   for (ContactPair& p : model.contacts) p.holds_slave = !free_rigid_modes(model, p.slave_body).empty();
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     if (in_contact(d, model.bodies[b].name)) continue;  // a floating body: the contact must hold it

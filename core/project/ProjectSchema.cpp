@@ -7,6 +7,7 @@
 #include "io/OutputFields.h"
 #include "material/FlowStress.h"
 #include "process/ProcessRegistry.h"
+#include "project/HeatProject.h"
 #include "project/RunProject.h"
 #include "solve/SolverStrategy.h"
 #include "solve/UpdatePolicy.h"
@@ -276,12 +277,15 @@ const ObjectSchema kMaterial{
                  -273.15, 5000),
          20.0),
      positive("heat_capacity", "stress/K",
-              "volumetric heat capacity ρc of a plastic material (MPa/K = J/(cm³·K) with mm and MPa; hot steel about "
-              "4.9): with it, plastic work heats each point adiabatically, ΔT = β ∫ τ_y dα / ρc (no conduction yet), "
+              "volumetric heat capacity ρc (MPa/K = J/(cm³·K) with mm and MPa; hot steel about 4.9): with it, plastic "
+              "work heats each point, ΔT = β ∫ τ_y dα / ρc — adiabatically, or conducted away with a conductivity — "
               "and a flow_stress law softens with it"),
      def(bounded(num("taylor_quinney", "-", "β: the share of plastic work turned into heat (with heat_capacity)"), 0,
                  1),
-         0.9)},
+         0.9),
+     positive("conductivity", "W/(m·K)",
+              "thermal conductivity k (= N/(s·K) with mm, N and s; steel about 30 hot, 45 cold): with "
+              "heat_capacity, the bodies made of it conduct heat (the `heat` section; analysis.duration needed)")},
     "",
     {}};
 
@@ -400,7 +404,16 @@ const ObjectSchema kContact{
             "The linear analysis always slides small"),
      positive("search_distance", "length",
               "slave nodes farther from the master surface are ignored (default: 1e-6 of the model size for tied, "
-              "5 % of the model size for frictionless)")},
+              "5 % of the model size for frictionless)"),
+     non_negative("conductance", "kW/(m²·K)",
+                  "heat transfer across the pair where it touches, h_c (T_master − T_slave) per unit area (= "
+                  "N/(mm·s·K) with mm, N and s; roll and hot slab 10–50): both bodies must conduct (the `heat` "
+                  "section)"),
+     def(bounded(num("friction_heat_to_slave", "-",
+                     "the share of the friction work (friction force × slip) that heats the slave body; the rest "
+                     "heats the master"),
+                 0, 1),
+         0.5)},
     "",
     {}};
 
@@ -545,7 +558,12 @@ const ObjectSchema& project_schema() {
        }(),
        objects("boundary_conditions", kBC, "supports and loads"), objects("contacts", kContact, "contact pairs"),
        object("analysis", analysis_schema(), "load increments"), object("solver", solver_schema(), "solver settings"),
-       objects("probes", kProbe, "reported points"), object("output", kOutput, "outputs")},
+       objects("probes", kProbe, "reported points"), object("output", kOutput, "outputs"),
+       [] {
+         Field f = object("heat", heat_schema(), "heat transfer between conducting bodies and to the air");
+         f.default_value = json();
+         return f;
+       }()},
       "",
       {}};
   return root;

@@ -59,7 +59,8 @@ TEST(ModelGrid, NoContactPressureWithoutContactPairs) {
 TEST(ModelGrid, OneArrayPerRegisteredOutputField) {
   Model model = sample("cylinder-indent-2d.json");
   model.bodies[0].material.yield_stress = 1e30;     // a plastic material (that stays elastic): every field is there,
-  model.bodies[0].material.heat_capacity = 4.9;     // its temperature too
+  model.bodies[0].material.heat_capacity = 4.9;     // its temperature too, at elements and (a conducting body)
+  model.bodies[0].material.conductivity = 30;       // at nodes
   model.bodies[0].kinematics = Kinematics::Finite;  // and a finite-strain body (its element quality); the linear
                                                     // analysis below solves it at small strain all the same
   auto solver = make_solver("direct", {});
@@ -83,7 +84,7 @@ TEST(ModelGrid, OneArrayPerRegisteredOutputField) {
     for (int c = 0; c < f.components; ++c) EXPECT_EQ(a->GetComponent(last, c), expected[c]) << f.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 11);
+  EXPECT_EQ(checked, 12);
 }
 
 /// The names of the arrays of `data`, sorted.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace rollsim {
@@ -24,6 +25,9 @@ const std::vector<RollingMeasure>& rolling_measures() {
       {{"volume_change", "slab volume change", "-"}, "-", &R::volume_change},
       {{"mean_pressure", "mean roll pressure", "MPa"}, "MPa", &R::mean_pressure},
       {{"roll_power", "roll power per roll", "kW/mm (per unit width)"}, "kW", &R::roll_power},
+      {{"slab_temperature", "slab mean temperature", "°C"}, "°C", &R::slab_temperature, true},
+      {{"surface_temperature", "slab surface temperature past the exit", "°C"}, "°C", &R::surface_temperature, true},
+      {{"roll_temperature", "roll surface temperature, hottest", "°C"}, "°C", &R::roll_temperature, true},
   };
   return table;
 }
@@ -103,6 +107,44 @@ double mean_spread(const RollingPass& pass, const Mesh& slab, const BodyResults&
   return counted ? 2 * sum / counted - pass.width : 0.0;
 }
 
+/// A body's temperature at its nodes: conducted, or its elements' (their points' adiabatic rises) averaged onto
+/// them; empty when it has none.
+Eigen::VectorXd nodal_temperature(const Mesh& mesh, const BodyResults& r) {
+  if (r.nodal_temperature.size() == mesh.num_nodes()) return r.nodal_temperature;
+  if (r.temperature.size() != static_cast<size_t>(mesh.num_elements())) return {};
+  Eigen::VectorXd T = Eigen::VectorXd::Zero(mesh.num_nodes()), count = T;
+  for (int e = 0; e < mesh.num_elements(); ++e)
+    for (int a = 0; a < mesh.nodes_per_elem(); ++a)
+      T[mesh.element(e)[a]] += r.temperature[static_cast<size_t>(e)], count[mesh.element(e)[a]] += 1;
+  return T.cwiseQuotient(count.cwiseMax(1.0));
+}
+
+/// The slab's and the roll's temperatures: the slab's volume mean (nodal values weighted by ∫ N dV), its top
+/// surface's mean past the exit plane (0 < x ≤ window) and the roll surface's hottest node. False: no temperature.
+bool temperatures(const Model& model, const RollingPass& pass, const IncrementResults& inc,
+                  const Eigen::VectorXd& share, double window, RollingIncrement& out) {
+  const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
+  const BodyResults& s = inc.bodies[static_cast<size_t>(pass.slab)];
+  const Eigen::VectorXd T = nodal_temperature(slab, s);
+  if (T.size() == 0) return false;
+  out.slab_temperature = share.dot(T) / share.sum();
+  double sum = 0;
+  int count = 0;
+  for (int n : slab.node_sets.at(pass.thickness_axis == 1 ? "ymax" : "zmax")) {
+    const double x = current(slab, s.displacement, n)[0];
+    if (x > 0 && x <= window) sum += T[n], ++count;
+  }
+  out.surface_temperature = count ? sum / count : 0.0;
+  const Body& roll = model.bodies[static_cast<size_t>(pass.roll)];
+  const Eigen::VectorXd R = nodal_temperature(roll.mesh, inc.bodies[static_cast<size_t>(pass.roll)]);
+  out.roll_temperature = roll.material.temperature;
+  if (R.size() > 0) {
+    out.roll_temperature = -std::numeric_limits<double>::infinity();
+    for (int n : roll.mesh.node_sets.at("outer")) out.roll_temperature = std::max(out.roll_temperature, R[n]);
+  }
+  return true;
+}
+
 double mean_advance(const Mesh& slab, const std::vector<int>& nodes, const Eigen::VectorXd& u) {
   double s = 0;
   for (int n : nodes) s += u[n * slab.dim];
@@ -162,6 +204,23 @@ double volume(const Mesh& mesh, const Eigen::VectorXd& u) {
   return mesh.dim == 2 ? volume<2>(mesh, u) : volume<3>(mesh, u);
 }
 
+/// ∫ N_a dV of every node of the mesh as meshed: its share of the body's volume.
+template <int D>
+Eigen::VectorXd node_volumes(const Mesh& mesh) {
+  using E = SolidElement<D>;
+  Eigen::VectorXd share = Eigen::VectorXd::Zero(mesh.num_nodes());
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    typename E::Coords x;
+    for (int a = 0; a < E::NN; ++a)
+      for (int k = 0; k < D; ++k) x(k, a) = mesh.nodes[static_cast<size_t>(mesh.element(e)[a])][static_cast<size_t>(k)];
+    const auto s = E::shape_integrals(x);
+    for (int a = 0; a < E::NN; ++a) share[mesh.element(e)[a]] += s[a];
+  }
+  return share;
+}
+
+Eigen::VectorXd node_volumes(const Mesh& mesh) { return mesh.dim == 2 ? node_volumes<2>(mesh) : node_volumes<3>(mesh); }
+
 /// The slab's contact nodes at the state `r`, by decreasing angle (entry first).
 std::vector<ArcPoint> arc_profile(const Model& model, const RollingPass& pass, const BodyResults& r) {
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
@@ -213,6 +272,7 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
   const double symmetry = pass.half_width ? 2.0 : 1.0;
   const double contact = rolling_theory(pass).contact_length;  // √(R Δh)
   const double volume0 = volume(slab, Eigen::VectorXd::Zero(slab.num_nodes() * slab.dim));
+  const Eigen::VectorXd share = node_volumes(slab);
   RollingResults out;
   double rear_before = 0, travel_before = 0;
   std::vector<std::pair<double, double>> fronts{{0.0, 0.0}};  // (travel, front advance) from the start
@@ -239,6 +299,7 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
       out.bite_increment = static_cast<int>(out.increments.size()) + 1;
     r.volume_change = volume(slab, u) / volume0 - 1;
     r.mean_pressure = r.contact_length > 0 ? r.roll_force / r.contact_length : 0.0;  // p̄ = F / (L b)
+    out.thermal = temperatures(model, pass, inc, share, contact, r) || out.thermal;
     rear_before = rear, travel_before = r.travel;
     out.increments.push_back(r);
   }

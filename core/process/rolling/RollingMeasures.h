@@ -21,6 +21,7 @@ struct RollingMeasure {
   Measure plane;           // name, label, unit in plane strain
   std::string solid_unit;  // the unit in 3D
   double RollingIncrement::*field;
+  bool thermal = false;       // reported only when the slab has a temperature (RollingResults::thermal)
   Measure in(int dim) const;  // the measure as a model of dimension `dim` reports it
 };
 const std::vector<RollingMeasure>& rolling_measures();

@@ -7,6 +7,7 @@
 #include "base/SchemaFields.h"
 #include "material/FlowStress.h"
 #include "mesh/StructuredBlock.h"
+#include "process/rolling/RollingHeat.h"
 #include "process/rolling/RollingReport.h"
 #include "process/rolling/RollingRun.h"
 
@@ -101,6 +102,14 @@ const ObjectSchema& rolling_process_schema() {
          return f;
        }(),
        count("slab_nt", 8, "slab elements across the half thickness"),
+       [] {
+         Field f = number("thickness_grading", "-", 1, 1, 4,
+                          "size ratio of each slab element across the thickness to its neighbour nearer the top "
+                          "surface: the elements shrink geometrically toward the roll, same count (1: uniform) — "
+                          "where heat_transfer's chill and the friction's shear are steepest");
+         f.min_exclusive = false;
+         return f;
+       }(),
        count("slab_nw", 8, "slab elements across the half width (3D)"),
        count("roll_n_around", 120, "roll elements around the circumference"),
        count("roll_n_radial", 6, "roll elements across the ring"),
@@ -123,12 +132,19 @@ const ObjectSchema& rolling_process_schema() {
          return f;
        }(),
        optional(number("slab_temperature", "°C", 0, -273.15, 5000,
-                       "the slab's temperature with slab_flow_stress (default 1100), uniform and constant: heat "
-                       "transfer is not modelled yet")),
+                       "the slab's initial temperature, uniform (default 1100), with slab_flow_stress or "
+                       "heat_transfer: constant unless plastic work (slab_heat_capacity) or heat_transfer change it")),
        optional(number("slab_heat_capacity", "stress/K", 0, 0, 1e3,
-                       "the slab's volumetric heat capacity ρc (MPa/K; hot steel about 4.9): with it, plastic work "
-                       "heats the slab adiabatically (β = 0.9; no conduction to the roll or air yet) and "
-                       "slab_flow_stress softens with it")),
+                       "the slab's volumetric heat capacity ρc (MPa/K; hot steel about 4.9, the default with "
+                       "heat_transfer): with it, plastic work heats the slab (β = 0.9) — adiabatically, or "
+                       "conducted with heat_transfer — and slab_flow_stress softens with it")),
+       [] {
+         Field f = object("heat_transfer", rolling_heat_schema(),
+                          "heat in the pass: conduction in slab and roll, the contact's conductance, air cooling, "
+                          "plastic and friction heat (needs roll_speed); absent: no conduction");
+         f.default_value = json();
+         return f;
+       }(),
        poisson("slab_nu", "slab Poisson's ratio"),
        choice("roll", {"elastic", "rigid"}, "elastic",
               "the roll: elastic (its hub turned, the ring deforms: roll flattening) or rigid (every node of the ring "
@@ -268,10 +284,10 @@ void check_ignored(const json& project, std::vector<Issue>& issues) {
       issues.push_back({"process.slab_yield_stress",
                         "has no effect with process.slab_flow_stress (its law gives "
                         "the slab's yield stress): remove one"});
-  } else if (p.contains("slab_temperature")) {
+  } else if (p.contains("slab_temperature") && !p.contains("heat_transfer")) {
     issues.push_back({"process.slab_temperature",
-                      "has no effect without process.slab_flow_stress (slab_yield_stress "
-                      "does not depend on temperature): give the slab a flow stress law"});
+                      "has no effect without process.slab_flow_stress or process.heat_transfer "
+                      "(slab_yield_stress does not depend on temperature): give the slab a flow stress law"});
   }
   if (project.at("analysis").value("duration", 0.0) > 0)
     issues.push_back({"analysis.duration",
@@ -356,6 +372,7 @@ void check_slab_law(const json& p, std::vector<Issue>& issues) {
 void check_rolling(const json& project, std::vector<Issue>& issues) {
   check_ignored(project, issues);
   check_slab_law(project.at("process"), issues);
+  check_rolling_heat(project.at("process"), issues);
   check_geometry(project, issues);
   check_profile(project, issues);
   const json& p = project.at("process");
@@ -369,6 +386,8 @@ void check_rolling(const json& project, std::vector<Issue>& issues) {
                                                     ") and at least 10 % of it (reduction ≤ 0.9)"});
   if (auto why = grading_problem(p.at("grading").get<double>(), p.at("slab_nx").get<int>()); !why.empty())
     issues.push_back({"process.grading", why});
+  if (auto why = grading_problem(p.at("thickness_grading").get<double>(), p.at("slab_nt").get<int>()); !why.empty())
+    issues.push_back({"process.thickness_grading", why});
   const double travel = p.at("travel").get<double>(), step = p.at("travel_increment").get<double>();
   if (step > travel)
     issues.push_back({"process.travel_increment", "is larger than process.travel (" + std::to_string(travel) + ")"});
@@ -412,7 +431,7 @@ json expand_rolling(const json& project) {
     if (p.at("slab_hardening").get<double>() > 0) slab_material["hardening_modulus"] = p.at("slab_hardening");
   }
   if (p.contains("slab_heat_capacity")) slab_material["heat_capacity"] = p.at("slab_heat_capacity");
-  if (p.contains("slab_flow_stress") || p.contains("slab_heat_capacity"))
+  if (p.contains("slab_flow_stress") || p.contains("slab_heat_capacity") || p.contains("heat_transfer"))
     slab_material["temperature"] = p.value("slab_temperature", kDefaultSlabTemperature);
   out["materials"].push_back(slab_material);
   out["materials"].push_back(
@@ -429,6 +448,7 @@ json expand_rolling(const json& project) {
                     {"n_around", p.at("roll_n_around")}};
   if (dim == 2) {
     slab_mesh.update({{"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-L, 0.0}}});
+    if (p.at("thickness_grading").get<double>() != 1) slab_mesh["y_grading"] = p.at("thickness_grading");
     roll_mesh.update({{"type", "annulus"}, {"center", {0.0, axis}}});
   } else {
     const int halves = half_width(p) ? 1 : 2;  // the modelled width: half (from y = 0) or whole (about y = 0)
@@ -438,6 +458,7 @@ json expand_rolling(const json& project) {
                       {"nz", p.at("slab_nt")},
                       {"lz", h0 / 2},
                       {"origin", {-L, halves == 1 ? 0.0 : -W / 2, 0.0}}});
+    if (p.at("thickness_grading").get<double>() != 1) slab_mesh["z_grading"] = p.at("thickness_grading");
     roll_mesh.update({{"type", "cylinder"},
                       {"center", {0.0, axis}},
                       {"y0", halves == 1 ? 0.0 : -barrel / 2},
@@ -498,6 +519,7 @@ json expand_rolling(const json& project) {
   out["analysis"]["increments"] =
       static_cast<int>(std::ceil(p.at("travel").get<double>() / p.at("travel_increment").get<double>() - 1e-9));
   if (pass_duration(p) > 0) out["analysis"]["duration"] = pass_duration(p);
+  expand_rolling_heat(p, dim, out);
   return out;
 }
 
@@ -523,9 +545,10 @@ RollingPass rolling_pass(const json& p, const Model& model) {
   pass.width = p.at("slab_width");
   pass.travel = p.at("travel");
   pass.flow_stress = pass_flow_stress(p);
+  if (p.contains("slab_flow_stress") || p.contains("heat_transfer"))
+    pass.temperature = p.value("slab_temperature", kDefaultSlabTemperature);
   if (p.contains("slab_flow_stress")) {
     pass.flow_law = p.at("slab_flow_stress").at("law").get<std::string>();
-    pass.temperature = p.value("slab_temperature", kDefaultSlabTemperature);
     pass.mean_strain_rate = pass_strain_and_rate(p).second;
   }
   if (p.at("roll") == "elastic") pass.roll_E = p.at("roll_E"), pass.roll_nu = p.at("roll_nu");

@@ -31,10 +31,12 @@ nlohmann::json theory_section(const RollingPass& pass) {
 
 MeasureTable history_table(const RollingResults& r, int dim) {
   MeasureTable t{kHistoryTable, {{"increment", "increment", "-"}}, {}};
-  for (const RollingMeasure& m : rolling_measures()) t.columns.push_back(m.in(dim));
+  for (const RollingMeasure& m : rolling_measures())
+    if (!m.thermal || r.thermal) t.columns.push_back(m.in(dim));
   for (size_t i = 0; i < r.increments.size(); ++i) {
     MeasureRow row{static_cast<double>(i + 1)};
-    for (const RollingMeasure& m : rolling_measures()) row.push_back(r.increments[i].*m.field);
+    for (const RollingMeasure& m : rolling_measures())
+      if (!m.thermal || r.thermal) row.push_back(r.increments[i].*m.field);
     t.rows.push_back(std::move(row));
   }
   return t;
@@ -94,7 +96,7 @@ nlohmann::json rolling_summary(const RollingPass& pass, int dim, const RollingRe
   nlohmann::json out, units;
   for (const RollingMeasure& m : rolling_measures()) {
     const Measure shown = m.in(dim);
-    if (shown.name == "travel") continue;
+    if (shown.name == "travel" || (m.thermal && !r.thermal)) continue;
     out[shown.name] = r.steady.*m.field;  // a 3D contact is an area: contact_area (RollingMeasure::in)
     units[shown.name] = shown.unit;
   }

@@ -16,7 +16,8 @@ namespace rollsim {
 inline constexpr const char* kHistoryTable = "rolling";
 inline constexpr const char* kProfileTable = "contact_profile";
 
-/// rolling.csv's table: the increment number, then every measure of rolling_measures().
+/// rolling.csv's table: the increment number, then every measure of rolling_measures() (the temperatures only when
+/// the slab has one).
 MeasureTable history_table(const RollingResults& r, int dim);
 /// contact_profile.csv's table: the slab's contact nodes along the arc at the last increment.
 MeasureTable profile_table(const RollingResults& r);

@@ -21,6 +21,10 @@ struct RollingIncrement {
   double volume_change = 0;  // the slab's current volume (area in 2D) / its initial one − 1 [-]
   double mean_pressure = 0;  // roll force / contact length (2D) or area (3D): the mean pressure on the arc [stress]
   double roll_power = 0;     // torque × ω per roll (0 without a roll speed) [kW (per mm of width in 2D)]
+  // with a slab temperature (a flow stress law, a heat capacity or heat conduction) [°C]:
+  double slab_temperature = 0;     // the slab's mean, weighted by volume
+  double surface_temperature = 0;  // the slab's top surface just past the exit plane (0 < x ≤ √(R Δh)), mean
+  double roll_temperature = 0;     // the roll's surface, hottest node (its material's temperature unless it conducts)
 };
 
 /// One slab node in contact along the arc, in the rolling plane (3D: every node of the contact zone, across the
@@ -34,6 +38,7 @@ struct ArcPoint {
 };
 
 struct RollingResults {
+  bool thermal = false;  // the slab has a temperature: the temperature measures are reported
   std::vector<RollingIncrement> increments;
   std::vector<ArcPoint> profile;   // contact along the arc at the last increment, by angle
   int bite_increment = 0;          // first increment whose travel drew the slab in (0: the roll did not bite)

@@ -25,6 +25,8 @@ TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
   ASSERT_EQ(table->rows.size(), roll.increments.size());
   EXPECT_EQ(table->rows.back()[table->column("roll_force")], roll.increments.back().roll_force);
   EXPECT_EQ(table->columns[table->column("roll_force")].unit, "N/mm (per unit width)");
+  EXPECT_FALSE(roll.thermal) << "σ_0 and no heat: no temperature, no temperature columns";
+  EXPECT_EQ(table->columns.size(), 12u);
   ASSERT_GE(roll.increments.size(), 2u);  // 2 mm steps, more where the driver cut one back
   EXPECT_EQ(roll.bite_increment, 1);
   const RollingIncrement& last = roll.increments.back();
@@ -61,6 +63,41 @@ TEST(RollingPass, FirstMillimetresMeasureLikeAPass) {
   EXPECT_NEAR(integral, last.roll_force, 0.1 * last.roll_force);
   EXPECT_GT(arc.front().angle, 8.0);  // from near the entry (bite angle 12°)…
   EXPECT_LT(arc.back().angle, 2.0);   // …to near the exit
+}
+
+// A pass with heat (process.heat_transfer): the roll chills the slab's surface under the arc and warms; the slab's
+// interior keeps its temperature over a few millimetres; rolling.csv has the temperature columns (a pass without a
+// temperature has none: FirstMillimetresMeasureLikeAPass).
+TEST(RollingPass, AHotPassWithHeatChillsTheSlabsSurfaceAndWarmsTheRoll) {
+  nlohmann::json hot = testing_support::paper_pass_2d(6.0, 1.0);
+  hot["process"].update({{"slab_flow_stress", {{"law", "shida"}, {"carbon", 0.2}}},
+                         {"slab_E", 120000.0},
+                         {"roll_speed", 30.0},
+                         {"slab_nt", 8},
+                         {"thickness_grading", 1.5}});
+  nlohmann::json heat = hot;
+  heat["process"]["heat_transfer"] = nlohmann::json::object();
+  const testing_support::PassRun r = testing_support::run_pass(heat), cold = testing_support::run_pass(hot);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_TRUE(cold.status.ok()) << cold.status.message;
+  ASSERT_TRUE(r.rolling && r.rolling->thermal);
+  const RollingIncrement& last = r.rolling->increments.back();
+  EXPECT_LT(last.surface_temperature, 1100 - 20) << "tens of kelvin of chill in the top millimetre";
+  EXPECT_GT(last.surface_temperature, 900.0);
+  EXPECT_GT(last.roll_temperature, 60.5) << "the roll's surface warms";
+  EXPECT_NEAR(last.slab_temperature, 1100, 2.0) << "the slab's mean barely moves in 6 mm";
+  const MeasureTable* table = r.process->table("rolling");
+  ASSERT_TRUE(table);
+  EXPECT_EQ(table->columns[table->column("surface_temperature")].unit, "°C");
+  EXPECT_TRUE(cold.rolling->thermal) << "a flow stress law gives the slab a temperature, constant here";
+  EXPECT_EQ(cold.rolling->increments.back().surface_temperature, 1100.0);
+  // 6 mm in, the chilled layer is thin: the force moves by a fraction of a per cent (plastic heat softens, the chill
+  // hardens)
+  EXPECT_NEAR(last.roll_force, cold.rolling->increments.back().roll_force,
+              0.01 * cold.rolling->increments.back().roll_force);
+  // the roll conducts: its nodal temperatures, an output at its nodes
+  EXPECT_EQ(r.bodies[1].nodal_temperature.size(), static_cast<Eigen::Index>(r.bodies[1].displacement.size() / 2));
+  EXPECT_GT(r.bodies[1].nodal_temperature.maxCoeff(), 60.5);
 }
 
 // A rigid roll (process.roll: rigid) is moved wholly by its rotation: it has no group, so nothing of it is assembled

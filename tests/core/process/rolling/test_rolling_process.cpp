@@ -13,6 +13,7 @@
 #include "contact/ContactConstraints.h"
 #include "material/FlowStress.h"
 #include "mesh/Mesh.h"
+#include "process/rolling/RollingHeat.h"
 #include "process/rolling/RollingProcess.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
@@ -320,6 +321,45 @@ TEST(RollingProcess, AHotPassesMissingOrIdleFieldsAreRefusedAtTheProcesssPath) {
   ASSERT_EQ(model.warnings.size(), 1u);
   EXPECT_EQ(model.warnings[0].rfind("process (its material 'slab'): 500 °C is outside the range the shida law", 0), 0u)
       << model.warnings[0] << ": the generated material's path is not in the user's file";
+}
+
+TEST(RollingProcess, HeatTransferMakesTheSlabAndTheRollConductAndTheAirCoolTheSlabsFreeFaces) {
+  const json shida = {{"law", "shida"}, {"carbon", 0.2}};
+  const json heat = {{"slab_flow_stress", shida},
+                     {"roll_speed", 30.0},
+                     {"slab_nt", 8},
+                     {"thickness_grading", 1.5},
+                     {"heat_transfer", {{"roll_cooling", 5.0}}}};
+  const Model model = rolling(2, heat);
+  const MaterialData &slab = model.bodies[0].material, &roll = model.bodies[1].material;
+  EXPECT_EQ(slab.conductivity, 28.0);
+  EXPECT_EQ(slab.heat_capacity, kHotSteelHeatCapacity) << "hot steel's ρc unless slab_heat_capacity says otherwise";
+  EXPECT_EQ(slab.temperature, 1100.0);
+  EXPECT_EQ(roll.conductivity, 40.0);
+  EXPECT_EQ(roll.heat_capacity, 3.6);
+  EXPECT_EQ(roll.temperature, 60.0);
+  ASSERT_EQ(model.contacts.size(), 1u);
+  EXPECT_EQ(model.contacts[0].conductance, 20.0);
+  EXPECT_EQ(model.heat.ambient, 20.0);
+  std::vector<std::string> cooled;
+  for (const AirCooling& a : model.heat.air) cooled.push_back(model.bodies[a.body].name + "." + a.surface);
+  EXPECT_EQ(cooled, (std::vector<std::string>{"slab.ymax", "slab.xmin", "slab.xmax", "roll.outer"}))
+      << "the mid-plane is a symmetry plane: adiabatic";
+  // the slab's elements shrink toward its top: at the rear end (uncut), the top element is 1.5^-7 of the bottom one
+  const Mesh& m = model.bodies[0].mesh;
+  std::vector<double> rear;
+  for (const auto& X : m.nodes)
+    if (X[0] == m.nodes[0][0]) rear.push_back(X[1]);
+  std::sort(rear.begin(), rear.end());
+  ASSERT_EQ(rear.size(), 9u);
+  EXPECT_NEAR((rear[8] - rear[7]) / (rear[1] - rear[0]), std::pow(1.5, -7), 1e-9);
+  const std::string no_speed = refusal({{"type", "rolling"}, {"heat_transfer", json::object()}});
+  EXPECT_NE(no_speed.find("process.roll_speed: is needed with process.heat_transfer"), std::string::npos) << no_speed;
+  EXPECT_EQ(
+      refusal(
+          {{"type", "rolling"}, {"heat_transfer", json::object()}, {"roll_speed", 30.0}, {"slab_temperature", 1000.0}}),
+      "accepted")
+      << "slab_temperature is the initial temperature of the heat";
 }
 
 TEST(RollingProcess, GeometryThatCannotBeBuiltIsRefusedAtTheProcesssPath) {

@@ -1,0 +1,230 @@
+#include "analysis/HeatConduction.h"
+
+#include <cmath>
+
+#include "analysis/AnalysisError.h"
+#include "base/Stopwatch.h"
+#include "contact/Friction.h"
+#include "fem/ElementLoop.h"
+#include "fem/Loads.h"
+#include "material/Material.h"
+#include "solve/SparseCompare.h"
+
+namespace rollsim {
+
+namespace {
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// Calls f.template operator()<D>() with the model's dimension.
+template <class F>
+void with_dimension(int dim, F&& f) {
+  if (dim == 2)
+    f.template operator()<2>();
+  else
+    f.template operator()<3>();
+}
+
+/// Element e's node positions moved by u (every dof of its body).
+template <int D>
+typename SolidElement<D>::Coords moved_coords(const Mesh& m, int e, const Eigen::VectorXd& u) {
+  auto x = element_coords<D>(m, e);
+  const int* conn = m.element(e);
+  for (int a = 0; a < SolidElement<D>::NN; ++a)
+    for (int i = 0; i < D; ++i) x(i, a) += u[static_cast<Eigen::Index>(conn[a]) * D + i];
+  return x;
+}
+}  // namespace
+
+HeatConduction::HeatConduction(const Model& model)
+    : model_(model), bodies_(model.bodies.size()), T_(model.bodies.size()) {
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (!body.material.conducts()) continue;
+    BodyHeat& h = bodies_[b];
+    h.offset = static_cast<int>(rows_);
+    rows_ += body.mesh.num_nodes();
+    T_[b] = Eigen::VectorXd::Constant(body.mesh.num_nodes(), body.material.temperature);
+    h.capacity = Eigen::VectorXd::Zero(body.mesh.num_nodes());
+    with_dimension(model.dim, [&]<int D>() {
+      using El = SolidElement<D>;
+      std::array<typename El::Gradients, El::NGP> dN;
+      std::array<double, El::NGP> dv;
+      typename El::Gradients centre;
+      for (int e = 0; e < body.mesh.num_elements(); ++e) {
+        const auto x = element_coords<D>(body.mesh, e);
+        El::gradients(x, dN, dv, centre);
+        const auto share = El::shape_integrals(x);
+        for (int a = 0; a < El::NN; ++a) h.capacity[body.mesh.element(e)[a]] += body.material.heat_capacity * share[a];
+        h.volume.insert(h.volume.end(), dv.begin(), dv.end());
+      }
+    });
+    const auto material = make_material(body.material);
+    if (body.material.thermal() && material->temperature_rise_index() >= 0) {
+      h.stride = material->state_size();
+      h.rise = material->temperature_rise_index();
+      h.written.assign(h.volume.size(), 0.0);
+    }
+  }
+}
+
+void HeatConduction::add_conduction(size_t b, const Eigen::VectorXd& u, double dt, Triplets& t) const {
+  const Body& body = model_.bodies[b];
+  const double k = body.material.conductivity * dt;
+  const int offset = bodies_[b].offset;
+  with_dimension(model_.dim, [&]<int D>() {
+    using El = SolidElement<D>;
+    std::array<typename El::Gradients, El::NGP> dN;
+    std::array<double, El::NGP> dv;
+    typename El::Gradients centre;
+    for (int e = 0; e < body.mesh.num_elements(); ++e) {
+      if (!El::gradients(moved_coords<D>(body.mesh, e, u), dN, dv, centre))
+        throw AnalysisError("the heat step: element " + std::to_string(e) + " of body '" + body.name + "' is inverted");
+      Eigen::Matrix<double, El::NN, El::NN> Ke = Eigen::Matrix<double, El::NN, El::NN>::Zero();
+      for (int p = 0; p < El::NGP; ++p) Ke.noalias() += (k * dv[p]) * dN[p].transpose() * dN[p];
+      const int* conn = body.mesh.element(e);
+      for (int a = 0; a < El::NN; ++a)
+        for (int c = 0; c < El::NN; ++c) t.emplace_back(offset + conn[a], offset + conn[c], Ke(a, c));
+    }
+  });
+}
+
+void HeatConduction::add_contacts(const HeatStepInput& in, Triplets& t, Eigen::VectorXd& rhs,
+                                  std::vector<std::vector<char>>& touching) {
+  for (size_t i = 0; i < model_.contacts.size(); ++i) {
+    const ContactPair& p = model_.contacts[i];
+    const PairState& s = (*in.pairs)[i];
+    const int os = bodies_[static_cast<size_t>(p.slave_body)].offset;
+    const int om = bodies_[static_cast<size_t>(p.master_body)].offset;
+    const std::vector<double> none;
+    const std::vector<double>& before = in.slid_before && i < in.slid_before->size() ? (*in.slid_before)[i] : none;
+    for (size_t j = 0; j < s.points.size(); ++j) {
+      if (!s.active[j]) continue;
+      const ContactPoint& c = s.points[j];
+      // friction work over the step: the slipping point's force times its slip, shared between the bodies
+      if (!s.slip.empty() && s.slip[j] && can_slip(p)) {
+        const double slipped = s.slid[j] - (j < before.size() ? before[j] : 0.0);
+        const double work = slip_force(p, s.normal_force[j], c.weight) * std::max(slipped, 0.0);
+        balance_.friction += work;
+        if (os >= 0) rhs[os + c.slave_node] += p.friction_heat_to_slave * work;
+        if (om >= 0)
+          for (size_t k = 0; k < c.master_nodes.size(); ++k)
+            rhs[om + c.master_nodes[k]] += (1 - p.friction_heat_to_slave) * work * c.N[k];
+      }
+      if (p.conductance <= 0 || os < 0 || om < 0) continue;
+      touching[static_cast<size_t>(p.slave_body)][static_cast<size_t>(c.slave_node)] = 1;
+      for (int m : c.master_nodes) touching[static_cast<size_t>(p.master_body)][static_cast<size_t>(m)] = 1;
+      // h_c A (T_s − Σ N_k T_k)² / 2: the link's energy, its matrix g v vᵀ with v = (1, −N_1, −N_2, …)
+      const double g = in.dt * p.conductance * c.weight;
+      std::vector<std::pair<int, double>> v{{os + c.slave_node, 1.0}};
+      for (size_t k = 0; k < c.master_nodes.size(); ++k) v.emplace_back(om + c.master_nodes[k], -c.N[k]);
+      for (const auto& [r, vr] : v)
+        for (const auto& [q, vq] : v) t.emplace_back(r, q, g * vr * vq);
+    }
+  }
+}
+
+void HeatConduction::add_air(const HeatStepInput& in, const std::vector<std::vector<char>>& touching,
+                             Eigen::VectorXd& diagonal, Eigen::VectorXd& rhs) {
+  const double ambient = model_.heat.ambient, ta = ambient + kKelvin;
+  for (const AirCooling& a : model_.heat.air) {
+    const size_t b = static_cast<size_t>(a.body);
+    if (bodies_[b].offset < 0) continue;
+    const Mesh& mesh = model_.bodies[b].mesh;
+    const Eigen::VectorXd area = surface_node_areas(mesh, mesh.surfaces.at(a.surface), &(*in.displacement)[b]);
+    for (int n = 0; n < mesh.num_nodes(); ++n) {
+      if (area[n] == 0 || touching[b][static_cast<size_t>(n)]) continue;
+      const double tn = T_[b][n] + kKelvin;  // radiation linearised at the step's start
+      const double h = a.convection + a.emissivity * kStefanBoltzmann * (tn * tn + ta * ta) * (tn + ta);
+      const double g = in.dt * h * area[n];
+      diagonal[bodies_[b].offset + n] += g;
+      rhs[bodies_[b].offset + n] += g * ambient;
+    }
+  }
+}
+
+void HeatConduction::add_plastic_heat(size_t b, const std::vector<double>& state, Eigen::VectorXd& rhs) {
+  const BodyHeat& h = bodies_[b];
+  if (h.rise < 0 || state.empty()) return;
+  const Body& body = model_.bodies[b];
+  with_dimension(model_.dim, [&]<int D>() {
+    using El = SolidElement<D>;
+    const auto& N = El::gauss_shape();
+    for (int e = 0; e < body.mesh.num_elements(); ++e)
+      for (int p = 0; p < El::NGP; ++p) {
+        const size_t point = static_cast<size_t>(e) * El::NGP + p;
+        const double q =
+            body.material.heat_capacity * (state[point * h.stride + h.rise] - h.written[point]) * h.volume[point];
+        balance_.plastic += q;
+        for (int a = 0; a < El::NN; ++a) rhs[h.offset + body.mesh.element(e)[a]] += N(p, a) * q;
+      }
+  });
+}
+
+void HeatConduction::write_points(size_t b, std::vector<double>& state) {
+  BodyHeat& h = bodies_[b];
+  if (h.rise < 0 || state.empty()) return;
+  const Body& body = model_.bodies[b];
+  with_dimension(model_.dim, [&]<int D>() {
+    using El = SolidElement<D>;
+    const auto& N = El::gauss_shape();
+    for (int e = 0; e < body.mesh.num_elements(); ++e)
+      for (int p = 0; p < El::NGP; ++p) {
+        double T = 0;
+        for (int a = 0; a < El::NN; ++a) T += N(p, a) * T_[b][body.mesh.element(e)[a]];
+        const size_t point = static_cast<size_t>(e) * El::NGP + p;
+        h.written[point] = state[point * h.stride + h.rise] = T - body.material.temperature;
+      }
+  });
+}
+
+Eigen::VectorXd HeatConduction::solve(const SparseMatrix& A, const Eigen::VectorXd& rhs) {
+  if (!factor_ || !same_pattern(A, pattern_)) {
+    factor_ = make_factorization("cholmod");
+    factor_->analyze(A);
+    pattern_ = A;
+  }
+  factor_->factorize(A);
+  ++factorizations_;
+  return factor_->solve(rhs);
+}
+
+void HeatConduction::step(const HeatStepInput& in, std::vector<std::vector<double>>& states) {
+  if (rows_ == 0) return;
+  Stopwatch clock;
+  balance_ = {};
+  Triplets t;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(rows_), diagonal = Eigen::VectorXd::Zero(rows_);
+  std::vector<std::vector<char>> touching(model_.bodies.size());
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    if (bodies_[b].offset < 0) continue;
+    touching[b].assign(static_cast<size_t>(model_.bodies[b].mesh.num_nodes()), 0);
+    add_conduction(b, (*in.displacement)[b], in.dt, t);
+    add_plastic_heat(b, states[b], rhs);
+    const auto C = bodies_[b].capacity.array();
+    diagonal.segment(bodies_[b].offset, C.size()) += C.matrix();
+    rhs.segment(bodies_[b].offset, C.size()) += (C * T_[b].array()).matrix();
+  }
+  add_contacts(in, t, rhs, touching);
+  add_air(in, touching, diagonal, rhs);
+  for (long r = 0; r < rows_; ++r) t.emplace_back(r, r, diagonal[r]);
+  SparseMatrix A(rows_, rows_);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::VectorXd T;
+  try {
+    T = solve(A, rhs);
+  } catch (const std::runtime_error& e) {
+    throw AnalysisError(std::string("the heat step's system: ") + e.what());
+  }
+  if (!T.allFinite()) throw AnalysisError("the heat step gave a temperature that is not finite");
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    if (bodies_[b].offset < 0) continue;
+    const Eigen::VectorXd next = T.segment(bodies_[b].offset, T_[b].size());
+    balance_.stored += bodies_[b].capacity.dot(next - T_[b]);
+    T_[b] = next;
+    write_points(b, states[b]);
+  }
+  balance_.air = balance_.plastic + balance_.friction - balance_.stored;  // what conduction did not keep left
+  seconds_ += clock.seconds();
+}
+
+}  // namespace rollsim
