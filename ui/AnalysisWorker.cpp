@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "analysis/LinearStatic.h"
+#include "process/rolling/RollingSchedule.h"
 #include "project/ModelBuilder.h"
 #include "project/RunProject.h"
 
@@ -161,6 +162,11 @@ void AnalysisWorker::run(const Project& project) {
       out.status = QString::fromUtf8(to_string(results->status.status));
       // a run that did not converge says what stopped it; one the process ended early says why (Results::status)
       out.message = QString::fromStdString(results->status.message);
+      if (is_schedule(project.data))  // the window runs single passes: say which one it ran
+        out.message = QString::fromStdString(
+            "a schedule of " + std::to_string(project.data.at("process").at("passes").size()) +
+            " passes: the window ran its first pass; `rollsim run` runs them all (pass-<n>/, schedule.csv). " +
+            results->status.message);
       out.dofs = results->dofs;
       out.cg_iterations = results->solver.cg_iterations;
       out.solves = results->solver.solves;

@@ -5,6 +5,7 @@
 #include "analysis/AnalysisError.h"
 #include "base/Stopwatch.h"
 #include "contact/Friction.h"
+#include "fem/Assembler.h"
 #include "fem/ElementLoop.h"
 #include "fem/Loads.h"
 #include "material/Material.h"
@@ -44,6 +45,8 @@ HeatConduction::HeatConduction(const Model& model)
     h.offset = static_cast<int>(rows_);
     rows_ += body.mesh.num_nodes();
     T_[b] = Eigen::VectorXd::Constant(body.mesh.num_nodes(), body.material.temperature);
+    if (!body.initial_temperature.empty())
+      T_[b] = Eigen::Map<const Eigen::VectorXd>(body.initial_temperature.data(), body.mesh.num_nodes());
     h.capacity = Eigen::VectorXd::Zero(body.mesh.num_nodes());
     with_dimension(model.dim, [&]<int D>() {
       using El = SolidElement<D>;
@@ -62,7 +65,8 @@ HeatConduction::HeatConduction(const Model& model)
     if (body.material.thermal() && material->temperature_rise_index() >= 0) {
       h.stride = material->state_size();
       h.rise = material->temperature_rise_index();
-      h.written.assign(h.volume.size(), 0.0);
+      h.written = initial_point_rises(body);  // what the points start from (IntegrationState::initial)
+      if (h.written.empty()) h.written.assign(h.volume.size(), 0.0);
     }
   }
 }

@@ -237,7 +237,13 @@ Eigen::VectorXd NewtonRun::multiplier_guess(const std::vector<std::array<int, 3>
 std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vector<size_t>& tangent,
                                 GroupAssembler::Factors at) {
   Stopwatch watch;
-  const InvertedElement bad = layout_.assembler().assemble_newton(which, tangent, u_, at, layout_.system());
+  InvertedElement bad;
+  try {
+    bad = layout_.assembler().assemble_newton(which, tangent, u_, at, layout_.system());
+  } catch (const std::runtime_error& e) {  // a material that cannot update at this iterate: the step is cut back
+    assembly_s_ += watch.seconds();
+    return std::string("the material update failed: ") + e.what();
+  }
   assembly_s_ += watch.seconds();
   for (size_t g : tangent) unfactored_[g] = 1;
   if (!bad) {

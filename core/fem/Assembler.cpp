@@ -101,8 +101,37 @@ IntegrationState IntegrationState::initial(const Body& body) {
   const int points = body.mesh.dim == 2 ? SolidElement<2>::NGP : SolidElement<3>::NGP;
   s.per_element = points * make_material(body.material)->state_size();
   s.committed.assign(static_cast<size_t>(s.per_element) * body.mesh.num_elements(), 0.0);
+  const auto material = make_material(body.material);
+  const int size = material->state_size(), alpha = material->equivalent_plastic_strain_index();
+  const int rise = body.material.thermal() ? material->temperature_rise_index() : -1;
+  const std::vector<double> rises = initial_point_rises(body);
+  for (size_t p = 0; size > 0 && p < s.committed.size() / static_cast<size_t>(size); ++p) {
+    if (alpha >= 0 && !body.initial_plastic_strain.empty())
+      s.committed[p * size + alpha] = body.initial_plastic_strain[p / static_cast<size_t>(points)];
+    if (rise >= 0 && !rises.empty()) s.committed[p * size + rise] = rises[p];
+  }
   s.trial = s.committed;
   return s;
+}
+
+std::vector<double> initial_point_rises(const Body& body) {
+  std::vector<double> rises;
+  if (body.initial_temperature.empty()) return rises;
+  const Mesh& m = body.mesh;
+  const auto add = [&](const auto& N) {
+    for (int e = 0; e < m.num_elements(); ++e)
+      for (int p = 0; p < N.rows(); ++p) {
+        double T = 0;
+        for (int a = 0; a < N.cols(); ++a)
+          T += N(p, a) * body.initial_temperature[static_cast<size_t>(m.element(e)[a])];
+        rises.push_back(T - body.material.temperature);
+      }
+  };
+  if (m.dim == 2)
+    add(SolidElement<2>::gauss_shape());
+  else
+    add(SolidElement<3>::gauss_shape());
+  return rises;
 }
 
 namespace {

@@ -17,7 +17,8 @@ struct IntegrationState {
   std::vector<double> committed, trial;
   double dt = 0;  // the time from the committed to the trial state [s] (0: quasi-static, no time)
 
-  /// Zero state for every element of `body` (empty for a material without state).
+  /// The state of every element of `body` (empty for a material without state): zero, but for the equivalent plastic
+  /// strain and the temperature rise a body starts from (Body::initial_plastic_strain, initial_temperature).
   static IntegrationState initial(const Body& body);
   void commit() { committed = trial; }
 };
@@ -52,6 +53,10 @@ class Assembler {
   std::vector<int> slot_;  // per element, per (i, j) of the element matrix: value index or -1
   int threads_ = 1;
 };
+
+/// Each integration point's temperature rise over the body's material temperature from its initial nodal
+/// temperatures (Σ N_a T_a − T), element-major; empty without Body::initial_temperature.
+std::vector<double> initial_point_rises(const Body& body);
 
 /// Element dof -> equation (or -1) for element e, node-major.
 void element_equations(const Mesh& mesh, const DofMap& dofs, int e, int* eq);

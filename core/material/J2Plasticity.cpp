@@ -71,7 +71,10 @@ void J2Plasticity::update(const Deformation& d, const double* committed, double*
   if (frozen_ || q - y0 <= 1e-12 * y0) return;
   // Δγ from q − 3G Δγ − σ_y(α_n + Δγ) = 0 (one Newton step for linear hardening)
   const double dg = plastic_increment(q, alpha_n, rise);
-  if (!(dg > 0.0) || !std::isfinite(dg)) throw std::runtime_error("J2 return mapping failed to converge");
+  if (!(dg > 0.0) || !std::isfinite(dg))
+    throw std::runtime_error("the J2 return mapping found no plastic increment (von Mises trial stress " +
+                             std::to_string(q) + ", flow stress " + std::to_string(y0) + ", α " +
+                             std::to_string(alpha_n) + ", temperature " + std::to_string(temperature_ + rise) + ")");
   const Voigt6 n = s / std::sqrt(contract(s));  // unit normal, tensor components
   const double scale = 1.0 - 3.0 * G_ * dg / q;
   stress.head<3>() = s.head<3>() * scale + Voigt6::Constant(p).head<3>();

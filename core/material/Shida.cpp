@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "base/SchemaFields.h"
@@ -21,7 +22,9 @@ const ObjectSchema& shida_schema() {
       "exp(5/T − 0.01/(C + 0.05)), m = (−0.019 C + 0.126) T + 0.075 C − 0.05; below it σ_T = 0.28 g exp(5/T_d − "
       "0.01/(C + 0.05)), g = 30 (C + 0.9)(T − 0.95 (C + 0.49)/(C + 0.42))² + (C + 0.06)/(C + 0.09), m = (0.081 C − "
       "0.154) T − 0.019 C + 0.207 + 0.027/(C + 0.32). Fitted for 0.07–1.2 % C, 700–1200 °C, ε ≤ 0.7, ε̇ 0.1–100 "
-      "/s: a temperature outside is warned of. The project's stresses must be in MPa.",
+      "/s: a temperature outside is warned of. f(ε) is held at its peak beyond it, ε = 0.2 (1.3 n / 0.3)^(1/(1 − n)) "
+      "(0.489 for 0.2 % C): the formula would fall to zero at ε ≈ 2.3, where a rolled surface's shear takes it. The "
+      "project's stresses must be in MPa.",
       {req(bounded(num("carbon", "wt %", "carbon content C (0.07–1.2)"), kMinCarbon, kMaxCarbon)),
        strain_offset_field(0.01), rate_offset_field(0.01)},
       "",
@@ -49,10 +52,13 @@ class Shida final : public FlowStress {
       sT = 0.28 * g * std::exp(5 / Td - 0.01 / (C + 0.05));
       m = (0.081 * C - 0.154) * T + (-0.019 * C + 0.207) + 0.027 / (C + 0.32);
     }
-    const double n = 0.41 - 0.07 * C, x = e / 0.2, xn = std::pow(x, n);
+    // f(ε) peaks at x* = (1.3 n / 0.3)^(1/(1−n)) (ε ≈ 0.49 for 0.2 % C) and would fall to 0 at ε ≈ 2.3: beyond its
+    // peak it is held there (steady-state flow, as dynamic recrystallisation keeps hot steel), never negative
+    const double n = 0.41 - 0.07 * C, peak = std::pow(1.3 * n / 0.3, 1 / (1 - n));
+    const double x = std::min(e / 0.2, peak), xn = std::pow(x, n);
     const double scale = kMPaPerKgfmm2 * sT * std::pow(rate / 10, m);
     const double s = scale * (1.3 * xn - 0.3 * x);
-    return {s, scale * (1.3 * n * xn / x - 0.3) / 0.2, s * m / rate};
+    return {s, e / 0.2 < peak ? scale * (1.3 * n * xn / x - 0.3) / 0.2 : 0.0, s * m / rate};
   }
   double C_;
 };

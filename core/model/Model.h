@@ -20,6 +20,11 @@ struct Body {
   Formulation formulation = Formulation::Full;
   Kinematics kinematics = Kinematics::Small;
   Partition partition;  // subdomains for `feti` (one subdomain: undivided)
+  // the state it starts from, when not virgin (a schedule's next pass: what the slab brings from the pass before) —
+  // the equivalent plastic strain of each element's points [-] and each node's temperature [°C]; empty: none, and the
+  // material's temperature
+  std::vector<double> initial_plastic_strain;  // per element
+  std::vector<double> initial_temperature;     // per node
 };
 
 /// A rigid rotation by `angle` [radian, at load factor 1] about the axis through `center` along the unit vector

@@ -107,25 +107,13 @@ double mean_spread(const RollingPass& pass, const Mesh& slab, const BodyResults&
   return counted ? 2 * sum / counted - pass.width : 0.0;
 }
 
-/// A body's temperature at its nodes: conducted, or its elements' (their points' adiabatic rises) averaged onto
-/// them; empty when it has none.
-Eigen::VectorXd nodal_temperature(const Mesh& mesh, const BodyResults& r) {
-  if (r.nodal_temperature.size() == mesh.num_nodes()) return r.nodal_temperature;
-  if (r.temperature.size() != static_cast<size_t>(mesh.num_elements())) return {};
-  Eigen::VectorXd T = Eigen::VectorXd::Zero(mesh.num_nodes()), count = T;
-  for (int e = 0; e < mesh.num_elements(); ++e)
-    for (int a = 0; a < mesh.nodes_per_elem(); ++a)
-      T[mesh.element(e)[a]] += r.temperature[static_cast<size_t>(e)], count[mesh.element(e)[a]] += 1;
-  return T.cwiseQuotient(count.cwiseMax(1.0));
-}
-
 /// The slab's and the roll's temperatures: the slab's volume mean (nodal values weighted by ∫ N dV), its top
 /// surface's mean past the exit plane (0 < x ≤ window) and the roll surface's hottest node. False: no temperature.
 bool temperatures(const Model& model, const RollingPass& pass, const IncrementResults& inc,
                   const Eigen::VectorXd& share, double window, RollingIncrement& out) {
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
   const BodyResults& s = inc.bodies[static_cast<size_t>(pass.slab)];
-  const Eigen::VectorXd T = nodal_temperature(slab, s);
+  const Eigen::VectorXd T = node_temperatures(slab, s);
   if (T.size() == 0) return false;
   out.slab_temperature = share.dot(T) / share.sum();
   double sum = 0;
@@ -136,7 +124,7 @@ bool temperatures(const Model& model, const RollingPass& pass, const IncrementRe
   }
   out.surface_temperature = count ? sum / count : 0.0;
   const Body& roll = model.bodies[static_cast<size_t>(pass.roll)];
-  const Eigen::VectorXd R = nodal_temperature(roll.mesh, inc.bodies[static_cast<size_t>(pass.roll)]);
+  const Eigen::VectorXd R = node_temperatures(roll.mesh, inc.bodies[static_cast<size_t>(pass.roll)]);
   out.roll_temperature = roll.material.temperature;
   if (R.size() > 0) {
     out.roll_temperature = -std::numeric_limits<double>::infinity();
@@ -204,9 +192,9 @@ double volume(const Mesh& mesh, const Eigen::VectorXd& u) {
   return mesh.dim == 2 ? volume<2>(mesh, u) : volume<3>(mesh, u);
 }
 
-/// ∫ N_a dV of every node of the mesh as meshed: its share of the body's volume.
+/// ∫ N_a dV of every node of the mesh as meshed (D: its dimension).
 template <int D>
-Eigen::VectorXd node_volumes(const Mesh& mesh) {
+Eigen::VectorXd node_volumes_of(const Mesh& mesh) {
   using E = SolidElement<D>;
   Eigen::VectorXd share = Eigen::VectorXd::Zero(mesh.num_nodes());
   for (int e = 0; e < mesh.num_elements(); ++e) {
@@ -218,8 +206,6 @@ Eigen::VectorXd node_volumes(const Mesh& mesh) {
   }
   return share;
 }
-
-Eigen::VectorXd node_volumes(const Mesh& mesh) { return mesh.dim == 2 ? node_volumes<2>(mesh) : node_volumes<3>(mesh); }
 
 /// The slab's contact nodes at the state `r`, by decreasing angle (entry first).
 std::vector<ArcPoint> arc_profile(const Model& model, const RollingPass& pass, const BodyResults& r) {
@@ -243,6 +229,20 @@ std::vector<ArcPoint> arc_profile(const Model& model, const RollingPass& pass, c
 }
 
 }  // namespace
+
+Eigen::VectorXd node_volumes(const Mesh& mesh) {
+  return mesh.dim == 2 ? node_volumes_of<2>(mesh) : node_volumes_of<3>(mesh);
+}
+
+Eigen::VectorXd node_temperatures(const Mesh& mesh, const BodyResults& r) {
+  if (r.nodal_temperature.size() == mesh.num_nodes()) return r.nodal_temperature;
+  if (r.temperature.size() != static_cast<size_t>(mesh.num_elements())) return {};
+  Eigen::VectorXd T = Eigen::VectorXd::Zero(mesh.num_nodes()), count = T;
+  for (int e = 0; e < mesh.num_elements(); ++e)
+    for (int a = 0; a < mesh.nodes_per_elem(); ++a)
+      T[mesh.element(e)[a]] += r.temperature[static_cast<size_t>(e)], count[mesh.element(e)[a]] += 1;
+  return T.cwiseQuotient(count.cwiseMax(1.0));
+}
 
 int steady_state_from(const std::vector<RollingIncrement>& h, double window) {
   const auto near = [](double a, double b) { return std::abs(a - b) <= kSteadyTolerance * std::abs(a); };

@@ -41,6 +41,13 @@ RollingIncrement window_mean(const std::vector<RollingIncrement>& history, doubl
 /// two windows).
 int steady_state_from(const std::vector<RollingIncrement>& history, double window);
 
+/// ∫ N_a dV of every node of the mesh as meshed: its share of the body's volume (the weights of a volume mean).
+Eigen::VectorXd node_volumes(const Mesh& mesh);
+
+/// A body's temperature at its nodes: conducted, or its elements' (their points' adiabatic rises) averaged onto
+/// them; empty when it has none.
+Eigen::VectorXd node_temperatures(const Mesh& mesh, const BodyResults& r);
+
 /// Where the slab's rear end is along x (the mean of its node set xmin, deformed): the pass is over once it reaches
 /// the entry of the arc of contact.
 double rear_end(const Mesh& slab, const Eigen::VectorXd& u);

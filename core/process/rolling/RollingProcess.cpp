@@ -10,6 +10,7 @@
 #include "process/rolling/RollingHeat.h"
 #include "process/rolling/RollingReport.h"
 #include "process/rolling/RollingRun.h"
+#include "process/rolling/RollingSchedule.h"
 
 namespace rollsim {
 
@@ -178,6 +179,16 @@ const ObjectSchema& rolling_process_schema() {
        number("travel", "length", 100, 0, 1e6,
               "distance the roll's surface travels over the analysis (the roll turns travel / R)"),
        number("travel_increment", "length", 2, 0, 1e6, "roll surface travel per increment"),
+       [] {
+         Field f = objects("passes", pass_schema(),
+                           "a schedule (plane strain): passes one after the other, each receiving the slab the pass "
+                           "before left — its exit thickness, length, plastic strain and temperature profiles — after "
+                           "its interpass_time in air; each pass's results in pass-<n>/, the schedule's in "
+                           "schedule.csv and schedule.png. The section's reduction and exit_thickness then belong to "
+                           "the passes");
+         f.default_value = json();
+         return f;
+       }(),
        str("slab_partition", "subdomains of the slab for `feti` (as bodies[].partition)"),
        vec("slab_partition_map", "",
            "explicit element → subdomain map of the slab (as bodies[].partition_map, e.g. painted in the window)", -1)},
@@ -370,6 +381,10 @@ void check_slab_law(const json& p, std::vector<Issue>& issues) {
 }  // namespace
 
 void check_rolling(const json& project, std::vector<Issue>& issues) {
+  if (is_schedule(project)) {
+    check_schedule(project, issues);
+    return;
+  }
   check_ignored(project, issues);
   check_slab_law(project.at("process"), issues);
   check_rolling_heat(project.at("process"), issues);
@@ -415,7 +430,8 @@ json sampled_profile(const json& p, const json& roll_mesh) {
 }  // namespace
 
 json expand_rolling(const json& project) {
-  const json& p = project.at("process");
+  const json first = is_schedule(project) ? pass_section(project.at("process"), 0) : project.at("process");
+  const json& p = first;  // a schedule is shown (checked, meshed, drawn) as its first pass
   const int dim = project.at("dimension").get<int>();
   const double L = p.at("slab_length"), W = p.at("slab_width"), h0 = p.at("slab_thickness");
   const double R = roll_radius(p);
@@ -523,7 +539,8 @@ json expand_rolling(const json& project) {
   return out;
 }
 
-RollingPass rolling_pass(const json& p, const Model& model) {
+RollingPass rolling_pass(const json& section, const Model& model) {
+  const json p = section.contains("passes") ? pass_section(section, 0) : section;
   RollingPass pass;
   auto body = [&](const std::string& name) {
     for (size_t b = 0; b < model.bodies.size(); ++b)
@@ -570,8 +587,12 @@ std::string RollingProcess::progress(const json& section, double fraction) const
 }
 
 std::vector<std::string> RollingProcess::outputs() const {
-  return {kHistoryTable + std::string(".csv"), kHistoryTable + std::string(".png"), kProfileTable + std::string(".csv"),
-          kProfileTable + std::string(".png")};
+  return {kHistoryTable + std::string(".csv"),
+          kHistoryTable + std::string(".png"),
+          kProfileTable + std::string(".csv"),
+          kProfileTable + std::string(".png"),
+          "schedule.csv",
+          "schedule.png"};
 }
 
 std::unique_ptr<ProcessRun> RollingProcess::start(const json& section, const Model& model) const {

@@ -43,6 +43,21 @@ TEST(FlowStress, ShidaAtTheAustenitePointOfHandArithmetic) {
   EXPECT_TRUE(shida->rate_dependent());
 }
 
+// Shida's strain term f = 1.3 (ε/0.2)^n − 0.3 (ε/0.2) peaks at ε* = 0.2 (1.3 n / 0.3)^(1/(1−n)) (0.489 for 0.2 % C)
+// and would reach zero at ε ≈ 2.27: a rolled surface's shear took a second pass there (a negative flow stress, the
+// return mapping failing). Beyond its peak it is held: steady-state flow, its strain derivative 0.
+TEST(FlowStress, ShidaHoldsItsPeakBeyondIt) {
+  const auto shida = law("shida", {{"carbon", 0.2}, {"strain_offset", 0.0}, {"rate_offset", 0.0}});
+  const double n = 0.41 - 0.07 * 0.2, peak = 0.2 * std::pow(1.3 * n / 0.3, 1 / (1 - n));
+  EXPECT_NEAR(peak, 0.489, 1e-3);
+  const double top = shida->at(peak, 3, 1000).stress;
+  EXPECT_GT(top, shida->at(0.9 * peak, 3, 1000).stress);
+  for (double e : {1.0, 2.3, 5.0}) {
+    EXPECT_DOUBLE_EQ(shida->at(e, 3, 1000).stress, top) << e;
+    EXPECT_EQ(shida->at(e, 3, 1000).d_strain, 0.0) << e;
+  }
+}
+
 TEST(FlowStress, DerivativesEqualCentralDifferences) {
   const auto shida = law("shida", {{"carbon", 0.45}});
   for (double T : {800.0, 1150.0})  // below and above T_d (1.02 of 1000 K for 0.45 % C)
