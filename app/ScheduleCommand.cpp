@@ -15,8 +15,8 @@
 #include "io/RunWriter.h"
 #include "process/ProcessRegistry.h"
 #include "process/rolling/RollingSchedule.h"
-#include "project/ModelBuilder.h"
 #include "project/Overrides.h"
+#include "project/SchedulePasses.h"
 
 namespace rollsim::app {
 
@@ -42,31 +42,6 @@ nlohmann::json as_given(const RunOptions& o) {
   nlohmann::json given = nlohmann::json::parse(in);
   apply_overrides(given, o.overrides);  // they applied once already: no problem left
   return given;
-}
-
-/// Pass k's project, built into its model with what the slab brings (cooled first where the pass says so).
-struct PassSetup {
-  Project project;
-  RunConfig config;
-  Model model;
-};
-PassSetup set_up(ScheduleRun& schedule, size_t k, const Project& whole) {
-  const auto make = [&] {
-    nlohmann::json j = schedule.pass_project(k);
-    j["name"] = whole.name() + "-" + pass_folder(k);
-    PassSetup s;
-    s.project = parse_project(j.dump(), whole.source);
-    s.config = s.project.config();
-    s.model = build_model(s.project);
-    return s;
-  };
-  PassSetup s = make();
-  if (schedule.cools(k)) {
-    schedule.cool(k, s.model);
-    s = make();  // its slab_temperature is now the cooled mean
-  }
-  schedule.apply(k, s.model);
-  return s;
 }
 
 /// DIR/schedule.csv, schedule.png and summary.json: how the schedule ended and its passes.
@@ -101,7 +76,7 @@ int run_schedule(const RunOptions& o, const Project& project, const Stopwatch& w
     if (!o.quiet) std::fprintf(stderr, "rollsim: pass %zu of %zu\n", k + 1, schedule.passes());
     PassSetup s;
     try {
-      s = set_up(schedule, k, project);
+      s = set_up_pass(schedule, k, project);
     } catch (const ProjectError& e) {
       return invalid("pass " + std::to_string(k + 1) + ": " + e.what());
     } catch (const AnalysisError& e) {
@@ -111,14 +86,15 @@ int run_schedule(const RunOptions& o, const Project& project, const Stopwatch& w
     std::optional<RunFolder> pass_folder_lock;
     try {
       pass_folder_lock.emplace(pass_dir, stamp, process_outputs());
-      check_free_space(pass_dir, output_bytes(s.model, s.config));
+      check_free_space(pass_dir, output_bytes(s.model, s.project.config()));
     } catch (const FolderError& e) {
       return invalid(e.what());
     }
-    StderrProgress progress(o.quiet, s.config);
+    const RunConfig config = s.project.config();
+    StderrProgress progress(o.quiet, config);
     const Stopwatch pass_wall;  // each pass's summary times that pass
-    Results results = analyse(s.config, s.model, progress);
-    code = write_results(s.project, s.config, s.model, results, pass_dir, stamp, o, pass_wall, progress);
+    Results results = analyse(config, s.model, progress);
+    code = write_results(s.project, config, s.model, results, pass_dir, stamp, o, pass_wall, progress);
     if (code != 0 || !results.status.ok()) {
       ended = {results.status.ok() ? Status::error : results.status.status, Reason::none,
                "pass " + std::to_string(k + 1) + " (" + pass_folder(k) + "/summary.json): " + results.status.message};

@@ -7,6 +7,7 @@
 #include "process/rolling/RollingSchedule.h"
 #include "project/ModelBuilder.h"
 #include "project/RunProject.h"
+#include "project/SchedulePasses.h"
 
 namespace rollsim::ui {
 
@@ -129,11 +130,11 @@ AnalysisWorker::~AnalysisWorker() {
   }
 }
 
-bool AnalysisWorker::start(const Project& project) {
+bool AnalysisWorker::start(const Project& project, const nlohmann::json& given) {
   if (thread_) return false;
   cancel_ = false;
   outcome_ = RunOutcome{};
-  thread_ = QThread::create([this, project] { run(project); });
+  thread_ = QThread::create([this, project, given] { run(project, given); });
   connect(thread_, &QThread::finished, this, &AnalysisWorker::thread_done, Qt::QueuedConnection);
   thread_->start();
   return true;
@@ -147,30 +148,26 @@ void AnalysisWorker::thread_done() {
   emit finished(outcome_);
 }
 
-void AnalysisWorker::run(const Project& project) {
+void AnalysisWorker::run(const Project& project, const nlohmann::json& given) {
   const auto start = std::chrono::steady_clock::now();
   RunOutcome out;
   ForwardingObserver obs(*this, project.config());
   try {
-    obs.on_stage("build model");
-    auto model = std::make_shared<const Model>(build_model(project));
-    out.model = model;
-    if (obs.cancel_requested()) {
-      out.status = QStringLiteral("cancelled");
+    if (is_schedule(project.data) && !given.is_null()) {
+      run_schedule(project, given, obs, out);
     } else {
-      auto results = std::make_shared<Results>(run_project(project, *model, &obs));
-      out.status = QString::fromUtf8(to_string(results->status.status));
-      // a run that did not converge says what stopped it; one the process ended early says why (Results::status)
-      out.message = QString::fromStdString(results->status.message);
-      if (is_schedule(project.data))  // the window runs single passes: say which one it ran
-        out.message = QString::fromStdString(
-            "a schedule of " + std::to_string(project.data.at("process").at("passes").size()) +
-            " passes: the window ran its first pass; `rollsim run` runs them all (pass-<n>/, schedule.csv). " +
-            results->status.message);
-      out.dofs = results->dofs;
-      out.cg_iterations = results->solver.cg_iterations;
-      out.solves = results->solver.solves;
-      if (results->bodies.size() == model->bodies.size()) out.results = std::move(results);
+      obs.on_stage("build model");
+      auto model = std::make_shared<const Model>(build_model(project));
+      out.model = model;
+      if (obs.cancel_requested())
+        out.status = QStringLiteral("cancelled");
+      else
+        take(std::make_shared<Results>(run_project(project, *model, &obs)), out);
+      if (is_schedule(project.data))  // run without the document: say which pass it was
+        out.message = QStringLiteral(
+                          "a schedule: the window ran its first pass (without the document to make the "
+                          "others from); `rollsim run` runs them all. ") +
+                      out.message;
     }
   } catch (const std::exception& e) {  // AnalysisError, ProjectError, std::invalid_argument: said to the user
     out.status = QStringLiteral("error");
@@ -179,6 +176,43 @@ void AnalysisWorker::run(const Project& project) {
   obs.done(out.status == QLatin1String("converged"));
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome_ = std::move(out);  // read on the GUI thread after the thread has finished
+}
+
+void AnalysisWorker::take(std::shared_ptr<Results> results, RunOutcome& out) {
+  out.status = QString::fromUtf8(to_string(results->status.status));
+  // a run that did not converge says what stopped it; one the process ended early says why (Results::status)
+  out.message = QString::fromStdString(results->status.message);
+  out.dofs = results->dofs;
+  out.cg_iterations += results->solver.cg_iterations;
+  out.solves += results->solver.solves;
+  if (results->bodies.size() == out.model->bodies.size()) out.results = std::move(results);
+}
+
+void AnalysisWorker::run_schedule(const Project& project, const nlohmann::json& given, AnalysisObserver& obs,
+                                  RunOutcome& out) {
+  ScheduleRun schedule(project.data, given);
+  for (size_t k = 0; k < schedule.passes(); ++k) {
+    obs.on_stage("pass " + std::to_string(k + 1) + " of " + std::to_string(schedule.passes()) + ": build model");
+    const PassSetup pass = set_up_pass(schedule, k, project);
+    out.model = std::make_shared<const Model>(pass.model);
+    if (obs.cancel_requested()) {
+      out.status = QStringLiteral("cancelled");
+      return;
+    }
+    take(std::make_shared<Results>(run_project(pass.project, *out.model, &obs)), out);
+    if (!out.results || out.results->status.status != Status::converged) {
+      out.message = QStringLiteral("pass %1 of %2: ").arg(k + 1).arg(schedule.passes()) + out.message;
+      return;
+    }
+    schedule.finish(k, *out.model, *out.results);
+  }
+  // the window shows the last pass's fields and, first among its charts, the schedule's
+  auto last = std::make_shared<Results>(*out.results);
+  if (!last->process) return;
+  last->process->tables.insert(last->process->tables.begin(), schedule.table());
+  last->process->charts.insert(last->process->charts.begin(), schedule.chart());
+  out.results = last;
+  out.message = QStringLiteral("schedule of %1 passes; the view shows the last pass").arg(schedule.passes());
 }
 
 }  // namespace rollsim::ui

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "analysis/Results.h"
+#include "base/Observer.h"
 #include "model/Model.h"
 #include "project/Project.h"
 
@@ -43,8 +44,10 @@ class AnalysisWorker : public QObject {
   /// Cancels a running analysis and waits for its thread.
   ~AnalysisWorker() override;
 
-  /// Starts a run of a validated project on a new thread; false if a run is under way.
-  bool start(const Project& project);
+  /// Starts a run of a validated project on a new thread; false if a run is under way. `given`: the project as the
+  /// user wrote it (the document), from which a schedule's passes are made — each pass run in turn, as `rollsim run`
+  /// runs them (without it a schedule runs its first pass).
+  bool start(const Project& project, const nlohmann::json& given = nullptr);
   /// Asks the run to stop at its next safe point (thread-safe; may be called from any thread).
   void cancel() { cancel_ = true; }
   bool cancel_requested() const { return cancel_; }
@@ -90,7 +93,12 @@ class AnalysisWorker : public QObject {
 
  private:
   void thread_done();
-  void run(const Project& project);  // on the worker thread
+  void run(const Project& project, const nlohmann::json& given);  // on the worker thread
+  /// A schedule's passes one after the other (project/SchedulePasses); the outcome is the last pass's, with the
+  /// schedule's table and chart first among its process's.
+  void run_schedule(const Project& project, const nlohmann::json& given, AnalysisObserver& obs, RunOutcome& out);
+  /// A run's results into the outcome: status, message, counts, and the fields when every body has them.
+  static void take(std::shared_ptr<Results> results, RunOutcome& out);
 
   QThread* thread_ = nullptr;
   std::atomic<bool> cancel_{false};

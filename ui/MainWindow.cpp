@@ -308,7 +308,7 @@ bool MainWindow::start_run() {
   log_->info(tr("run %1 with solver %2")
                  .arg(QString::fromStdString(doc_->project().name()),
                       QString::fromStdString(doc_->project().data.at("solver").at("mode").get<std::string>())));
-  if (!worker_->start(doc_->project())) return false;
+  if (!worker_->start(doc_->project(), nlohmann::json::parse(doc_->document().dump()))) return false;
   run_status_ = QStringLiteral("running");
   status_->setText(run_status_);
   run_panel_->set_status(run_status_);

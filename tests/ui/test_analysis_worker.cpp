@@ -16,6 +16,8 @@
 #include "RunPanel.h"
 #include "RunPlots.h"
 #include "SolvePlot.h"
+#include "project/RunProject.h"
+#include "project/SchedulePasses.h"
 
 using namespace rollsim;
 using namespace rollsim::ui;
@@ -257,6 +259,41 @@ class TestAnalysisWorker : public QObject {
                                         QStringLiteral("increment 2, travel 0.5 of 3 mm done"),
                                         QStringLiteral("increment 3, travel 1 of 3 mm done"),
                                         QStringLiteral("increment 4, travel 2 of 3 mm done")}));
+  }
+
+  void a_schedule_runs_every_pass_with_the_batch_commands_numbers() {
+    // issue 33: the window runs a schedule's passes as `rollsim run` does (project/SchedulePasses), and shows the
+    // schedule's chart first among the ended run's
+    std::ifstream file(ROLLSIM_SOURCE_DIR "/samples/rolling-2d-schedule.json");
+    json j = json::parse(file);
+    j["process"]["travel"] = 4;
+    j["process"]["travel_increment"] = 2;
+    const Project project = parse_project(j.dump(), "schedule.json");
+    AnalysisWorker worker;
+    QSignalSpy finished(&worker, &AnalysisWorker::finished);
+    QVERIFY(worker.start(project, j));
+    QVERIFY(finished.wait(120000));
+    const RunOutcome out = finished.at(0).at(0).value<RunOutcome>();
+    QCOMPARE(out.status, QStringLiteral("converged"));
+    QVERIFY2(out.message.startsWith(QStringLiteral("schedule of 3 passes")), qPrintable(out.message));
+    QVERIFY(out.results && out.results->process);
+    const MeasureTable& table = out.results->process->tables.at(0);
+    QCOMPARE(QString::fromStdString(table.name), QStringLiteral("schedule"));
+    QCOMPARE(table.rows.size(), size_t{3});
+    QCOMPARE(QString::fromStdString(out.results->process->charts.at(0).file), QStringLiteral("schedule.png"));
+    // the batch command's path, pass by pass: the same forces
+    ScheduleRun batch(project.data, j);
+    for (size_t k = 0; k < batch.passes(); ++k) {
+      const PassSetup pass = set_up_pass(batch, k, project);
+      batch.finish(k, pass.model, run_project(pass.project, pass.model));
+    }
+    for (size_t k = 0; k < 3; ++k) QCOMPARE(table.rows[k][table.column("roll_force")], batch.records()[k].roll_force);
+    // without the document (the old call), the first pass alone, and it says so
+    AnalysisWorker single;
+    QSignalSpy done(&single, &AnalysisWorker::finished);
+    QVERIFY(single.start(project));
+    QVERIFY(done.wait(60000));
+    QVERIFY(done.at(0).at(0).value<RunOutcome>().message.contains(QStringLiteral("the window ran its first pass")));
   }
 
   void destroying_a_running_worker_cancels_and_joins() {

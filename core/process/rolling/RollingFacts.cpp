@@ -91,6 +91,8 @@ std::vector<ProcessFact> rolling_facts(const RollingPass& pass, int dim) {
                 2 / std::sqrt(3.0) * std::log(h0 / h1), pass.mean_strain_rate, pass.temperature)});
   loads(pass, t, dim, facts);
   speed(pass, t, dim, facts);
+  for (size_t k = 0; k < pass.schedule.size(); ++k)  // a schedule: the facts above are its first pass's
+    facts.push_back({"pass " + std::to_string(k + 1), pass.schedule[k].first, pass.schedule[k].second});
   const double through = travel_through(pass);
   if (through < pass.travel)
     facts.push_back({"end of the pass", format("travel ≈ %.0f of %g mm", through, pass.travel),

@@ -2,6 +2,8 @@
 // A rolling pass as the model knows it (built from the project's `process`): which bodies are the slab and the roll,
 // which prescribed motion turns the roll, and the nominal pass geometry the rolling quantities are measured against.
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mesh/RadiusProfile.h"
 
@@ -28,6 +30,8 @@ struct RollingPass {
   double roll_E = 0, roll_nu = 0.3;  // the roll's elasticity (E 0: a rigid roll) [stress, -]
   double friction = -1;  // Coulomb's μ of the roll–slab contact (frictionless: 0); −1: sticking (always bites) [-]
   RadiusProfile profile;  // 3D: the radius's change (≤ 0) by distance from the barrel's centre [length]
+  // a schedule's passes (process.passes) as its facts list them, each {draft, roll}; empty: a single pass
+  std::vector<std::pair<std::string, std::string>> schedule;
 };
 
 }  // namespace rollsim

@@ -539,6 +539,26 @@ json expand_rolling(const json& project) {
   return out;
 }
 
+namespace {
+/// Each pass of a schedule in mill terms: its nominal draft, and its roll and time in air before it.
+std::vector<std::pair<std::string, std::string>> schedule_facts(const json& section) {
+  std::vector<std::pair<std::string, std::string>> out;
+  double h = section.at("slab_thickness");
+  for (size_t k = 0; k < section.at("passes").size(); ++k) {
+    const json s = pass_section(section, k);
+    const double h1 =
+        s.contains("exit_thickness") ? s.at("exit_thickness").get<double>() : h * (1 - s.at("reduction").get<double>());
+    char draft[64], roll[160];
+    std::snprintf(draft, sizeof draft, "%.4g → %.4g mm", h, h1);
+    std::snprintf(roll, sizeof roll, "%.1f %% nominal, R %g mm, %g rpm, %g s in air before", 100 * (h - h1) / h,
+                  roll_radius(s), s.value("roll_speed", 0.0), section.at("passes").at(k).value("interpass_time", 0.0));
+    out.emplace_back(draft, roll);
+    h = h1;
+  }
+  return out;
+}
+}  // namespace
+
 RollingPass rolling_pass(const json& section, const Model& model) {
   const json p = section.contains("passes") ? pass_section(section, 0) : section;
   RollingPass pass;
@@ -572,6 +592,7 @@ RollingPass rolling_pass(const json& section, const Model& model) {
   const std::string friction = p.at("friction");
   if (friction != "sticking") pass.friction = friction == "coulomb" ? friction_coefficient(p) : 0.0;
   if (model.dim == 3) pass.profile = roll_profile(p);
+  if (section.contains("passes")) pass.schedule = schedule_facts(section);
   return pass;
 }
 

@@ -84,6 +84,10 @@ void check_pass(const json& project, size_t k, double received, std::vector<Issu
     issues.push_back({at, "give the pass either a reduction or an exit_thickness"});
     return;
   }
+  if (pass.value("interpass_time", 0.0) > 0 && !project.at("process").contains("heat_transfer"))
+    issues.push_back({at + ".interpass_time",
+                      "has no effect without process.heat_transfer (the slab keeps its "
+                      "temperature between passes): give heat_transfer, or remove it"});
   if (pass.contains("roll_radius") && pass.contains("roll_diameter"))
     issues.push_back({at + ".roll_diameter", "give either roll_radius or roll_diameter, not both"});
   if (pass.contains("exit_thickness") && !(pass.at("exit_thickness").get<double>() < received)) {

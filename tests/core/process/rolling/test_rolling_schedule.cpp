@@ -53,8 +53,10 @@ TEST(RollingSchedule, BadSchedulesAreRefusedAtTheirPaths) {
       refusal(schedule({{{"reduction", 0.2}}, {{"exit_thickness", 85.0}}}));  // pass 1 leaves 80 mm
   EXPECT_TRUE(found(thick, "process.passes[1].exit_thickness: 85 mm is not below the 80 mm the pass receives"))
       << thick;
-  const std::string draft = refusal(schedule({{{"reduction", 0.2}}, {{"interpass_time", 5.0}}}));
+  const std::string draft = refusal(schedule({{{"reduction", 0.2}}, {{"roll_speed", 40.0}}}));
   EXPECT_TRUE(found(draft, "process.passes[1]: give the pass either a reduction or an exit_thickness")) << draft;
+  const std::string idle = refusal(schedule({{{"reduction", 0.2}}, {{"reduction", 0.2}, {"interpass_time", 5.0}}}));
+  EXPECT_TRUE(found(idle, "process.passes[1].interpass_time: has no effect without process.heat_transfer")) << idle;
   const std::string negative = refusal(schedule({{{"reduction", 0.2}, {"interpass_time", -1.0}}}));
   EXPECT_TRUE(found(negative, "process.passes[0].interpass_time")) << negative;
   json both = schedule({{{"reduction", 0.2}}});
