@@ -163,6 +163,22 @@ def section_mean(out, lo, hi):
             means.append(s / (c[-1][1] - c[0][1]))
     return sum(means) / len(means) if means else float("nan")
 
+def layer_mean(out, lo, hi, depth):
+    """The mean temperature of the slab's top `depth` mm (linear between nodes along each column), averaged over the
+    columns at lo < x <= hi."""
+    means = []
+    for c in slab_columns(out):
+        if not lo < c[-1][0] <= hi:
+            continue
+        top, s = c[-1][1], 0.0
+        for a, b in zip(c, c[1:]):
+            y0, y1 = max(a[1], top - depth), b[1]
+            if y1 > y0:
+                at_y = lambda y: a[2] + (b[2] - a[2]) * (y - a[1]) / (b[1] - a[1])
+                s += 0.5 * (at_y(y0) + at_y(y1)) * (y1 - y0)
+        means.append(s / depth)
+    return sum(means) / len(means) if means else float("nan")
+
 def top_element(process):
     """The slab's top element across the half thickness [mm]: sizes ∝ g^-i from the mid-plane, the top one smallest."""
     nt, g = process.get("slab_nt", 8), process.get("thickness_grading", 1)
@@ -439,8 +455,8 @@ print("\n".join([""] + notes) if notes else "")
 print()
 print("To 200 mm (the window past the exit averaged over 160–200 mm, where it is steady):")
 print()
-print(f"| slab_nt, grading | steps mm | how it ended | surface past the exit °C | chill K (1D: {T0 - window:.0f}; roll a sink: {T0 - sink_window:.0f}) | section mean past the exit °C | roll surface °C, hottest | roll force N/mm |")
-print("|---|---|---|---|---|---|---|---|")
+print(f"| slab_nt, grading | steps mm | how it ended | surface past the exit °C | chill K (1D: {T0 - window:.0f}; roll a sink: {T0 - sink_window:.0f}) | chill of the top 3 / 5 / 10 mm's mean K | section mean past the exit °C | roll surface °C, hottest | roll force N/mm |")
+print("|---|---|---|---|---|---|---|---|---|")
 notes = []
 for nt, g in meshes:
     out = f"{work}/c-{nt}-{g}"
@@ -452,10 +468,11 @@ for nt, g in meshes:
                 notes.append(f"- slab_nt {nt}, grading {g}, 0.5 mm steps: {ended(out)}: {why(out)}")
     step = "0.5" if out.endswith("-half") else "1"
     if ended(out) != "converged":
-        print(f"| {nt}, {g} | {step} | {ended(out)} | | | | | |")
+        print(f"| {nt}, {g} | {step} | {ended(out)} | | | | | | |")
         continue
     surf = mean(out, "surface_temperature", 160, 200)
-    print(f"| {nt}, {g} | {step} | converged | {surf:.1f} | {T0 - surf:.0f} | {section_mean(out, 0, L):.1f} | "
+    layers = " / ".join(f"{T0 - layer_mean(out, 0, L, t):.0f}" for t in (3, 5, 10))
+    print(f"| {nt}, {g} | {step} | converged | {surf:.1f} | {T0 - surf:.0f} | {layers} | {section_mean(out, 0, L):.1f} | "
           f"{rows(out)[-1]['roll_temperature']:.1f} | {mean(out, 'roll_force', 160, 200):.0f} |")
 print("\n".join([""] + notes) if notes else "")
 PY
