@@ -104,8 +104,10 @@ void check_pass(const json& project, size_t k, double received, std::vector<Issu
   std::vector<Issue> found;
   check_rolling(single, found);
   for (Issue& i : found) {
+    const std::string path = i.path;
     for (const std::string& key : pass_keys())
       if (i.path == "process." + key && pass.contains(key)) i.path = at + "." + key;
+    if (i.path == path) i.message = "in pass " + std::to_string(k + 1) + " (" + at + "): " + i.message;
     if (std::none_of(issues.begin(), issues.end(),
                      [&](const Issue& o) { return o.path == i.path && o.message == i.message; }))
       issues.push_back(i);

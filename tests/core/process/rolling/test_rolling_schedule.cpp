@@ -65,6 +65,8 @@ TEST(RollingSchedule, BadSchedulesAreRefusedAtTheirPaths) {
   EXPECT_TRUE(found(refusal(schedule({{{"reduction", 0.2}}}, 3)), "process.passes: a schedule runs in plane strain"));
   json slow = schedule({{{"reduction", 0.2}}, {{"reduction", 0.2}, {"roll_speed", 0.0}}});
   EXPECT_TRUE(found(refusal(slow), "process.passes[1].roll_speed")) << refusal(slow);
+  const std::string hub = refusal(schedule({{{"reduction", 0.2}}, {{"reduction", 0.2}, {"roll_radius", 140.0}}}));
+  EXPECT_TRUE(found(hub, "process.roll_hub_radius: in pass 2 (process.passes[1]): 150 mm must be smaller")) << hub;
   EXPECT_EQ(refusal(schedule({{{"reduction", 0.2}}, {{"exit_thickness", 70.0}, {"roll_radius", 250.0}}})), "accepted");
 }
 
