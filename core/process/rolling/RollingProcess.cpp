@@ -257,9 +257,9 @@ std::pair<double, double> pass_strain_and_rate(const json& p) {
   return {strain, strain * surface_speed(p) / std::sqrt(roll_radius(p) * (h0 - h1))};
 }
 
-/// The slab's flow stress for the closed forms: σ_0, or its law's mean over the pass's strain at the mean rate
-/// (Simpson's rule, 64 intervals).
-double pass_flow_stress(const json& p) {
+}  // namespace
+
+double pass_flow_stress(const json& p, double strain_before) {
   const MaterialData m = slab_material_data(p);
   if (m.flow_stress.law.empty()) return m.yield_stress;
   const auto flow = make_flow_stress(m);
@@ -267,10 +267,12 @@ double pass_flow_stress(const json& p) {
   constexpr int n = 64;
   double sum = 0;
   for (int i = 0; i <= n; ++i)
-    sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * flow->at(strain * i / n, rate, m.temperature).stress;
+    sum += (i == 0 || i == n ? 1
+            : i % 2          ? 4
+                             : 2) *
+           flow->at(strain_before + strain * i / n, rate, m.temperature).stress;
   return sum / (3 * n);
 }
-}  // namespace
 
 namespace {
 std::string mm(double v) {

@@ -29,6 +29,12 @@ json expand_rolling(const json& project);
 /// `model` built from expand_rolling(project).
 RollingPass rolling_pass(const json& section, const Model& model);
 
+/// The slab's flow stress for the closed forms (Sims's force, a Coulomb pass's shear limit) from the validated
+/// `section`: σ_0, or its law's mean over the pass's strain (2/√3) ln(h0/h1) at the pass's mean rate and the slab's
+/// temperature (Simpson's rule, 64 intervals), starting from `strain_before` (a schedule's later pass: what the slab
+/// brings).
+double pass_flow_stress(const json& section, double strain_before = 0);
+
 /// The rolling pass as a process of the registry (process.type: rolling).
 class RollingProcess final : public Process {
  public:

@@ -267,6 +267,9 @@ void ScheduleRun::finish(size_t k, const Model& model, const Results& results) {
   rec.interpass_time = project_.at("process").at("passes").at(k).value("interpass_time", 0.0);
   rec.entry_temperature = pass.temperature;
   rec.sims_force = theory.sims_force;
+  RollingPass carried = pass;  // the same pass on a slab that is already strained
+  carried.flow_stress = pass_flow_stress(section(k), k > 0 ? state_.mean_strain : 0.0);
+  rec.sims_force_carried = rolling_theory(carried).sims_force;
   const RollingIncrement& end = measured.increments.empty() ? RollingIncrement{} : measured.steady;
   rec.exit_thickness = end.exit_thickness > 0 ? end.exit_thickness : pass.exit_thickness;
   rec.roll_force = end.roll_force, rec.roll_torque = end.roll_torque, rec.roll_power = end.roll_power;
@@ -304,6 +307,17 @@ void ScheduleRun::finish(size_t k, const Model& model, const Results& results) {
   const Eigen::Map<const Eigen::VectorXd> strain(slab.plastic_strain.data(),
                                                  static_cast<Eigen::Index>(slab.plastic_strain.size()));
   state_.layer_strain = row_means(layers, element_in, strain);
+  {  // the rolled part's volume mean
+    const Eigen::VectorXd share = node_volumes(mesh);
+    double sum = 0, weight = 0;
+    for (int e = 0; e < mesh.num_elements(); ++e) {
+      if (!element_in[static_cast<size_t>(e)]) continue;
+      double v = 0;
+      for (int a = 0; a < mesh.nodes_per_elem(); ++a) v += share[mesh.element(e)[a]];
+      sum += v * strain[e], weight += v;
+    }
+    state_.mean_strain = sum / weight;
+  }
   const Eigen::VectorXd T = node_temperatures(mesh, slab);
   state_.row_temperature = T.size() > 0 ? row_means(rows, node_in, T) : std::vector<double>{};
   if (T.size() > 0) {  // the rolled part's volume mean
@@ -319,26 +333,28 @@ void ScheduleRun::finish(size_t k, const Model& model, const Results& results) {
 }
 
 MeasureTable ScheduleRun::table() const {
-  MeasureTable t{"schedule",
-                 {{"pass", "pass", "-"},
-                  {"entry_thickness", "entry thickness", "mm"},
-                  {"exit_thickness", "exit thickness (measured)", "mm"},
-                  {"roll_radius", "roll radius", "mm"},
-                  {"roll_speed", "roll speed", "rpm"},
-                  {"interpass_time", "time in air before the pass", "s"},
-                  {"entry_temperature", "slab mean temperature entering", "°C"},
-                  {"roll_force", "roll force", "N/mm (per unit width)"},
-                  {"sims_roll_force", "Sims's roll force", "N/mm (per unit width)"},
-                  {"roll_torque", "torque per roll", "N·mm/mm (per unit width)"},
-                  {"roll_power", "roll power per roll", "kW/mm (per unit width)"},
-                  {"slab_temperature", "slab mean temperature leaving", "°C"},
-                  {"surface_temperature", "slab surface temperature past the exit", "°C"}},
-                 {}};
+  MeasureTable t{
+      "schedule",
+      {{"pass", "pass", "-"},
+       {"entry_thickness", "entry thickness", "mm"},
+       {"exit_thickness", "exit thickness (measured)", "mm"},
+       {"roll_radius", "roll radius", "mm"},
+       {"roll_speed", "roll speed", "rpm"},
+       {"interpass_time", "time in air before the pass", "s"},
+       {"entry_temperature", "slab mean temperature entering", "°C"},
+       {"roll_force", "roll force", "N/mm (per unit width)"},
+       {"sims_roll_force", "Sims's roll force", "N/mm (per unit width)"},
+       {"sims_roll_force_carried", "Sims's roll force from the strain the slab brings", "N/mm (per unit width)"},
+       {"roll_torque", "torque per roll", "N·mm/mm (per unit width)"},
+       {"roll_power", "roll power per roll", "kW/mm (per unit width)"},
+       {"slab_temperature", "slab mean temperature leaving", "°C"},
+       {"surface_temperature", "slab surface temperature past the exit", "°C"}},
+      {}};
   for (size_t k = 0; k < records_.size(); ++k) {
     const PassRecord& r = records_[k];
     t.rows.push_back({static_cast<double>(k + 1), r.entry_thickness, r.exit_thickness, r.roll_radius, r.roll_speed,
-                      r.interpass_time, r.entry_temperature, r.roll_force, r.sims_force, r.roll_torque, r.roll_power,
-                      r.slab_temperature, r.surface_temperature});
+                      r.interpass_time, r.entry_temperature, r.roll_force, r.sims_force, r.sims_force_carried,
+                      r.roll_torque, r.roll_power, r.slab_temperature, r.surface_temperature});
   }
   return t;
 }
@@ -355,6 +371,7 @@ ChartRequest ScheduleRun::chart() const {
   c.right_title = "temperature [°C]";
   c.lines = {{"roll_force", "roll force", 1e-3, false, 0},
              {"sims_roll_force", "Sims's roll force", 1e-3, false, 2},
+             {"sims_roll_force_carried", "Sims's from the strain brought", 1e-3, false, 4},
              {"slab_temperature", "slab mean temperature leaving", 1, true, 1},
              {"surface_temperature", "surface temperature past the exit", 1, true, 3}};
   return c;

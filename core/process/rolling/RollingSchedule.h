@@ -36,6 +36,7 @@ void check_schedule(const json& project, std::vector<Issue>& issues);
 struct SlabState {
   double thickness = 0, length = 0;     // [length]
   std::vector<double> layer_strain;     // per element layer from the mid-plane: mean equivalent plastic strain [-]
+  double mean_strain = 0;               // its volume mean [-]
   std::vector<double> row_temperature;  // per node row from the mid-plane: mean temperature [°C] (empty: none)
   std::vector<double> cooled;           // per node of the next pass's slab, after the air (empty: not cooled)
   double mean_temperature = 0;          // the volume mean of the temperature it brings (cooled, when it was) [°C]
@@ -46,6 +47,7 @@ struct PassRecord {
   double entry_thickness = 0, exit_thickness = 0, roll_radius = 0, roll_speed = 0, interpass_time = 0;
   double entry_temperature = 0;  // the slab's mean as the pass began (after the air) [°C]
   double roll_force = 0, roll_torque = 0, roll_power = 0, sims_force = 0;
+  double sims_force_carried = 0;  // Sims's with the flow stress from the strain the slab brings (pass 1: the same)
   double slab_temperature = 0, surface_temperature = 0;  // at the pass's end (0: no temperature) [°C]
   bool thermal = false;
 };

@@ -139,6 +139,9 @@ TEST(RollingSchedule, TheNextPassReceivesTheSlabThePassBeforeLeft) {
   EXPECT_NEAR(t.rows[1][t.column("entry_thickness")], rec.exit_thickness, 1e-12);
   EXPECT_NEAR(t.rows[1][t.column("entry_temperature")], cooled, 1e-9);
   EXPECT_GT(t.rows[1][t.column("roll_force")], 0.0);
+  // Sims's from the strain the slab brings is harder than the virgin slab's (Shida's strain term), the same in pass 1
+  EXPECT_GT(t.rows[1][t.column("sims_roll_force_carried")], 1.01 * t.rows[1][t.column("sims_roll_force")]);
+  EXPECT_EQ(t.rows[0][t.column("sims_roll_force_carried")], t.rows[0][t.column("sims_roll_force")]);
   EXPECT_EQ(run.summary().at("passes").size(), 2u);
 }
 
