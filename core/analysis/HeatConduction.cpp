@@ -108,7 +108,6 @@ void HeatConduction::add_contacts(const HeatStepInput& in, Triplets& t, Eigen::V
       if (!s.slip.empty() && s.slip[j] && can_slip(p)) {
         const double slipped = s.slid[j] - (j < before.size() ? before[j] : 0.0);
         const double work = slip_force(p, s.normal_force[j], c.weight) * std::max(slipped, 0.0);
-        balance_.friction += work;
         if (os >= 0) rhs[os + c.slave_node] += p.friction_heat_to_slave * work;
         if (om >= 0)
           for (size_t k = 0; k < c.master_nodes.size(); ++k)
@@ -158,7 +157,6 @@ void HeatConduction::add_plastic_heat(size_t b, const std::vector<double>& state
         const size_t point = static_cast<size_t>(e) * El::NGP + p;
         const double q =
             body.material.heat_capacity * (state[point * h.stride + h.rise] - h.written[point]) * h.volume[point];
-        balance_.plastic += q;
         for (int a = 0; a < El::NN; ++a) rhs[h.offset + body.mesh.element(e)[a]] += N(p, a) * q;
       }
   });
@@ -168,17 +166,9 @@ void HeatConduction::write_points(size_t b, std::vector<double>& state) {
   BodyHeat& h = bodies_[b];
   if (h.rise < 0 || state.empty()) return;
   const Body& body = model_.bodies[b];
-  with_dimension(model_.dim, [&]<int D>() {
-    using El = SolidElement<D>;
-    const auto& N = El::gauss_shape();
-    for (int e = 0; e < body.mesh.num_elements(); ++e)
-      for (int p = 0; p < El::NGP; ++p) {
-        double T = 0;
-        for (int a = 0; a < El::NN; ++a) T += N(p, a) * T_[b][body.mesh.element(e)[a]];
-        const size_t point = static_cast<size_t>(e) * El::NGP + p;
-        h.written[point] = state[point * h.stride + h.rise] = T - body.material.temperature;
-      }
-  });
+  h.written = point_values(body.mesh, T_[b].data());
+  for (size_t point = 0; point < h.written.size(); ++point)
+    state[point * h.stride + h.rise] = h.written[point] -= body.material.temperature;
 }
 
 Eigen::VectorXd HeatConduction::solve(const SparseMatrix& A, const Eigen::VectorXd& rhs) {
@@ -195,7 +185,6 @@ Eigen::VectorXd HeatConduction::solve(const SparseMatrix& A, const Eigen::Vector
 void HeatConduction::step(const HeatStepInput& in, std::vector<std::vector<double>>& states) {
   if (rows_ == 0) return;
   Stopwatch clock;
-  balance_ = {};
   Triplets t;
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(rows_), diagonal = Eigen::VectorXd::Zero(rows_);
   std::vector<std::vector<char>> touching(model_.bodies.size());
@@ -223,11 +212,9 @@ void HeatConduction::step(const HeatStepInput& in, std::vector<std::vector<doubl
   for (size_t b = 0; b < bodies_.size(); ++b) {
     if (bodies_[b].offset < 0) continue;
     const Eigen::VectorXd next = T.segment(bodies_[b].offset, T_[b].size());
-    balance_.stored += bodies_[b].capacity.dot(next - T_[b]);
     T_[b] = next;
     write_points(b, states[b]);
   }
-  balance_.air = balance_.plastic + balance_.friction - balance_.stored;  // what conduction did not keep left
   seconds_ += clock.seconds();
 }
 

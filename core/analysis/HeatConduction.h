@@ -35,11 +35,6 @@ struct HeatStepInput {
   const std::vector<std::vector<double>>* slid_before = nullptr;  // per pair and point: PairState::slid at its start
 };
 
-/// Where the step's heat went [energy, N mm = mJ]: what a check of the balance reads.
-struct HeatBalance {
-  double plastic = 0, friction = 0, air = 0, stored = 0;
-};
-
 class HeatConduction {
  public:
   explicit HeatConduction(const Model& model);
@@ -50,8 +45,6 @@ class HeatConduction {
   void step(const HeatStepInput& in, std::vector<std::vector<double>>& states);
   /// Nodal temperatures of body b [°C] (empty: it does not conduct).
   const Eigen::VectorXd& temperature(int b) const { return T_[static_cast<size_t>(b)]; }
-  /// The last step's heat: generated, lost to the air and stored (C (T − T_n)).
-  const HeatBalance& balance() const { return balance_; }
   double seconds() const { return seconds_; }
   int factorizations() const { return factorizations_; }
 
@@ -79,7 +72,6 @@ class HeatConduction {
   long rows_ = 0;
   std::unique_ptr<Factorization> factor_;
   SparseMatrix pattern_;  // the last analysed pattern
-  HeatBalance balance_;
   double seconds_ = 0;
   int factorizations_ = 0;
 };

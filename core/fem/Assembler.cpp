@@ -114,23 +114,27 @@ IntegrationState IntegrationState::initial(const Body& body) {
   return s;
 }
 
-std::vector<double> initial_point_rises(const Body& body) {
-  std::vector<double> rises;
-  if (body.initial_temperature.empty()) return rises;
-  const Mesh& m = body.mesh;
+std::vector<double> point_values(const Mesh& m, const double* nodal) {
+  std::vector<double> out;
   const auto add = [&](const auto& N) {
     for (int e = 0; e < m.num_elements(); ++e)
       for (int p = 0; p < N.rows(); ++p) {
-        double T = 0;
-        for (int a = 0; a < N.cols(); ++a)
-          T += N(p, a) * body.initial_temperature[static_cast<size_t>(m.element(e)[a])];
-        rises.push_back(T - body.material.temperature);
+        double v = 0;
+        for (int a = 0; a < N.cols(); ++a) v += N(p, a) * nodal[m.element(e)[a]];
+        out.push_back(v);
       }
   };
   if (m.dim == 2)
     add(SolidElement<2>::gauss_shape());
   else
     add(SolidElement<3>::gauss_shape());
+  return out;
+}
+
+std::vector<double> initial_point_rises(const Body& body) {
+  if (body.initial_temperature.empty()) return {};
+  std::vector<double> rises = point_values(body.mesh, body.initial_temperature.data());
+  for (double& r : rises) r -= body.material.temperature;
   return rises;
 }
 

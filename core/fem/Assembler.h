@@ -54,6 +54,9 @@ class Assembler {
   int threads_ = 1;
 };
 
+/// A nodal field at every integration point, Σ N_a v_a, element-major (`nodal`: one value per node of `mesh`).
+std::vector<double> point_values(const Mesh& mesh, const double* nodal);
+
 /// Each integration point's temperature rise over the body's material temperature from its initial nodal
 /// temperatures (Σ N_a T_a − T), element-major; empty without Body::initial_temperature.
 std::vector<double> initial_point_rises(const Body& body);

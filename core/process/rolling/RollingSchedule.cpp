@@ -250,15 +250,16 @@ void ScheduleRun::cool(size_t k, const Model& model) {
   Model brought = model;
   apply(k, brought);
   const double time = project_.at("process").at("passes").at(k).value("interpass_time", 0.0);
-  const Eigen::VectorXd T = cooled_in_air(brought, rolling_pass(section(k), model).slab, time);
+  const int slab = rolling_pass(section(k), model).slab;
+  const Eigen::VectorXd T = cooled_in_air(brought, slab, time);
   state_.cooled.assign(T.data(), T.data() + T.size());
-  const Eigen::VectorXd share =
-      node_volumes(model.bodies[static_cast<size_t>(rolling_pass(section(k), model).slab)].mesh);
+  const Eigen::VectorXd share = node_volumes(model.bodies[static_cast<size_t>(slab)].mesh);
   state_.mean_temperature = share.dot(T) / share.sum();
 }
 
 void ScheduleRun::finish(size_t k, const Model& model, const Results& results) {
-  const RollingPass pass = rolling_pass(section(k), model);
+  const json sec = section(k);
+  const RollingPass pass = rolling_pass(sec, model);
   const RollingResults measured = measure_rolling(pass, model, results);
   const RollingTheory theory = rolling_theory(pass);
   PassRecord rec;
@@ -268,7 +269,7 @@ void ScheduleRun::finish(size_t k, const Model& model, const Results& results) {
   rec.entry_temperature = pass.temperature;
   rec.sims_force = theory.sims_force;
   RollingPass carried = pass;  // the same pass on a slab that is already strained
-  carried.flow_stress = pass_flow_stress(section(k), k > 0 ? state_.mean_strain : 0.0);
+  carried.flow_stress = pass_flow_stress(sec, k > 0 ? state_.mean_strain : 0.0);
   rec.sims_force_carried = rolling_theory(carried).sims_force;
   const RollingIncrement& end = measured.increments.empty() ? RollingIncrement{} : measured.steady;
   rec.exit_thickness = end.exit_thickness > 0 ? end.exit_thickness : pass.exit_thickness;
