@@ -173,10 +173,12 @@ void MeshView::rebuild_grid() {
     render();
     return;
   }
-  if (results_ && increment_ >= 0)
-    grid_ = make_model_grid(*model_, results_->increments[static_cast<size_t>(increment_)].bodies);
-  else
-    grid_ = make_model_grid(*model_, results_.get());
+  if (results_ && increment_ >= 0) {
+    const IncrementResults& shown = results_->increments[static_cast<size_t>(increment_)];
+    grid_ = make_model_grid(model_of(shown, *model_), shown.bodies);
+  } else {
+    grid_ = make_model_grid(results_ && results_->model ? *results_->model : *model_, results_.get());
+  }
   warp_->SetInputData(grid_);
   warp_->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "displacement");
   warp_->SetScaleFactor(results_ ? scale_ : 0.0);

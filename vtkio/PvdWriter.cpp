@@ -60,7 +60,8 @@ std::vector<std::filesystem::path> write_increment_collection(const std::filesys
     std::snprintf(name, sizeof name, "_%04zu.vtu", i + 1);
     const std::filesystem::path file = pvd.parent_path() / (stem + name);
     const double load_factor = results.increments[i].load_factor;
-    write_vtu(file, model, results.increments[i].bodies, selected, {compression, state_values(results, load_factor)});
+    write_vtu(file, model_of(results.increments[i], model), results.increments[i].bodies, selected,
+              {compression, state_values(results, load_factor)});
     files.push_back(file);
     char step[40];
     std::snprintf(step, sizeof step, "%.17g", clock.at(load_factor));

@@ -82,6 +82,11 @@ struct NewtonOptions {
   Predictor predictor = Predictor::Tangent;
   double duration = 0;  // the analysis's time [s]: a step of load-factor span Δλ lasts Δλ × duration (0: no time)
   Forcing forcing = Forcing::Fixed;
+  // remeshing (analysis/Remeshing): the smallest corner Jacobian ratio an element of a finite-strain plastic body may
+  // reach, against the mesh its segment started on, before the run moves that body's nodes back to their spread (0:
+  // never), and how often it may
+  double remesh_quality = 0;
+  int max_remeshes = 20;
   // how the user makes the steps smaller, for a diverged run's advice (a process's own step: "a smaller
   // process.travel_increment (now 1 mm)"); empty: more analysis.increments
   std::string smaller_steps;
@@ -153,6 +158,23 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
                "is assembled and factored once; refactor — it is re-evaluated by its residual like any group (to "
                "measure what keeping saves)"),
            &N::constant_tangents),
+      bind(bounded(
+               non_negative(
+                   "remesh_quality", "-",
+                   "Newton, 2D: remesh before an element folds — after a converged step where an element "
+                   "of a finite-strain plastic body has a corner Jacobian below this share of where its "
+                   "segment began (ParaView's jacobian_ratio field), that body's nodes are moved back to "
+                   "their original spread along its deformed boundary (same elements and node sets), "
+                   "every point's state (plastic strain, elastic strain, temperature) carried onto them "
+                   "by a lumped L2 projection, and the run goes on from there with what is left of the "
+                   "prescribed motion (summary.json `remeshes`: when, why, the shape before and after, "
+                   "the plastic strain's integral before and after). 0: never. Every body must be "
+                   "finite-strain and plastic, the run driven by prescribed motion (docs/VALIDATION.md "
+                   "\"Remeshing\"); 1: after every step that compresses an element at all, a check of the transfer)"),
+               0.0, 1.0),
+           &N::remesh_quality),
+      bind(count("max_remeshes", "Newton: how many remeshes a run may make (analysis.remesh_quality)", 1000),
+           &N::max_remeshes),
       bind(boolean("line_search",
                    "Newton: one secant step along the correction when the residual's work along it did not halve"),
            &N::line_search),

@@ -22,6 +22,7 @@
 #include "contact/ContactStiffness.h"
 #include "contact/Friction.h"
 #include "contact/FrictionStiffness.h"
+#include "mesh/ElementQuality.h"
 #include "solve/Factorization.h"
 
 namespace rollsim {
@@ -161,6 +162,9 @@ class NewtonRun {
   bool extrapolate(double span);
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
+  /// With NewtonOptions::remesh_quality: the first element of a finite-strain plastic body whose smallest corner
+  /// Jacobian ratio is below it at load factor lf (the run stops there for a remesh); none otherwise.
+  std::optional<RemeshDue> distorted(double lf) const;
   const Model& model_;
   const IncrementMeasure* measure_;  // a process's measures of each increment, told to the observer (may be null)
   SolverStrategy& solver_;
@@ -342,6 +346,21 @@ void NewtonRun::recover_into(Results& into, double lf) const {
       lambda_valid_ ? Eigen::VectorXd(lambda_.head(contact_.d.size())) : Eigen::VectorXd::Zero(contact_.d.size());
   contact_results(model_, pairs_, rows_, contact_.kept, lc, into);
   add_contact_reactions(layout_.body_dofs(), rows_, contact_.kept, lc, friction_loads(model_, pairs_), into);
+}
+
+std::optional<RemeshDue> NewtonRun::distorted(double lf) const {
+  if (opt_.remesh_quality <= 0) return std::nullopt;
+  const std::vector<Eigen::VectorXd> u = body_displacements(lf);
+  RemeshDue worst;
+  for (size_t b = 0; b < model_.bodies.size(); ++b) {
+    const Body& body = model_.bodies[b];
+    if (body.kinematics != Kinematics::Finite || !body.material.plastic()) continue;
+    for (int e = 0; e < body.mesh.num_elements(); ++e)
+      if (const double q = corner_jacobian_ratio(body.mesh, u[b].data(), e); q < worst.quality)
+        worst = {static_cast<int>(b), e, q};
+  }
+  if (worst.quality >= opt_.remesh_quality) return std::nullopt;
+  return worst;
 }
 
 double norm(const std::vector<double>& parts) {
@@ -686,6 +705,7 @@ Results NewtonRun::run() {
       res.status = {Status::converged, Reason::none, over};
       break;
     }
+    if (lf < 1.0 && (res.remesh_due = distorted(lf))) break;
     if (attempt_no == 0 && depth > 0) {  // grow back after a cut-back once a step converges at first attempt
       step *= 2;
       --depth;
@@ -712,6 +732,9 @@ Results NewtonRun::run() {
       res.increments.back().bodies = res.bodies;
       res.increments.back().contacts = res.contacts;
     }
+    for (size_t b = 0; res.remesh_due && b < model_.bodies.size(); ++b)
+      res.bodies[b].point_state =
+          layout_.assembler().committed_state(static_cast<int>(b), model_.bodies[b].mesh.num_elements());
   }
   res.timing.total_s = total.seconds();
   return res;

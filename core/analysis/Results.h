@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,8 @@
 #include "solve/SolveStats.h"
 
 namespace rollsim {
+
+struct Model;
 
 struct BodyResults {
   Eigen::VectorXd displacement;  // node-major, dim components per node [length]
@@ -32,6 +35,9 @@ struct BodyResults {
   // per node, dim components (node-major), sized with contact_pressure: the tangential part of the contact force on
   // each slave point over its tributary measure — the friction (shear) traction on the slave surface [stress]
   Eigen::VectorXd contact_shear;
+  // every integration point's committed state (element-major, the material's state_size() each), kept only where a
+  // run stopped for a remesh (analysis/Remeshing carries it to the next segment)
+  std::vector<double> point_state;
 };
 
 /// Resultants of one contact pair on its slave surface (forces on the slave body).
@@ -54,6 +60,31 @@ struct IncrementResults {
   long cg_iterations = 0;         // interface CG iterations of those solves (0 for direct strategies)
   std::vector<BodyResults> bodies;
   std::vector<ContactResult> contacts;
+  // the model these fields belong to when it is not the run's own: a remeshed run's later segments (null: the run's)
+  std::shared_ptr<const Model> model;
+};
+
+/// A Newton run that stopped for a remesh (NewtonOptions::remesh_quality): the body and its element whose smallest
+/// corner Jacobian ratio fell below the limit after the last converged step.
+struct RemeshDue {
+  int body = -1, element = -1;
+  double quality = 1;
+};
+
+/// One remesh of a run (analysis/Remeshing), as summary.json lists it.
+struct RemeshRecord {
+  int increment = 0;        // the converged increments before it
+  double load_factor = 0;   // where it happened, on the run's load factor
+  std::string body;         // the body whose nodes were moved back to their spread
+  int element = -1;         // its element whose quality fell below the limit
+  double quality = 1;       // that element's smallest corner Jacobian ratio against the segment's start [-]
+  double shape_before = 1;  // the body's worst corner sine (1: right angles, 0: a folded corner) before the move
+  double shape_after = 1;   // and after it
+  std::string nodes_kept;   // why its nodes stayed where they were (the run went on from there); "": moved
+  // the check field, the equivalent plastic strain: its integral over the body [volume] and largest value [-], before
+  // and after the transfer (a conservative, bounded transfer keeps the first and never raises the second)
+  double plastic_strain_integral_before = 0, plastic_strain_integral_after = 0;
+  double plastic_strain_max_before = 0, plastic_strain_max_after = 0;
 };
 
 /// One Newton iteration, as convergence.csv lists it.
@@ -106,6 +137,16 @@ struct Results {
   std::optional<AutoChoice> auto_choice;  // solver.mode was `auto`: what it chose and why
   std::string update_policy;  // the Newton driver's update policy (`always`, `selective:0.01`); empty: linear
   std::optional<ProcessResults> process;  // a process's measures over the completed increments (process/)
+  // remeshing (analysis.remesh_quality): why a segment stopped (Newton driver), the remeshes of the whole run, and
+  // the model of `bodies` when it is not the run's own (null: the run's)
+  std::optional<RemeshDue> remesh_due;
+  std::vector<RemeshRecord> remeshes;
+  std::shared_ptr<const Model> model;
 };
+
+/// The model the fields of `increment` belong to: the run's own, or a later segment's after a remesh.
+inline const Model& model_of(const IncrementResults& increment, const Model& run_model) {
+  return increment.model ? *increment.model : run_model;
+}
 
 }  // namespace rollsim

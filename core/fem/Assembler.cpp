@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <functional>
+#include <stdexcept>
+#include <string>
 
 #include "base/Parallel.h"
 #include "fem/ElementLoop.h"
@@ -101,6 +103,14 @@ IntegrationState IntegrationState::initial(const Body& body) {
   const int points = body.mesh.dim == 2 ? SolidElement<2>::NGP : SolidElement<3>::NGP;
   s.per_element = points * make_material(body.material)->state_size();
   s.committed.assign(static_cast<size_t>(s.per_element) * body.mesh.num_elements(), 0.0);
+  if (!body.initial_state.empty()) {
+    if (body.initial_state.size() != s.committed.size())
+      throw std::invalid_argument("body '" + body.name + "': an initial state of " +
+                                  std::to_string(body.initial_state.size()) + " values for points holding " +
+                                  std::to_string(s.committed.size()));
+    s.committed = s.trial = body.initial_state;
+    return s;
+  }
   const auto material = make_material(body.material);
   const int size = material->state_size(), alpha = material->equivalent_plastic_strain_index();
   const int rise = body.material.thermal() ? material->temperature_rise_index() : -1;

@@ -18,7 +18,8 @@ struct IntegrationState {
   double dt = 0;  // the time from the committed to the trial state [s] (0: quasi-static, no time)
 
   /// The state of every element of `body` (empty for a material without state): zero, but for the equivalent plastic
-  /// strain and the temperature rise a body starts from (Body::initial_plastic_strain, initial_temperature).
+  /// strain and the temperature rise a body starts from (Body::initial_plastic_strain, initial_temperature), or the
+  /// whole state it is given (Body::initial_state).
   static IntegrationState initial(const Body& body);
   void commit() { committed = trial; }
 };

@@ -110,9 +110,30 @@ json increments_section(const Model& m, const Results& r) {
       entry["newton_iterations"] = inc.newton_iterations;
       entry["cutbacks"] = inc.cutbacks;
     }
-    add_increment_fields(m, inc, entry);
+    add_increment_fields(model_of(inc, m), inc, entry);
     list.push_back(entry);
   }
+  return list;
+}
+/// Every remesh of the run (analysis/Remeshing): where, why, the body's shape and the check field before and after.
+json remeshes_section(const std::vector<RemeshRecord>& remeshes) {
+  json list = json::array();
+  for (const RemeshRecord& m : remeshes)
+    list.push_back(
+        {{"after_increment", m.increment},
+         {"load_factor", m.load_factor},
+         {"body", m.body},
+         {"element", m.element},
+         {"jacobian_ratio", m.quality},
+         {"nodes", m.nodes_kept.empty() ? std::string("moved back to their spread") : "kept: " + m.nodes_kept},
+         {"worst_corner_sine", {{"before", m.shape_before}, {"after", m.shape_after}}},
+         {"plastic_strain_integral",
+          {{"before", m.plastic_strain_integral_before},
+           {"after", m.plastic_strain_integral_after},
+           {"relative_change", m.plastic_strain_integral_before > 0
+                                   ? m.plastic_strain_integral_after / m.plastic_strain_integral_before - 1
+                                   : 0.0}}},
+         {"max_plastic_strain", {{"before", m.plastic_strain_max_before}, {"after", m.plastic_strain_max_after}}}});
   return list;
 }
 }  // namespace
@@ -186,8 +207,9 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   }
   s["config"] = run.config;  // every option as the run resolved it, defaults included
   s["increments"] = increments_section(model, r);
+  if (!r.remeshes.empty()) s["remeshes"] = remeshes_section(r.remeshes);
   if (!r.status.ok()) return s;
-  s["results"] = results_section(model, r);
+  s["results"] = results_section(r.model ? *r.model : model, r);
   if (r.process) s["results"][r.process->process] = r.process->summary;  // its steady values, units, closed forms
   s["fields"] = json::array();  // what result.vtu holds, from the output registry
   for (const OutputField& f : output_fields())

@@ -31,6 +31,9 @@ class J2Plasticity final : public Material {
   /// plastic-strain slots, α.
   void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
                      FiniteTangent* tangent) const override;
+  /// C_p⁻¹ becomes b_e = F C_p⁻¹ Fᵀ (with F = I on the new reference, b_e trial = C_p⁻¹; its volume, det b_e = J_e²,
+  /// becomes the plastic volume 1 / J_p² that update_finite scales the stress by); α and ΔT stay.
+  void rebase_state(const Eigen::Matrix3d& F, double* state) const override;
 
   /// σ_y at equivalent plastic strain α reached by Δα in this increment, the point `rise` above the material's
   /// temperature, and its slope dσ_y/dΔα [stress].
@@ -39,6 +42,8 @@ class J2Plasticity final : public Material {
   static constexpr int kStateSize = 8;  // ε_p (xx, yy, zz, γxy, γyz, γzx), α, the temperature rise ΔT [K]
   static constexpr int kAlpha = 6;
   static constexpr int kHeat = 7;
+  /// |J_p − 1| below which a state's plastic volume is round-off of isochoric flow, not a rebased reference's
+  static constexpr double kUnitVolume = 1e-9;
 
  private:
   /// Δα of the return from the trial von Mises stress q: q − 3G Δα = σ_y(α_n + Δα), Newton safeguarded by bisection

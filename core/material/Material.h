@@ -48,6 +48,10 @@ class Material {
   /// exponential map around their return.
   virtual void update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
                              FiniteTangent* tangent) const;
+  /// Finite strain: a committed state as it reads on a reference configuration that is the current one, F the
+  /// deformation gradient there from the old reference (a remesh's new mesh starts at the current positions, F = I):
+  /// update_finite(I, rebased) gives the stress update_finite(F, state) gave. Default: no state to change.
+  virtual void rebase_state(const Eigen::Matrix3d& /*F*/, double* /*state*/) const {}
   /// The tangent at zero deformation and the initial state: the stiffness of a linear analysis.
   Tangent6 initial_tangent() const;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -42,6 +43,21 @@ double corner_jacobian_ratio(const Mesh& mesh, const double* u, int e) {
     if (r != 0) worst = std::min(worst, corner_jacobian(def, i) / r);
   }
   return worst == std::numeric_limits<double>::infinity() ? 1.0 : worst;  // no corner of positive size: degenerate
+}
+
+double corner_sine(const Mesh& mesh, const std::vector<Point>& x, int e) {
+  const int n = mesh.nodes_per_elem();
+  std::vector<Point> at(n);
+  for (int a = 0; a < n; ++a) at[a] = x[mesh.element(e)[a]];
+  auto length = [](const Point& p) { return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]); };
+  double worst = 1;
+  for (int i = 0; i < n; ++i) {
+    double edges =
+        length(edge(at[i], at[(i % 4 + 1) % 4 + i / 4 * 4])) * length(edge(at[i], at[(i % 4 + 3) % 4 + i / 4 * 4]));
+    if (n == 8) edges *= length(edge(at[i], at[i < 4 ? i + 4 : i - 4]));
+    if (edges > 0) worst = std::min(worst, corner_jacobian(at, i) / edges);
+  }
+  return worst;
 }
 
 }  // namespace rollsim

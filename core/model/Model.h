@@ -25,6 +25,10 @@ struct Body {
   // material's temperature
   std::vector<double> initial_plastic_strain;  // per element
   std::vector<double> initial_temperature;     // per node
+  // every integration point's whole state (element-major, the material's state_size() each: a remeshed run's next
+  // segment, analysis/Remeshing) — when given, it replaces initial_plastic_strain and the rises of
+  // initial_temperature in the points' state
+  std::vector<double> initial_state;
 };
 
 /// A rigid rotation by `angle` [radian, at load factor 1] about the axis through `center` along the unit vector

@@ -4,6 +4,7 @@
 
 #include "analysis/LinearStatic.h"
 #include "analysis/NewtonStatic.h"
+#include "analysis/Remeshing.h"
 #include "base/Blas.h"
 #include "project/ModelBuilder.h"
 #include "project/SolverChoice.h"
@@ -53,10 +54,14 @@ Results run_linear(const RunConfig& config, const Model& model, AnalysisObserver
 Results run_newton(const RunConfig& config, const Model& model, AnalysisObserver* observer,
                    const IncrementMeasure* measure) {
   set_library_threads(config.solver.threads);
-  const auto solver = make_solver(config.solver_mode, config.solver);
-  refuse_contact(*solver, model);
   const auto policy = make_update_policy(config.update);
-  return run_newton_static(model, *solver, *policy, observer, config.newton, measure);
+  const SegmentRun segment = [&](const Model& m, const NewtonOptions& options, AnalysisObserver* told) {
+    const auto solver = make_solver(config.solver_mode, config.solver);
+    refuse_contact(*solver, m);
+    return run_newton_static(m, *solver, *policy, told, options, measure);
+  };
+  if (config.newton.remesh_quality > 0) return run_with_remeshing(model, config.newton, segment, observer);
+  return segment(model, config.newton, observer);
 }
 }  // namespace
 

@@ -1,0 +1,232 @@
+#include "analysis/Remeshing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include "analysis/AnalysisError.h"
+#include "fem/StateTransfer.h"
+#include "material/Material.h"
+#include "mesh/ElementQuality.h"
+#include "mesh/EvenNodes.h"
+
+namespace rollsim {
+
+namespace {
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+/// A segment's observer told to the run's: increments numbered on from those before, progress on the run's load
+/// factor (a segment's λ covers the run's [base, 1]).
+class SegmentObserver final : public AnalysisObserver {
+ public:
+  SegmentObserver(AnalysisObserver* run, int before, double base) : run_(run), before_(before), base_(base) {}
+  void on_stage(const std::string& s) override { run_->on_stage(s); }
+  void on_increment_begin(int i, int n) override { run_->on_increment_begin(before_ + i, before_ + n); }
+  void on_increment_end(int i, int n) override { run_->on_increment_end(before_ + i, before_ + n); }
+  void on_newton_iteration(int i, int k, double r) override { run_->on_newton_iteration(before_ + i, k, r); }
+  void on_tangents(int i, int k, const std::vector<TangentChoice>& c) override { run_->on_tangents(before_ + i, k, c); }
+  void on_cg_iteration(int s, int k, double r) override { run_->on_cg_iteration(s, k, r); }
+  void on_solve_end(int s, int k) override { run_->on_solve_end(s, k); }
+  void on_factorization(const std::string& g) override { run_->on_factorization(g); }
+  void on_active_set_iteration(int k, int changed) override { run_->on_active_set_iteration(k, changed); }
+  void on_cutback(int i, const std::string& cause) override { run_->on_cutback(before_ + i, cause); }
+  void on_measured(int i, const MeasureRow& row) override { run_->on_measured(before_ + i, row); }
+  void on_progress(double f) override { run_->on_progress(base_ + (1 - base_) * f); }
+  bool cancel_requested() const override { return run_->cancel_requested(); }
+
+ private:
+  AnalysisObserver* run_;
+  int before_;
+  double base_;
+};
+
+/// What is left of a prescribed motion after load factor `lf`, from where it has taken the nodes.
+DisplacementBC rest_of(DisplacementBC bc, double lf) {
+  if (bc.rotation) {
+    for (int i = 0; i < 3; ++i) bc.rotation->center[i] += lf * bc.value[i].value_or(0.0);
+    bc.rotation->angle *= 1 - lf;
+  }
+  for (std::optional<double>& v : bc.value)
+    if (v) *v *= 1 - lf;
+  return bc;
+}
+
+/// The committed state of a body whose elastic strain must become state to be carried: an elastic finite-strain body
+/// goes on as a J2 body that never yields (Hencky's law on b_e = F C_p⁻¹ Fᵀ from C_p⁻¹ = I: the same response), so
+/// that its b_e can be its state. Its state (zero: C_p⁻¹ − I) when it has none yet; `state` otherwise.
+std::vector<double> as_stateful(Body& body, std::vector<double> state) {
+  if (body.material.plastic()) return state;
+  body.material.yield_stress = std::numeric_limits<double>::max();
+  const int points = body.mesh.dim == 2 ? 4 : 8;
+  return std::vector<double>(
+      static_cast<size_t>(points) * body.mesh.num_elements() * make_material(body.material)->state_size(), 0.0);
+}
+
+/// The nodes of body b's contact surfaces, slave or master: they stay where they are (moved along a chord of their
+/// surface, a node may end up inside the other body — a punch's corner cuts the chord of the surface wrapped around
+/// it — and a master node moved would move the surface under the other body's nodes).
+std::vector<int> contact_nodes(const Model& model, int b) {
+  std::vector<int> nodes;
+  const Mesh& mesh = model.bodies[static_cast<size_t>(b)].mesh;
+  for (const ContactPair& p : model.contacts)
+    for (const auto& [body, surface] : {std::pair{p.slave_body, p.slave_surface}, {p.master_body, p.master_surface}})
+      if (body == b)
+        for (int n : surface_nodes(mesh, mesh.surfaces.at(surface))) nodes.push_back(n);
+  return nodes;
+}
+
+/// The smallest and largest values of a point-state component and its integral over the mesh at `x`.
+struct CheckField {
+  double integral = 0, max = 0;
+};
+CheckField check_field(const Mesh& m, const std::vector<Point3>& x, const std::vector<double>& state, int width,
+                       int component) {
+  CheckField c;
+  if (component < 0 || width == 0) return c;
+  c.integral = integral(m, x, state, width, component);
+  for (size_t p = 0; p * width < state.size(); ++p) c.max = std::max(c.max, state[p * width + component]);
+  return c;
+}
+
+double worst_shape(const Mesh& m, const std::vector<Point3>& x) {
+  double worst = 1;
+  for (int e = 0; e < m.num_elements(); ++e) worst = std::min(worst, corner_sine(m, x, e));
+  return worst;
+}
+
+/// The segment's results added to the run's: its increments on the run's load factor (from `base`), each with the
+/// model it was computed on (null: the run's own), its iterations numbered on, its times and counts added.
+void add_segment(Results& run, Results seg, const std::shared_ptr<const Model>& model, double base) {
+  const int before = static_cast<int>(run.increments.size());
+  auto global = [base](double lf) { return base + (1 - base) * lf; };
+  for (IncrementResults& inc : seg.increments) {
+    inc.load_factor = global(inc.load_factor);
+    inc.model = model;
+    run.increments.push_back(std::move(inc));
+  }
+  for (NewtonIteration& it : seg.newton) {
+    it.increment += before;
+    it.load_factor = global(it.load_factor);
+    run.newton.push_back(std::move(it));
+  }
+  Timing& t = run.timing;
+  const Timing& s = seg.timing;
+  t.total_s += s.total_s, t.stiffness_s += s.stiffness_s, t.analyze_s += s.analyze_s, t.factorize_s += s.factorize_s;
+  t.solve_s += s.solve_s, t.recovery_s += s.recovery_s, t.heat_s += s.heat_s;
+  t.heat_factorizations += s.heat_factorizations;
+  SolveStats& a = run.solver;
+  for (const auto& [group, n] : seg.solver.factorizations) a.factorizations[group] += n;
+  a.cg_iterations += seg.solver.cg_iterations, a.interface_columns += seg.solver.interface_columns;
+  a.solves += seg.solver.solves, a.analyze_s += seg.solver.analyze_s, a.factorize_s += seg.solver.factorize_s;
+  a.solve_s += seg.solver.solve_s, a.factor_flops_total += seg.solver.factor_flops_total;
+  a.factor = seg.solver.factor;
+  a.cg_lambda_min = seg.solver.cg_lambda_min, a.cg_lambda_max = seg.solver.cg_lambda_max;
+  for (const auto& [group, n] : seg.stiffness_evaluations) run.stiffness_evaluations[group] += n;
+  run.active_set_iterations += seg.active_set_iterations;
+  run.status = std::move(seg.status);
+  run.bodies = std::move(seg.bodies);
+  run.contacts = std::move(seg.contacts);
+  run.model = model;
+  run.dofs = seg.dofs, run.multipliers = seg.multipliers, run.rigid_modes = seg.rigid_modes;
+  run.subdomains = seg.subdomains, run.interface_multipliers = seg.interface_multipliers;
+  run.paper_convention_multipliers = seg.paper_convention_multipliers;
+  run.load_increments = seg.load_increments, run.update_policy = seg.update_policy;
+}
+}  // namespace
+
+Model remeshed_model(const Model& model, const Model& original, const Results& done, double lf, RemeshRecord& record) {
+  const RemeshDue& due = *done.remesh_due;
+  Model next = model;
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    const BodyResults& r = done.bodies[b];
+    Body& moved = next.bodies[b];
+    const std::vector<Point3> x = displaced_nodes(body.mesh, r.displacement);
+    const std::vector<double> state = current_state(moved, r.displacement, as_stateful(moved, r.point_state));
+    moved.initial_plastic_strain.clear();
+    moved.initial_temperature.assign(r.nodal_temperature.data(),
+                                     r.nodal_temperature.data() + r.nodal_temperature.size());
+    moved.mesh.nodes = x;
+    moved.initial_state = state;
+    if (static_cast<int>(b) != due.body) continue;
+    record.body = body.name;
+    record.element = due.element;
+    record.quality = due.quality;
+    record.shape_before = worst_shape(body.mesh, x);
+    Mesh spread = moved.mesh;
+    spread.nodes = even_nodes(original.bodies[b].mesh, x, contact_nodes(model, static_cast<int>(b)));
+    try {
+      check_element_orientation(spread);
+    } catch (const std::runtime_error& e) {  // the boundary itself has folded: the run goes on from where it is
+      record.nodes_kept = std::string("moving them back to their spread would fold an element (") + e.what() + ")";
+    }
+    const auto material = make_material(body.material);
+    const int width = material->state_size(), alpha = material->equivalent_plastic_strain_index();
+    if (record.nodes_kept.empty()) {
+      moved.mesh.nodes = spread.nodes;
+      moved.initial_state = transfer_points(body.mesh, x, state, width, moved.mesh);
+      if (!moved.initial_temperature.empty())
+        moved.initial_temperature = transfer_nodes(body.mesh, x, moved.initial_temperature, moved.mesh);
+    }
+    const CheckField before = check_field(body.mesh, x, state, width, alpha);
+    const CheckField after = check_field(moved.mesh, moved.mesh.nodes, moved.initial_state, width, alpha);
+    record.shape_after = worst_shape(moved.mesh, moved.mesh.nodes);
+    record.plastic_strain_integral_before = before.integral, record.plastic_strain_integral_after = after.integral;
+    record.plastic_strain_max_before = before.max, record.plastic_strain_max_after = after.max;
+  }
+  for (DisplacementBC& bc : next.displacements) bc = rest_of(bc, lf);
+  return next;
+}
+
+Results run_with_remeshing(const Model& model, const NewtonOptions& options, const SegmentRun& run,
+                           AnalysisObserver* observer) {
+  AnalysisObserver silent;
+  AnalysisObserver* told = observer ? observer : &silent;
+  Results out;
+  std::shared_ptr<const Model> current;  // null: the run's own model
+  NewtonOptions opt = options;
+  double base = 0;
+  for (int remeshes = 0;; ++remeshes) {
+    const Model& m = current ? *current : model;
+    opt.remesh_quality = remeshes < options.max_remeshes ? options.remesh_quality : 0.0;
+    SegmentObserver segment(told, static_cast<int>(out.increments.size()), base);
+    Results r = run(m, opt, &segment);
+    std::optional<Model> next;
+    RemeshRecord record;
+    const double lf = r.increments.empty() ? 0.0 : r.increments.back().load_factor;
+    if (r.remesh_due) try {
+        next = remeshed_model(m, model, r, lf, record);
+      } catch (const AnalysisError& e) {
+        r.status = {Status::diverged, Reason::none,
+                    "the remesh at load factor " + fmt(base + (1 - base) * lf) + " failed: " + e.what()};
+      }
+    if (!r.status.ok() && remeshes > 0)
+      r.status.message = "after remesh " + std::to_string(remeshes) + " (load factor " + fmt(base) +
+                         "; increments and load factors below count from it): " + r.status.message;
+    add_segment(out, std::move(r), current, base);
+    if (!next) break;
+    record.increment = static_cast<int>(out.increments.size());
+    record.load_factor = base + (1 - base) * lf;
+    out.remeshes.push_back(record);
+    told->on_stage("remesh " + std::to_string(remeshes + 1) + " at load factor " + fmt(record.load_factor) +
+                   ": body '" + record.body + "', element " + std::to_string(record.element) +
+                   " at corner Jacobian ratio " + fmt(record.quality) +
+                   (record.nodes_kept.empty()
+                        ? " (worst corner sine " + fmt(record.shape_before) + " -> " + fmt(record.shape_after) + ")"
+                        : "; its nodes kept: " + record.nodes_kept));
+    base = record.load_factor;
+    opt.increments = std::max(1, static_cast<int>(std::lround(options.increments * (1 - base))));
+    opt.duration = options.duration * (1 - base);
+    current = std::make_shared<const Model>(std::move(*next));
+  }
+  return out;
+}
+
+}  // namespace rollsim

@@ -1,0 +1,204 @@
+#include "fem/StateTransfer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <stdexcept>
+
+#include "fem/SolidElement.h"
+#include "material/Material.h"
+
+namespace rollsim {
+
+namespace {
+using El = SolidElement<2>;
+constexpr int kSigns[2][4] = {{-1, 1, 1, -1}, {-1, -1, 1, 1}};
+
+Eigen::Vector4d bilinear(double xi, double eta) {
+  Eigen::Vector4d N;
+  for (int a = 0; a < 4; ++a) N[a] = 0.25 * (1 + kSigns[0][a] * xi) * (1 + kSigns[1][a] * eta);
+  return N;
+}
+
+El::Coords coords(const Mesh& m, const std::vector<Point3>& x, int e) {
+  El::Coords c;
+  for (int a = 0; a < 4; ++a) c.col(a) << x[m.element(e)[a]][0], x[m.element(e)[a]][1];
+  return c;
+}
+
+void require_quads(const Mesh& m) {
+  if (m.type != ElementType::Quad4) throw std::invalid_argument("state transfer: 2D quad meshes only");
+}
+
+/// The weights of an element's four Gauss points at (ξ, η): the bilinear interpolation through them (at ±1/√3), (ξ, η)
+/// held within their square — all in [0, 1], summing to 1.
+Eigen::Vector4d gauss_weights(double xi, double eta) {
+  const double g = std::sqrt(3.0);
+  return bilinear(std::clamp(xi * g, -1.0, 1.0), std::clamp(eta * g, -1.0, 1.0));
+}
+
+/// The values at `place` interpolated from nodal values (`width` per node).
+void interpolate(const Mesh& m, const std::vector<double>& nodal, int width, const MeshPlace& place, double* out) {
+  const Eigen::Vector4d N = bilinear(place.xi, place.eta);
+  for (int c = 0; c < width; ++c) {
+    out[c] = 0;
+    for (int a = 0; a < 4; ++a) out[c] += N[a] * nodal[static_cast<size_t>(m.element(place.element)[a]) * width + c];
+  }
+}
+
+/// Values of `from` (nodal, `width` each) at the points `at`, each searched from the element `near[i]`.
+std::vector<double> sample(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& nodal, int width,
+                           const std::vector<Point3>& at, const std::vector<int>& near) {
+  const PointLocator locator(from, x);
+  std::vector<double> out(at.size() * width);
+  for (size_t i = 0; i < at.size(); ++i)
+    interpolate(from, nodal, width, locator.locate(at[i], near[i]), out.data() + i * width);
+  return out;
+}
+
+int clamp_element(int e, const Mesh& m) { return std::clamp(e, 0, m.num_elements() - 1); }
+}  // namespace
+
+PointLocator::PointLocator(const Mesh& mesh, const std::vector<Point3>& x) : mesh_(mesh), x_(x) {
+  require_quads(mesh);
+  std::vector<std::vector<int>> of_node(mesh.num_nodes());
+  for (int e = 0; e < mesh.num_elements(); ++e)
+    for (int a = 0; a < 4; ++a) of_node[mesh.element(e)[a]].push_back(e);
+  neighbours_.resize(mesh.num_elements());
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    for (int a = 0; a < 4; ++a)
+      for (int f : of_node[mesh.element(e)[a]])
+        if (f != e) neighbours_[e].push_back(f);
+    std::sort(neighbours_[e].begin(), neighbours_[e].end());
+    neighbours_[e].erase(std::unique(neighbours_[e].begin(), neighbours_[e].end()), neighbours_[e].end());
+  }
+}
+
+double PointLocator::local(int e, const Point3& p, double& xi, double& eta) const {
+  const El::Coords c = coords(mesh_, x_, e);
+  xi = eta = 0;
+  for (int it = 0; it < 30; ++it) {
+    const Eigen::Vector4d N = bilinear(xi, eta);
+    Eigen::Matrix<double, 2, 4> dN;
+    for (int a = 0; a < 4; ++a) {
+      dN(0, a) = 0.25 * kSigns[0][a] * (1 + kSigns[1][a] * eta);
+      dN(1, a) = 0.25 * kSigns[1][a] * (1 + kSigns[0][a] * xi);
+    }
+    const Eigen::Vector2d r = c * N - Eigen::Vector2d(p[0], p[1]);
+    const Eigen::Matrix2d J = c * dN.transpose();  // J(k, i) = dx_k / dξ_i
+    const Eigen::Vector2d d = J.fullPivLu().solve(r);
+    if (!d.allFinite()) break;
+    xi = std::clamp(xi - d[0], -2.0, 2.0), eta = std::clamp(eta - d[1], -2.0, 2.0);
+    if (d.norm() < 1e-13) break;
+  }
+  xi = std::clamp(xi, -1.0, 1.0), eta = std::clamp(eta, -1.0, 1.0);
+  const Eigen::Vector2d r = c * bilinear(xi, eta) - Eigen::Vector2d(p[0], p[1]);
+  return r.norm();
+}
+
+MeshPlace PointLocator::locate(const Point3& p, int near) const {
+  std::vector<char> seen(mesh_.num_elements(), 0);
+  std::deque<int> queue{clamp_element(near, mesh_)};
+  seen[queue.front()] = 1;
+  MeshPlace best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  while (!queue.empty()) {
+    const int e = queue.front();
+    queue.pop_front();
+    double xi, eta;
+    const double d = local(e, p, xi, eta);
+    if (d < best_distance) best_distance = d, best = {e, xi, eta};
+    const double size = (coords(mesh_, x_, e).col(2) - coords(mesh_, x_, e).col(0)).norm();
+    if (d <= 1e-9 * size) return best;
+    for (int f : neighbours_[e])
+      if (!seen[f]) seen[f] = 1, queue.push_back(f);
+  }
+  return best;
+}
+
+std::vector<Point3> displaced_nodes(const Mesh& mesh, const Eigen::VectorXd& u) {
+  std::vector<Point3> x = mesh.nodes;
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    for (int c = 0; c < mesh.dim; ++c) x[n][c] += u[static_cast<Eigen::Index>(n) * mesh.dim + c];
+  return x;
+}
+
+std::vector<double> current_state(const Body& body, const Eigen::VectorXd& u, std::vector<double> state) {
+  const Mesh& m = body.mesh;
+  require_quads(m);
+  const auto material = make_material(body.material);
+  const int width = material->state_size();
+  if (width == 0) return state;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    std::array<El::Gradients, El::NGP> dN;
+    std::array<double, El::NGP> dv;
+    El::Gradients centre;
+    El::gradients(coords(m, m.nodes, e), dN, dv, centre);
+    auto gradient = [&](const El::Gradients& g) {
+      Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+      for (int a = 0; a < 4; ++a)
+        for (int i = 0; i < 2; ++i)
+          for (int k = 0; k < 2; ++k) F(i, k) += u[static_cast<Eigen::Index>(m.element(e)[a]) * 2 + i] * g(k, a);
+      return F;
+    };
+    const double Jc = gradient(centre).topLeftCorner<2, 2>().determinant();
+    for (int p = 0; p < El::NGP; ++p) {
+      Eigen::Matrix3d F = gradient(dN[p]);
+      if (body.formulation == Formulation::BBar)  // F̄ = (J_0 / J)^{1/2} F in plane strain
+        F.topLeftCorner<2, 2>() *= std::sqrt(Jc / F.topLeftCorner<2, 2>().determinant());
+      material->rebase_state(F, state.data() + (static_cast<size_t>(e) * El::NGP + p) * width);
+    }
+  }
+  return state;
+}
+
+std::vector<double> transfer_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
+                                    int width, const Mesh& to) {
+  require_quads(to);
+  std::vector<Point3> at;
+  std::vector<int> near;
+  const auto& N = El::gauss_shape();
+  for (int e = 0; e < to.num_elements(); ++e)
+    for (int p = 0; p < El::NGP; ++p) {
+      Point3 q{0, 0, 0};
+      for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 2; ++c) q[c] += N(p, a) * to.nodes[to.element(e)[a]][c];
+      at.push_back(q);
+      near.push_back(clamp_element(e, from));  // the same numbers: a remesh keeps the elements
+    }
+  const PointLocator locator(from, x);
+  std::vector<double> out(at.size() * width);
+  for (size_t i = 0; i < at.size(); ++i) {
+    const MeshPlace place = locator.locate(at[i], near[i]);
+    const Eigen::Vector4d w = gauss_weights(place.xi, place.eta);
+    for (int c = 0; c < width; ++c)
+      for (int p = 0; p < El::NGP; ++p)
+        out[i * width + c] += w[p] * values[(static_cast<size_t>(place.element) * El::NGP + p) * width + c];
+  }
+  return out;
+}
+
+std::vector<double> transfer_nodes(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
+                                   const Mesh& to) {
+  std::vector<int> of_node(to.num_nodes(), 0);
+  for (int e = 0; e < to.num_elements(); ++e)
+    for (int a = 0; a < 4; ++a) of_node[to.element(e)[a]] = e;
+  for (int& e : of_node) e = clamp_element(e, from);
+  return sample(from, x, values, 1, to.nodes, of_node);
+}
+
+double integral(const Mesh& mesh, const std::vector<Point3>& x, const std::vector<double>& values, int width,
+                int component) {
+  double sum = 0;
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    std::array<El::Gradients, El::NGP> dN;
+    std::array<double, El::NGP> dv;
+    El::Gradients centre;
+    El::gradients(coords(mesh, x, e), dN, dv, centre);
+    for (int p = 0; p < El::NGP; ++p) sum += dv[p] * values[(static_cast<size_t>(e) * El::NGP + p) * width + component];
+  }
+  return sum;
+}
+
+}  // namespace rollsim
