@@ -57,6 +57,7 @@ int run_command(const RunOptions& o) {
   }
   Results results = analyse(config, model, progress);
   if (!writer) return exit_code(results.status.status);  // the other ranks of a petsc run: rank 0 writes
+  for (const auto& w : results.warnings) std::fprintf(stderr, "rollsim: warning: %s\n", w.c_str());
   return write_results(project, config, model, results, dir, stamp, o, wall, progress);
 }
 

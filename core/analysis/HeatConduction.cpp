@@ -1,6 +1,7 @@
 #include "analysis/HeatConduction.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "analysis/AnalysisError.h"
 #include "base/Stopwatch.h"
@@ -47,7 +48,7 @@ HeatConduction::HeatConduction(const Model& model)
     T_[b] = Eigen::VectorXd::Constant(body.mesh.num_nodes(), body.material.temperature);
     if (!body.initial_temperature.empty())
       T_[b] = Eigen::Map<const Eigen::VectorXd>(body.initial_temperature.data(), body.mesh.num_nodes());
-    h.capacity = Eigen::VectorXd::Zero(body.mesh.num_nodes());
+    h.share = Eigen::VectorXd::Zero(body.mesh.num_nodes());
     with_dimension(model.dim, [&]<int D>() {
       using El = SolidElement<D>;
       std::array<typename El::Gradients, El::NGP> dN;
@@ -57,10 +58,11 @@ HeatConduction::HeatConduction(const Model& model)
         const auto x = element_coords<D>(body.mesh, e);
         El::gradients(x, dN, dv, centre);
         const auto share = El::shape_integrals(x);
-        for (int a = 0; a < El::NN; ++a) h.capacity[body.mesh.element(e)[a]] += body.material.heat_capacity * share[a];
+        for (int a = 0; a < El::NN; ++a) h.share[body.mesh.element(e)[a]] += share[a];
         h.volume.insert(h.volume.end(), dv.begin(), dv.end());
       }
     });
+    h.capacity = body.material.heat_capacity * h.share;
     const auto material = make_material(body.material);
     if (body.material.thermal() && material->temperature_rise_index() >= 0) {
       h.stride = material->state_size();
@@ -71,9 +73,41 @@ HeatConduction::HeatConduction(const Model& model)
   }
 }
 
+void HeatConduction::update_table(size_t b) {
+  const ThermalTable& table = model_.bodies[b].material.thermal_table;
+  if (table.empty()) return;
+  BodyHeat& h = bodies_[b];
+  const Eigen::VectorXd& T = T_[b];
+  h.lowest = std::min(h.lowest, T.minCoeff());
+  h.highest = std::max(h.highest, T.maxCoeff());
+  if (table.gives_heat_capacity())
+    for (Eigen::Index n = 0; n < T.size(); ++n) h.capacity[n] = table.heat_capacity_at(T[n]) * h.share[n];
+}
+
+std::vector<std::string> HeatConduction::warnings() const {
+  std::vector<std::string> out;
+  const auto celsius = [](double T) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%.4g °C", T);
+    return std::string(s);
+  };
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    const ThermalTable& table = model_.bodies[b].material.thermal_table;
+    const BodyHeat& h = bodies_[b];
+    if (table.empty() || h.lowest > h.highest || (table.covers(h.lowest) && table.covers(h.highest))) continue;
+    out.push_back("body '" + model_.bodies[b].name + "' (material '" + model_.bodies[b].material_name +
+                  "'): its temperatures reached " + celsius(h.lowest) + " to " + celsius(h.highest) +
+                  ", beyond its thermal_table's " + celsius(table.temperature.front()) + " to " +
+                  celsius(table.temperature.back()) + ": its properties there were held at the table's end values");
+  }
+  return out;
+}
+
 void HeatConduction::add_conduction(size_t b, const Eigen::VectorXd& u, double dt, Triplets& t) const {
   const Body& body = model_.bodies[b];
-  const double k = body.material.conductivity * dt;
+  const ThermalTable& table = body.material.thermal_table;
+  const bool varies = table.gives_conductivity();
+  const Eigen::VectorXd& Tn = T_[b];
   const int offset = bodies_[b].offset;
   with_dimension(model_.dim, [&]<int D>() {
     using El = SolidElement<D>;
@@ -83,9 +117,15 @@ void HeatConduction::add_conduction(size_t b, const Eigen::VectorXd& u, double d
     for (int e = 0; e < body.mesh.num_elements(); ++e) {
       if (!El::gradients(moved_coords<D>(body.mesh, e, u), dN, dv, centre))
         throw AnalysisError("the heat step: element " + std::to_string(e) + " of body '" + body.name + "' is inverted");
-      Eigen::Matrix<double, El::NN, El::NN> Ke = Eigen::Matrix<double, El::NN, El::NN>::Zero();
-      for (int p = 0; p < El::NGP; ++p) Ke.noalias() += (k * dv[p]) * dN[p].transpose() * dN[p];
       const int* conn = body.mesh.element(e);
+      double k = body.material.conductivity;
+      if (varies) {  // k(T) at the element's mean nodal temperature of the step's start
+        double mean = 0;
+        for (int a = 0; a < El::NN; ++a) mean += Tn[conn[a]];
+        k = table.conductivity_at(mean / El::NN);
+      }
+      Eigen::Matrix<double, El::NN, El::NN> Ke = Eigen::Matrix<double, El::NN, El::NN>::Zero();
+      for (int p = 0; p < El::NGP; ++p) Ke.noalias() += (k * dt * dv[p]) * dN[p].transpose() * dN[p];
       for (int a = 0; a < El::NN; ++a)
         for (int c = 0; c < El::NN; ++c) t.emplace_back(offset + conn[a], offset + conn[c], Ke(a, c));
     }
@@ -155,6 +195,8 @@ void HeatConduction::add_plastic_heat(size_t b, const std::vector<double>& state
     for (int e = 0; e < body.mesh.num_elements(); ++e)
       for (int p = 0; p < El::NGP; ++p) {
         const size_t point = static_cast<size_t>(e) * El::NGP + p;
+        // the rise is β ∫ τ_y dα / ρc with the material's constant ρc (J2Plasticity's heating factor), so times that
+        // same constant it is the plastic work's heat β ∫ τ_y dα, whatever ρc(T) a thermal_table gives conduction
         const double q =
             body.material.heat_capacity * (state[point * h.stride + h.rise] - h.written[point]) * h.volume[point];
         for (int a = 0; a < El::NN; ++a) rhs[h.offset + body.mesh.element(e)[a]] += N(p, a) * q;
@@ -191,6 +233,7 @@ void HeatConduction::step(const HeatStepInput& in, std::vector<std::vector<doubl
   for (size_t b = 0; b < bodies_.size(); ++b) {
     if (bodies_[b].offset < 0) continue;
     touching[b].assign(static_cast<size_t>(model_.bodies[b].mesh.num_nodes()), 0);
+    update_table(b);
     add_conduction(b, (*in.displacement)[b], in.dt, t);
     add_plastic_heat(b, states[b], rhs);
     const auto C = bodies_[b].capacity.array();
@@ -214,6 +257,7 @@ void HeatConduction::step(const HeatStepInput& in, std::vector<std::vector<doubl
     const Eigen::VectorXd next = T.segment(bodies_[b].offset, T_[b].size());
     T_[b] = next;
     write_points(b, states[b]);
+    update_table(b);  // the range the step ended in (the capacity is rebuilt again at the next step's start)
   }
   seconds_ += clock.seconds();
 }

@@ -11,9 +11,14 @@
 // step, β ∫ τ_y dα / ρc, times ρc and its volume, spread onto its element's nodes) and friction work (a slipping
 // point's friction force times its slip, shared between the bodies by the pair's friction_heat_to_slave). The new
 // nodal temperatures then set every point's temperature (Σ N_a T_a), which the flow stress of the next step reads.
+// A material's thermal_table gives k(T) and ρc(T), read at the step's start temperatures T_n (semi-implicit, no
+// Picard iteration): k at each element's mean nodal temperature, ρc at each node's (C rebuilt each step); a
+// temperature beyond the table holds its end value and is reported by warnings().
 // One CHOLMOD factorization per step; its symbolic analysis is kept while the pattern (the contact links) stays.
 #include <Eigen/Dense>
+#include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "base/SparseMatrix.h"
@@ -45,17 +50,24 @@ class HeatConduction {
   void step(const HeatStepInput& in, std::vector<std::vector<double>>& states);
   /// Nodal temperatures of body b [°C] (empty: it does not conduct).
   const Eigen::VectorXd& temperature(int b) const { return T_[static_cast<size_t>(b)]; }
+  /// One line per body whose nodal temperatures left its material's thermal_table (its properties held there).
+  std::vector<std::string> warnings() const;
   double seconds() const { return seconds_; }
   int factorizations() const { return factorizations_; }
 
  private:
   struct BodyHeat {
-    int offset = -1;              // its first row in the system (-1: it does not conduct)
-    Eigen::VectorXd capacity;     // lumped ρc ∫ N dV per node [energy / K]
-    std::vector<double> volume;   // per element and Gauss point: its reference volume
-    int stride = 0, rise = -1;    // the material's state size and where its temperature rise sits (-1: none)
+    int offset = -1;             // its first row in the system (-1: it does not conduct)
+    Eigen::VectorXd share;       // ∫ N dV per node, in the reference volume
+    Eigen::VectorXd capacity;    // lumped ρc ∫ N dV per node [energy / K] (a thermal_table's ρc: at T_n, each step)
+    std::vector<double> volume;  // per element and Gauss point: its reference volume
+    int stride = 0, rise = -1;   // the material's state size and where its temperature rise sits (-1: none)
     std::vector<double> written;  // per point: the rise this step wrote last (the next step's heat is the change)
+    // with a thermal_table: the lowest and highest nodal temperature of any step's start or end [°C]
+    double lowest = std::numeric_limits<double>::infinity(), highest = -std::numeric_limits<double>::infinity();
   };
+  /// With a thermal_table: the capacity at the step's start temperatures, and the range they reached.
+  void update_table(size_t b);
   void add_conduction(size_t b, const Eigen::VectorXd& u, double dt, std::vector<Eigen::Triplet<double>>& t) const;
   /// The contact links, the friction heat and which nodes touch (and so exchange no heat with the air).
   void add_contacts(const HeatStepInput& in, std::vector<Eigen::Triplet<double>>& t, Eigen::VectorXd& rhs,

@@ -720,7 +720,10 @@ Results NewtonRun::run() {
   res.timing.factorize_s = res.solver.factorize_s;
   res.timing.solve_s = res.solver.solve_s;
   res.timing.stiffness_s = assembly_s_;
-  if (heat_) res.timing.heat_s = heat_->seconds(), res.timing.heat_factorizations = heat_->factorizations();
+  if (heat_) {
+    res.timing.heat_s = heat_->seconds(), res.timing.heat_factorizations = heat_->factorizations();
+    for (std::string& w : heat_->warnings()) res.warnings.push_back(std::move(w));
+  }
   const BlockSystem& sys = layout_.system();
   for (size_t g = 0; g < sys.groups.size(); ++g)
     res.stiffness_evaluations[sys.groups[g].name] = layout_.assembler().tangent_evaluations()[g];

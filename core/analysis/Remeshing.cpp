@@ -130,6 +130,9 @@ void add_segment(Results& run, Results seg, const std::shared_ptr<const Model>& 
   a.cg_lambda_min = seg.solver.cg_lambda_min, a.cg_lambda_max = seg.solver.cg_lambda_max;
   for (const auto& [group, n] : seg.stiffness_evaluations) run.stiffness_evaluations[group] += n;
   run.active_set_iterations += seg.active_set_iterations;
+  for (std::string& w : seg.warnings)
+    if (std::find(run.warnings.begin(), run.warnings.end(), w) == run.warnings.end())
+      run.warnings.push_back(std::move(w));
   run.status = std::move(seg.status);
   run.bodies = std::move(seg.bodies);
   run.contacts = std::move(seg.contacts);

@@ -137,6 +137,7 @@ struct Results {
   std::optional<AutoChoice> auto_choice;  // solver.mode was `auto`: what it chose and why
   std::string update_policy;  // the Newton driver's update policy (`always`, `selective:0.01`); empty: linear
   std::optional<ProcessResults> process;  // a process's measures over the completed increments (process/)
+  std::vector<std::string> warnings;      // what the run met that the user should know (summary.json's `warnings`)
   // remeshing (analysis.remesh_quality): why a segment stopped (Newton driver), the remeshes of the whole run, and
   // the model of `bodies` when it is not the run's own (null: the run's)
   std::optional<RemeshDue> remesh_due;

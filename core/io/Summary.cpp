@@ -148,7 +148,9 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   if (r.status.reason != Reason::none) s["reason"] = to_string(r.status.reason);
   if (!r.status.message.empty()) s["message"] = r.status.message;
   if (!run.run.is_null()) s["run"] = run.run;
-  if (!model.warnings.empty()) s["warnings"] = model.warnings;
+  std::vector<std::string> warnings = model.warnings;  // the model's, then the run's
+  warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
+  if (!warnings.empty()) s["warnings"] = warnings;
   s["model"] = model_section(model, r);
   const json options = run.config.is_object() ? run.config.value("solver", json::object()) : json::object();
   s["solver"] = {

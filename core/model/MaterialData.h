@@ -4,6 +4,8 @@
 #include <map>
 #include <string>
 
+#include "model/ThermalTable.h"
+
 namespace rollsim {
 
 /// Element formulation of a body: full 2×2(×2) Gauss integration or selective B-bar (mean dilatation; with finite
@@ -31,12 +33,16 @@ struct MaterialData {
   double saturation_stress = 0.0;    // σ_∞ [stress]; ≤ σ_0: no saturation term
   double saturation_exponent = 0.0;  // δ [-]
   FlowStressData flow_stress;        // a law of strain, strain rate and temperature instead of the hardening above
-  double temperature = 20.0;    // the body's initial temperature [°C], uniform (what a flow stress law is taken at)
-  double heat_capacity = 0.0;   // volumetric ρc [stress / K]: plastic work heats it (0: never)
+  double temperature = 20.0;  // the body's initial temperature [°C], uniform (what a flow stress law is taken at)
+  // volumetric ρc [stress / K]: plastic work heats it (0: never). With a thermal_table's ρc(T), the table's value at
+  // `temperature`: conduction reads the table, and this stays the factor of plastic work's adiabatic rise
+  double heat_capacity = 0.0;
   double taylor_quinney = 0.9;  // β: the share of plastic work turned into heat [-]
   // thermal conductivity k [W/(m K) = N/(s K) with mm, N and s]: with a heat capacity, the body conducts heat
   // (nodal temperatures, analysis/HeatConduction); 0: each point keeps its own heat (adiabatic)
+  // (with a thermal_table's k(T): the table's value at `temperature`, and conduction reads the table)
   double conductivity = 0.0;
+  ThermalTable thermal_table;  // k(T) and ρc(T) of heat conduction (empty: the constants above)
 
   bool plastic() const { return yield_stress > 0.0 || !flow_stress.law.empty(); }
   /// Whether its temperature matters: a flow stress law reads it, or plastic work raises it.

@@ -48,8 +48,8 @@ void check_materials_conduct(const json& d, std::vector<Issue>& issues) {
   const json& materials = d.at("materials");
   std::string conducting;
   for (size_t i = 0; i < materials.size(); ++i) {
-    if (!materials[i].contains("conductivity")) continue;
-    if (!materials[i].contains("heat_capacity"))
+    if (!gives(materials[i], "conductivity")) continue;
+    if (!gives(materials[i], "heat_capacity"))
       issues.push_back({at("materials", i) + ".heat_capacity",
                         "is needed with conductivity: heat conducts into a volumetric heat capacity ρc (steel about "
                         "3.6 cold, 4.9 hot, MPa/K)"});

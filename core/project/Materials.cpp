@@ -1,6 +1,7 @@
 #include "project/Materials.h"
 
 #include "material/FlowStress.h"
+#include "material/ThermalTableSchema.h"
 
 namespace rollsim {
 
@@ -25,7 +26,7 @@ void check_hardening(const json& m, const std::string& path, std::vector<Issue>&
                                                         "gives the hardening (remove them)"
                                                       : "hardening is given but no yield stress: the material is "
                                                         "elastic"});
-  if (m.contains("heat_capacity") && !has_yield && !has_law && !m.contains("conductivity"))
+  if (gives(m, "heat_capacity") && !has_yield && !has_law && !gives(m, "conductivity"))
     issues.push_back({path + ".heat_capacity",
                       "has no effect on an elastic material that does not conduct (only plastic work would heat "
                       "it): give it a conductivity, a yield stress or a flow_stress law, or remove it"});
@@ -36,7 +37,26 @@ void check_hardening(const json& m, const std::string& path, std::vector<Issue>&
                           "): a saturation below the initial yield stress would soften the material"});
 }
 
+/// A material's thermal_table: its own checks, a property given twice, and a table nothing would read.
+void check_table_use(const json& m, const std::string& path, std::vector<Issue>& issues) {
+  if (!m.contains("thermal_table")) return;
+  const json& table = m.at("thermal_table");
+  check_thermal_table(table, path + ".thermal_table", issues);
+  for (const char* name : {"conductivity", "heat_capacity"})
+    if (m.contains(name) && table.contains(name))
+      issues.push_back({path + "." + name, std::string("give either ") + name + " or thermal_table." + name +
+                                               " (the table's value at the material's temperature stands for it)"});
+  if (!gives(m, "conductivity"))
+    issues.push_back({path + ".thermal_table",
+                      "is read by heat conduction only, and the material does not conduct: give it a conductivity "
+                      "(or a thermal_table.conductivity), or remove the table"});
+}
 }  // namespace
+
+bool gives(const json& material, const std::string& property) {
+  return material.contains(property) ||
+         (material.contains("thermal_table") && material.at("thermal_table").contains(property));
+}
 
 MaterialData material_data(const json& mat) {
   MaterialData m;
@@ -51,6 +71,11 @@ MaterialData material_data(const json& mat) {
   m.taylor_quinney = mat.value("taylor_quinney", m.taylor_quinney);
   m.conductivity = mat.value("conductivity", 0.0);
   if (mat.contains("flow_stress")) m.flow_stress = flow_stress_data(mat.at("flow_stress"));
+  if (mat.contains("thermal_table")) {
+    m.thermal_table = thermal_table_data(mat.at("thermal_table"));
+    if (m.thermal_table.gives_conductivity()) m.conductivity = m.thermal_table.conductivity_at(m.temperature);
+    if (m.thermal_table.gives_heat_capacity()) m.heat_capacity = m.thermal_table.heat_capacity_at(m.temperature);
+  }
   return m;
 }
 
@@ -60,6 +85,7 @@ void check_materials(const json& d, std::vector<Issue>& issues) {
   for (size_t i = 0; i < materials.size(); ++i) {
     std::vector<Issue> found;
     check_hardening(materials[i], at(i), found);
+    check_table_use(materials[i], at(i), found);
     if (found.empty() && materials[i].contains("flow_stress"))
       for (const Issue& issue : check_flow_stress(material_data(materials[i]), duration))
         found.push_back({at(i) + "." + issue.path, issue.message});

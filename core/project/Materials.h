@@ -10,7 +10,10 @@
 
 namespace rollsim {
 
-/// The MaterialData of one validated materials[] entry.
+/// Whether a materials[] entry gives `property` (conductivity, heat_capacity): as a constant or in its thermal_table.
+bool gives(const json& material, const std::string& property);
+/// The MaterialData of one validated materials[] entry (a property its thermal_table gives: its constant is the
+/// table's value at the material's temperature).
 MaterialData material_data(const json& material);
 /// Problems of the materials of a validated, process-expanded project (paths materials[i]…).
 void check_materials(const json& expanded_project, std::vector<Issue>& issues);

@@ -237,7 +237,7 @@ std::string nonlinear_because(const json& d) {
   for (const json& b : d.at("bodies"))
     if (b.value("kinematics", "small") == "finite") return "body '" + b.value("name", "") + "' has finite kinematics";
   for (const json& m : d.at("materials"))
-    if (m.contains("conductivity"))
+    if (gives(m, "conductivity"))
       return "material '" + m.value("name", "") + "' conducts heat (a heat step follows each Newton step)";
   for (const json& c : d.value("contacts", json::array()))
     if (c.value("type", "") == "sticking" || c.value("type", "") == "coulomb")

@@ -6,6 +6,7 @@
 #include "base/SchemaFields.h"
 #include "io/OutputFields.h"
 #include "material/FlowStress.h"
+#include "material/ThermalTableSchema.h"
 #include "process/ProcessRegistry.h"
 #include "project/HeatProject.h"
 #include "project/RunProject.h"
@@ -279,13 +280,24 @@ const ObjectSchema kMaterial{
      positive("heat_capacity", "stress/K",
               "volumetric heat capacity ρc (MPa/K = J/(cm³·K) with mm and MPa; hot steel about 4.9): with it, plastic "
               "work heats each point, ΔT = β ∫ τ_y dα / ρc — adiabatically, or conducted away with a conductivity — "
-              "and a flow_stress law softens with it"),
+              "and a flow_stress law softens with it. With a thermal_table.heat_capacity instead, conduction takes "
+              "ρc(T) from the table and the table's value at `temperature` is this constant: the factor of plastic "
+              "work's adiabatic rise within a mechanical step, which the heat step turns back into the same energy "
+              "β ∫ τ_y dα"),
      def(bounded(num("taylor_quinney", "-", "β: the share of plastic work turned into heat (with heat_capacity)"), 0,
                  1),
          0.9),
      positive("conductivity", "W/(m·K)",
               "thermal conductivity k (= N/(s·K) with mm, N and s; steel about 30 hot, 45 cold): with "
-              "heat_capacity, the bodies made of it conduct heat (the `heat` section; analysis.duration needed)")},
+              "heat_capacity, the bodies made of it conduct heat (the `heat` section; analysis.duration needed). "
+              "With a thermal_table.conductivity instead, k(T) from the table"),
+     [] {
+       Field f = object("thermal_table", thermal_table_schema(),
+                        "conductivity and heat capacity against temperature, for heat conduction (a material that "
+                        "conducts): each property the table gives replaces its constant");
+       f.default_value = json();
+       return f;
+     }()},
     "",
     {}};
 

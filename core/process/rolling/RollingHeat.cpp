@@ -1,6 +1,7 @@
 #include "process/rolling/RollingHeat.h"
 
 #include "base/SchemaFields.h"
+#include "material/ThermalTableSchema.h"
 
 namespace rollsim {
 
@@ -24,7 +25,9 @@ const ObjectSchema& rolling_heat_schema() {
       "(β = 0.9) and friction work heat them. The mid-plane (and the width symmetry plane) is adiabatic. The time "
       "is the roll's: process.roll_speed is needed. A layer of tens of µm to a few mm under the contact carries "
       "the chill: a coarse slab mesh spreads it over its top elements (docs/VALIDATION.md).",
-      {positive_default("slab_conductivity", "W/(m·K)", 28, "the slab's k (carbon steel at 1100 °C about 28)"),
+      {positive_default(
+           "slab_conductivity", "W/(m·K)", 28,
+           "the slab's k (carbon steel at 1100 °C about 28); a slab_thermal_table.conductivity replaces it"),
        positive_default("roll_conductivity", "W/(m·K)", 40, "the roll's k (forged steel about 40)"),
        positive_default("roll_heat_capacity", "MPa/K", 3.6, "the roll's ρc (steel near room temperature about 3.6)"),
        def(bounded(num("roll_temperature", "°C", "the roll's initial temperature, uniform"), -273.15, 2000), 60.0),
@@ -37,8 +40,14 @@ const ObjectSchema& rolling_heat_schema() {
                             "h of the roll's surface outside the arc (water sprays 5–20 on part of the "
                             "circumference, here spread over all of it; 0: an insulated roll)"),
        def(bounded(num("ambient_temperature", "°C", "the air's (and the cooling's) temperature"), -273.15, 2000), 20.0),
-       def(bounded(num("friction_heat_to_slab", "-", "the share of the friction work that heats the slab"), 0, 1),
-           0.5)},
+       def(bounded(num("friction_heat_to_slab", "-", "the share of the friction work that heats the slab"), 0, 1), 0.5),
+       [] {
+         Field f = object("slab_thermal_table", thermal_table_schema(),
+                          "the slab's k(T) and ρc(T) (its material's thermal_table): its conductivity replaces "
+                          "slab_conductivity, its heat_capacity process.slab_heat_capacity (give one or the other)");
+         f.default_value = json();
+         return f;
+       }()},
       "",
       {}};
   return s;
@@ -50,6 +59,12 @@ void check_rolling_heat(const json& p, std::vector<Issue>& issues) {
     issues.push_back({"process.roll_speed",
                       "is needed with process.heat_transfer: heat flows over the pass's time, "
                       "which the roll's speed sets"});
+  const json& h = p.at("heat_transfer");
+  if (!h.contains("slab_thermal_table")) return;
+  check_thermal_table(h.at("slab_thermal_table"), "process.heat_transfer.slab_thermal_table", issues);
+  if (h.at("slab_thermal_table").contains("heat_capacity") && p.contains("slab_heat_capacity"))
+    issues.push_back({"process.slab_heat_capacity",
+                      "give either slab_heat_capacity or heat_transfer.slab_thermal_table.heat_capacity"});
 }
 
 void expand_rolling_heat(const json& p, int dim, json& out) {
@@ -59,6 +74,11 @@ void expand_rolling_heat(const json& p, int dim, json& out) {
     if (m.at("name") == "slab") {
       m["conductivity"] = h.at("slab_conductivity");
       m["heat_capacity"] = p.value("slab_heat_capacity", kHotSteelHeatCapacity);
+      if (h.contains("slab_thermal_table")) {  // the properties it gives replace the constants
+        m["thermal_table"] = h.at("slab_thermal_table");
+        for (const char* name : {"conductivity", "heat_capacity"})
+          if (m["thermal_table"].contains(name)) m.erase(name);
+      }
     } else if (m.at("name") == "roll") {
       m["conductivity"] = h.at("roll_conductivity");
       m["heat_capacity"] = h.at("roll_heat_capacity");

@@ -362,6 +362,28 @@ TEST(RollingProcess, HeatTransferMakesTheSlabAndTheRollConductAndTheAirCoolTheSl
       << "slab_temperature is the initial temperature of the heat";
 }
 
+TEST(RollingProcess, HeatTransfersSlabThermalTableBecomesTheSlabMaterialsTable) {
+  const json table = {{"temperature", {800.0, 1200.0}}, {"conductivity", {26.0, 30.0}}, {"heat_capacity", {5.2, 4.8}}};
+  json heat = {{"type", "rolling"},
+               {"slab_flow_stress", {{"law", "shida"}, {"carbon", 0.2}}},
+               {"roll_speed", 30.0},
+               {"heat_transfer", {{"slab_thermal_table", table}}}};
+  const MaterialData slab = rolling(2, heat).bodies[0].material;
+  EXPECT_EQ(slab.thermal_table.conductivity, (std::vector<double>{26, 30}));
+  EXPECT_DOUBLE_EQ(slab.conductivity, 29) << "k at slab_temperature 1100 °C, not slab_conductivity's 28";
+  EXPECT_DOUBLE_EQ(slab.heat_capacity, 4.9) << "ρc at 1100 °C: plastic work's adiabatic factor";
+  EXPECT_TRUE(slab.conducts());
+  heat["heat_transfer"]["slab_thermal_table"]["temperature"] = {1200.0, 800.0};
+  const std::string backwards = refusal(heat);
+  EXPECT_NE(backwards.find("process.heat_transfer.slab_thermal_table.temperature: must increase strictly"),
+            std::string::npos)
+      << backwards;
+  heat["heat_transfer"]["slab_thermal_table"] = table;
+  heat["slab_heat_capacity"] = 4.9;
+  const std::string twice = refusal(heat);
+  EXPECT_NE(twice.find("process.slab_heat_capacity: give either"), std::string::npos) << twice;
+}
+
 TEST(RollingProcess, GeometryThatCannotBeBuiltIsRefusedAtTheProcesssPath) {
   const std::string wide = refusal({{"type", "rolling"}, {"slab_width", 600.0}, {"barrel_width", 400.0}}, 3);
   EXPECT_NE(wide.find("process.slab_width: 600 mm is wider than the roll barrel (process.barrel_width: 400 mm)"),
