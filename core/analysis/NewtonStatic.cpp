@@ -162,9 +162,15 @@ class NewtonRun {
   bool extrapolate(double span);
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
-  /// With NewtonOptions::remesh_quality: the first element of a finite-strain plastic body whose smallest corner
-  /// Jacobian ratio is below it at load factor lf (the run stops there for a remesh); none otherwise.
+  /// The element of a finite-strain body (`plastic`: of a plastic one) with the smallest corner Jacobian ratio at
+  /// load factor lf.
+  RemeshDue worst_corner(double lf, bool plastic) const;
+  /// With NewtonOptions::remesh_quality: the worst element of a finite-strain plastic body when its corner Jacobian
+  /// ratio is below it at load factor lf (the run stops there for a remesh); none otherwise.
   std::optional<RemeshDue> distorted(double lf) const;
+  /// After a converged step: the first element whose corner has folded (ratio ≤ 0 while every Gauss point's det J
+  /// stayed positive, which is all a step's assembly checks) is remembered for the run's warning.
+  void watch_folds(double lf, int increment);
   const Model& model_;
   const IncrementMeasure* measure_;  // a process's measures of each increment, told to the observer (may be null)
   SolverStrategy& solver_;
@@ -198,6 +204,7 @@ class NewtonRun {
   double last_scale_ = 0, attempt_scale_ = 0;  // the residual scale of the last converged step, of the last attempt
   std::vector<NewtonIteration> log_;
   std::unique_ptr<HeatConduction> heat_;  // the bodies that conduct heat (null: none does)
+  std::string fold_;  // the first folded corner of a converged step, said as the run's warning ("": none)
 };
 
 void NewtonRun::set_constraints(double lf, bool step_begins) {
@@ -348,19 +355,35 @@ void NewtonRun::recover_into(Results& into, double lf) const {
   add_contact_reactions(layout_.body_dofs(), rows_, contact_.kept, lc, friction_loads(model_, pairs_), into);
 }
 
-std::optional<RemeshDue> NewtonRun::distorted(double lf) const {
-  if (opt_.remesh_quality <= 0) return std::nullopt;
+RemeshDue NewtonRun::worst_corner(double lf, bool plastic) const {
   const std::vector<Eigen::VectorXd> u = body_displacements(lf);
   RemeshDue worst;
   for (size_t b = 0; b < model_.bodies.size(); ++b) {
     const Body& body = model_.bodies[b];
-    if (body.kinematics != Kinematics::Finite || !body.material.plastic()) continue;
+    if (body.kinematics != Kinematics::Finite || (plastic && !body.material.plastic())) continue;
     for (int e = 0; e < body.mesh.num_elements(); ++e)
       if (const double q = corner_jacobian_ratio(body.mesh, u[b].data(), e); q < worst.quality)
         worst = {static_cast<int>(b), e, q};
   }
+  return worst;
+}
+
+std::optional<RemeshDue> NewtonRun::distorted(double lf) const {
+  if (opt_.remesh_quality <= 0) return std::nullopt;
+  const RemeshDue worst = worst_corner(lf, true);
   if (worst.quality >= opt_.remesh_quality) return std::nullopt;
   return worst;
+}
+
+void NewtonRun::watch_folds(double lf, int increment) {
+  if (!fold_.empty()) return;
+  const RemeshDue worst = worst_corner(lf, false);
+  if (worst.quality > 0) return;
+  fold_ = "body '" + model_.bodies[static_cast<size_t>(worst.body)].name + "': element " +
+          std::to_string(worst.element) + " has a folded corner from increment " + std::to_string(increment) +
+          " (load factor " + fmt(lf) + ") on (its corner Jacobian ratio " + fmt(worst.quality) +
+          ", every Gauss point's still positive; the `jacobian_ratio` cell field): the fields around it are not to be "
+          "trusted — a finer mesh there, smaller steps, or analysis.remesh_quality";
 }
 
 double norm(const std::vector<double>& parts) {
@@ -698,6 +721,7 @@ Results NewtonRun::run() {
       inc.contacts = std::move(fields.contacts);
     }
     res.increments.push_back(std::move(inc));
+    watch_folds(lf, increment);
     obs_.on_increment_end(increment, increment + static_cast<int>(std::ceil((1.0 - lf) / step - 1e-9)));
     if (measure_ && lf < 1.0) obs_.on_measured(increment, measure_->measure(res.increments.back()));
     obs_.on_progress(lf);
@@ -724,6 +748,7 @@ Results NewtonRun::run() {
     res.timing.heat_s = heat_->seconds(), res.timing.heat_factorizations = heat_->factorizations();
     for (std::string& w : heat_->warnings()) res.warnings.push_back(std::move(w));
   }
+  if (!fold_.empty()) res.warnings.push_back(fold_);
   const BlockSystem& sys = layout_.system();
   for (size_t g = 0; g < sys.groups.size(); ++g)
     res.stiffness_evaluations[sys.groups[g].name] = layout_.assembler().tangent_evaluations()[g];

@@ -384,6 +384,27 @@ TEST(NewtonStatic, ExtrapolatedPredictorUpsetsInFewerIterationsToTheSameForce) {
   EXPECT_NEAR(extrapolated_force, tangent_force, 1e-7 * std::abs(tangent_force));
 }
 
+// Upsetting between sticking faces on 20 × 20: the free side next to a pinned corner turns past the platen's plane, a
+// corner folds while every Gauss point's det J stays positive — the steps converge on, and the run says so.
+TEST(NewtonStatic, AConvergedStepWithAFoldedCornerIsAWarningOfTheRun) {
+  json j = compression(2, 4.0, 40);
+  j["bodies"][0]["mesh"] = {{"type", "block"}, {"nx", 20}, {"ny", 20}, {"lx", 10.0}, {"ly", 10.0}};
+  j["bodies"][0]["kinematics"] = "finite";
+  j["boundary_conditions"] =
+      json::array({{{"type", "displacement"}, {"body", "block"}, {"set", "ymin"}, {"ux", 0.0}, {"uy", 0.0}},
+                   {{"type", "displacement"}, {"body", "block"}, {"set", "ymax"}, {"ux", 0.0}, {"uy", -4.0}}});
+  const Results r = run(j);
+  ASSERT_FALSE(r.warnings.empty()) << to_string(r.status.status);
+  const std::string& w = r.warnings.back();
+  EXPECT_NE(w.find("body 'block': element "), std::string::npos) << w;
+  EXPECT_NE(w.find(" has a folded corner from increment "), std::string::npos) << w;
+  EXPECT_NE(w.find("every Gauss point's still positive"), std::string::npos) << w;
+  // a homogeneous compression folds nothing
+  json homogeneous = compression(2, 2.0, 4);
+  homogeneous["bodies"][0]["kinematics"] = "finite";
+  EXPECT_TRUE(run(homogeneous).warnings.empty());
+}
+
 // The paper's pass with the interface solved to 1e-4 (explicitly: unset, it follows Newton's tolerance): the residual
 // ratio falls below 1e-8, but the contact rows stay unmet by the interface's error. The message names that check,
 // its value and limit, and the tolerance to tighten — not only "no convergence".
