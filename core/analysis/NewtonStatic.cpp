@@ -261,8 +261,13 @@ std::string NewtonRun::assemble(const std::vector<size_t>& which, const std::vec
     add_friction(which);
     return "";
   }
-  return "element " + std::to_string(bad.element) + " of group '" + layout_.system().groups[bad.group].name +
-         "' is inverted (det J ≤ 0)";
+  // named in the body's numbers (the `jacobian_ratio` field's cells), and its FETI subdomain where it has one
+  const GroupSource& source = layout_.assembler().source(static_cast<size_t>(bad.group));
+  const int element = source.body_elements.empty() ? bad.element : source.body_elements[bad.element];
+  const std::string& body = model_.bodies[static_cast<size_t>(source.model_body)].name;
+  const std::string& group = layout_.system().groups[bad.group].name;
+  return "element " + std::to_string(element) + " of body '" + body + "'" +
+         (group == body ? "" : " (in subdomain '" + group + "')") + " is inverted (det J ≤ 0)";
 }
 
 void NewtonRun::add_friction(const std::vector<size_t>& which) {
