@@ -51,6 +51,8 @@ json results_section(const Model& m, const Results& r) {
                       {"node", p.node},
                       {"position", vec(mesh.nodes[p.node].data(), m.dim)},
                       {"displacement", vec(r.bodies[p.body].displacement.data() + p.node * m.dim, m.dim)}};
+    if (const Eigen::VectorXd& T = r.bodies[p.body].nodal_temperature; T.size() > p.node)
+      probes[p.name]["temperature"] = T[p.node];
   }
   double umax = 0;
   for (const BodyResults& b : r.bodies) umax = std::max(umax, b.displacement.cwiseAbs().maxCoeff());
@@ -89,6 +91,11 @@ void add_increment_fields(const Model& m, const IncrementResults& inc, json& ent
   if (!all_finite(probes) || !all_finite(reactions)) return;  // a failed solve's: nothing to draw, JSON has no NaN
   entry["probes"] = probes;
   entry["reactions"] = reactions;
+  json temperatures = json::object();  // the probes on bodies that conduct heat
+  for (const Probe& p : m.probes)
+    if (const Eigen::VectorXd& T = inc.bodies[p.body].nodal_temperature; T.size() > p.node)
+      temperatures[p.name] = T[p.node];
+  if (!temperatures.empty() && all_finite(temperatures)) entry["probe_temperatures"] = temperatures;
 }
 
 // One entry per completed load increment: its load factor, solves, CG iterations, contact resultants, and the

@@ -1,7 +1,8 @@
 // Tests of summary.json's factorization rate: factor_gflops = all factorizations' flops (factor_flops_total, beside
 // it) over their seconds, and its
 // fraction of the DGEMM peak when the run measured one; nothing of the kind when nothing was factored. Every
-// increment lists its probes' displacements and reactions (a load–displacement curve).
+// increment lists its probes' displacements and reactions (a load–displacement curve), and a probe on a body that
+// conducts heat its temperature.
 #include <gtest/gtest.h>
 
 #include "io/Summary.h"
@@ -70,4 +71,41 @@ TEST(Summary, ListsEveryIncrementsProbesAndReactions) {
 }
 
 }  // namespace
+// A probe on a body that conducts heat reports its node's temperature, at the end and at every increment.
+TEST(Summary, AProbeOnAConductingBodyReportsItsTemperature) {
+  const json j = {
+      {"dimension", 2},
+      {"materials",
+       {{{"name", "hot"},
+         {"E", 2e5},
+         {"nu", 0.3},
+         {"conductivity", 30.0},
+         {"heat_capacity", 4.5},
+         {"temperature", 1000.0}}}},
+      {"bodies",
+       {{{"name", "b"},
+         {"material", "hot"},
+         {"mesh", {{"type", "block"}, {"nx", 2}, {"ny", 2}, {"lx", 2.0}, {"ly", 2.0}}}}}},
+      {"boundary_conditions",
+       {{{"type", "displacement"}, {"body", "b"}, {"set", "xmin"}, {"ux", 0.0}},
+        {{"type", "displacement"}, {"body", "b"}, {"set", "ymin"}, {"uy", 0.0}}}},
+      {"heat", {{"ambient_temperature", 20.0}, {"air", {{{"body", "b"}, {"surface", "xmax"}, {"convection", 0.5}}}}}},
+      {"analysis", {{"increments", 3}, {"duration", 10.0}}},
+      {"probes", {{{"name", "corner"}, {"at", {2.0, 2.0}}}}}};
+  const Project p = parse_project(j.dump(), "probe.json");
+  const Model m = build_model(p);
+  const auto s = make_summary(m, run_project(p, m), RunInfo{"probe", "direct"});
+  const double end = s["results"]["probes"]["corner"]["temperature"].get<double>();
+  EXPECT_LT(end, 1000.0);  // cooled by the air on its face
+  EXPECT_GT(end, 20.0);
+  ASSERT_EQ(s["increments"].size(), 3u);
+  double before = 1000;
+  for (const auto& inc : s["increments"]) {
+    const double T = inc["probe_temperatures"]["corner"].get<double>();
+    EXPECT_LT(T, before);
+    before = T;
+  }
+  EXPECT_DOUBLE_EQ(before, end);
+}
+
 }  // namespace rollsim::test_summary
