@@ -21,8 +21,9 @@ enum class FirstTangent { Converged, Fresh };
 /// Under a policy reading residuals: a constant tangent (elastic, small strain) kept, or judged like any group.
 enum class ConstantTangents { Keep, Refactor };
 /// Where a step's first iteration starts: at the converged state with the prescribed increment carried by the tangent
-/// (tangent), or at the converged state plus the last converged step's displacement scaled to this step (extrapolate).
-enum class Predictor { Tangent, Extrapolate };
+/// (tangent), at the converged state plus the last converged step's displacement scaled to this step (extrapolate), or
+/// on the quadratic through the last three converged states (quadratic).
+enum class Predictor { Tangent, Extrapolate, Quadratic };
 /// The interface Krylov solve's relative tolerance per Newton iteration (mixed, feti, petsc): solver.cg_tolerance at
 /// every iteration (fixed), or following the Newton residual (Eisenstat–Walker; analysis/ForcingSequence).
 enum class Forcing { Fixed, EisenstatWalker };
@@ -54,7 +55,7 @@ inline const std::vector<std::string>& words<FirstTangent>() {
 }
 template <>
 inline const std::vector<std::string>& words<Predictor>() {
-  static const std::vector<std::string> w{"tangent", "extrapolate"};
+  static const std::vector<std::string> w{"tangent", "extrapolate", "quadratic"};
   return w;
 }
 template <>
@@ -131,7 +132,9 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
                "increment carried into the body by the tangent assembled there (elastic where a zero strain increment "
                "returns elastically); extrapolate: the converged state plus the last converged step's displacement "
                "scaled to this step, the prescribed dofs at their new values (a steadily flowing body starts near "
-               "its answer; docs/BENCHMARKS-NONLINEAR.md \"Predictors\")"),
+               "its answer); quadratic: on the quadratic through the last three converged states (a body whose flow "
+               "changes smoothly: plastic upsetting 59 Newton iterations against extrapolate's 65; a rolling pass, "
+               "whose contact changes in jumps, takes more — docs/BENCHMARKS-NONLINEAR.md \"Predictors\")"),
            &N::predictor),
       bind(str("forcing",
                "Newton under mixed, feti and petsc: the interface Krylov solve's relative tolerance at each iteration "

@@ -201,6 +201,8 @@ class NewtonRun {
   std::tuple<std::vector<Eigen::VectorXd>, std::vector<PairState>, Eigen::VectorXd, bool> saved_;
   std::vector<Eigen::VectorXd> last_step_;  // the last converged step's displacement and its load-factor span
   double last_span_ = 0;
+  std::vector<Eigen::VectorXd> step_before_;  // and the one before it (0 span: none)
+  double span_before_ = 0;
   double last_scale_ = 0, attempt_scale_ = 0;  // the residual scale of the last converged step, of the last attempt
   std::vector<NewtonIteration> log_;
   std::unique_ptr<HeatConduction> heat_;  // the bodies that conduct heat (null: none does)
@@ -642,8 +644,15 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
 }
 
 bool NewtonRun::extrapolate(double span) {
-  if (opt_.predictor != Predictor::Extrapolate || last_span_ <= 0) return false;
-  for (size_t g = 0; g < u_.size(); ++g) u_[g] += (span / last_span_) * last_step_[g];
+  if (opt_.predictor == Predictor::Tangent || last_span_ <= 0) return false;
+  if (opt_.predictor == Predictor::Extrapolate || span_before_ <= 0) {
+    for (size_t g = 0; g < u_.size(); ++g) u_[g] += (span / last_span_) * last_step_[g];
+    return true;
+  }
+  // the quadratic through the last three converged states (Lagrange, at load factors −s1 − s0, −s1, 0 from here)
+  const double s = span, s1 = last_span_, s0 = span_before_;
+  const double l1 = -s * (s + s1 + s0) / (s1 * s0), l2 = s * (s + s1) / ((s1 + s0) * s0);
+  for (size_t g = 0; g < u_.size(); ++g) u_[g] += -(l1 + l2) * last_step_[g] - l2 * step_before_[g];
   return true;
 }
 
@@ -705,6 +714,7 @@ Results NewtonRun::run() {
     for (const PairState& s : pairs_) slid_before.push_back(s.slid);
     accumulate_slip(model_, body_displacements(target), step_start_, pairs_);
     if (heat_) heat_step(target - lf, target, slid_before);
+    step_before_ = last_step_, span_before_ = last_span_;
     last_step_ = u_;
     for (size_t g = 0; g < u_.size(); ++g) last_step_[g] -= std::get<0>(saved_)[g];
     last_span_ = target - lf;
