@@ -7,7 +7,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include "analysis/AnalysisError.h"
 #include "fem/StateTransfer.h"
 #include "material/Material.h"
 #include "mesh/ElementQuality.h"
@@ -82,7 +81,7 @@ std::vector<int> contact_nodes(const Model& model, int b) {
   return nodes;
 }
 
-/// The smallest and largest values of a point-state component and its integral over the mesh at `x`.
+/// The largest value of a point-state component and its integral over the mesh at `x`.
 struct CheckField {
   double integral = 0, max = 0;
 };
@@ -101,21 +100,14 @@ double worst_shape(const Mesh& m, const std::vector<Point3>& x) {
   return worst;
 }
 
-/// The segment's results added to the run's: its increments on the run's load factor (from `base`), each with the
-/// model it was computed on (null: the run's own), its iterations numbered on, its times and counts added.
-void add_segment(Results& run, Results seg, const std::shared_ptr<const Model>& model, double base) {
-  const int before = static_cast<int>(run.increments.size());
-  auto global = [base](double lf) { return base + (1 - base) * lf; };
-  for (IncrementResults& inc : seg.increments) {
-    inc.load_factor = global(inc.load_factor);
-    inc.model = model;
-    run.increments.push_back(std::move(inc));
-  }
-  for (NewtonIteration& it : seg.newton) {
-    it.increment += before;
-    it.load_factor = global(it.load_factor);
-    run.newton.push_back(std::move(it));
-  }
+/// How a later segment's words name its increments and load factors: from the remesh it started at.
+std::string after_remesh(int remeshes, double base) {
+  return "after remesh " + std::to_string(remeshes) + " (load factor " + fmt(base) +
+         "; increments and load factors below count from it): ";
+}
+
+/// A segment's times and solver counts added to the run's.
+void add_counts(Results& run, const Results& seg) {
   Timing& t = run.timing;
   const Timing& s = seg.timing;
   t.total_s += s.total_s, t.stiffness_s += s.stiffness_s, t.analyze_s += s.analyze_s, t.factorize_s += s.factorize_s;
@@ -130,10 +122,31 @@ void add_segment(Results& run, Results seg, const std::shared_ptr<const Model>& 
   a.cg_lambda_min = seg.solver.cg_lambda_min, a.cg_lambda_max = seg.solver.cg_lambda_max;
   for (const auto& [group, n] : seg.stiffness_evaluations) run.stiffness_evaluations[group] += n;
   run.active_set_iterations += seg.active_set_iterations;
-  for (std::string& w : seg.warnings)
-    if (std::find(run.warnings.begin(), run.warnings.end(), w) == run.warnings.end())
-      run.warnings.push_back(std::move(w));
+}
+
+/// The segment's results added to the run's (segment `remeshes`, from the run's load factor `base` on): its
+/// increments on the run's load factor, each with the model it was computed on (null: the run's own), its iterations
+/// numbered on, its counts added, its warnings and status said from its remesh, its fields the run's last.
+void add_segment(Results& run, Results seg, const std::shared_ptr<const Model>& model, int remeshes, double base) {
+  const int before = static_cast<int>(run.increments.size());
+  auto global = [base](double lf) { return base + (1 - base) * lf; };
+  for (IncrementResults& inc : seg.increments) {
+    inc.load_factor = global(inc.load_factor);
+    inc.model = model;
+    run.increments.push_back(std::move(inc));
+  }
+  for (NewtonIteration& it : seg.newton) {
+    it.increment += before;
+    it.load_factor = global(it.load_factor);
+    run.newton.push_back(std::move(it));
+  }
+  add_counts(run, seg);
+  const std::string from = remeshes > 0 ? after_remesh(remeshes, base) : "";
+  for (const std::string& w : seg.warnings)
+    if (std::find(run.warnings.begin(), run.warnings.end(), from + w) == run.warnings.end())
+      run.warnings.push_back(from + w);
   run.status = std::move(seg.status);
+  if (!run.status.ok()) run.status.message = from + run.status.message;
   run.bodies = std::move(seg.bodies);
   run.contacts = std::move(seg.contacts);
   run.model = model;
@@ -201,19 +214,11 @@ Results run_with_remeshing(const Model& model, const NewtonOptions& options, con
     opt.remesh_quality = remeshes < options.max_remeshes ? options.remesh_quality : 0.0;
     SegmentObserver segment(told, static_cast<int>(out.increments.size()), base);
     Results r = run(m, opt, &segment);
-    std::optional<Model> next;
     RemeshRecord record;
     const double lf = r.increments.empty() ? 0.0 : r.increments.back().load_factor;
-    if (r.remesh_due) try {
-        next = remeshed_model(m, model, r, lf, record);
-      } catch (const AnalysisError& e) {
-        r.status = {Status::diverged, Reason::none,
-                    "the remesh at load factor " + fmt(base + (1 - base) * lf) + " failed: " + e.what()};
-      }
-    if (!r.status.ok() && remeshes > 0)
-      r.status.message = "after remesh " + std::to_string(remeshes) + " (load factor " + fmt(base) +
-                         "; increments and load factors below count from it): " + r.status.message;
-    add_segment(out, std::move(r), current, base);
+    std::optional<Model> next;
+    if (r.remesh_due) next = remeshed_model(m, model, r, lf, record);
+    add_segment(out, std::move(r), current, remeshes, base);
     if (!next) break;
     record.increment = static_cast<int>(out.increments.size());
     record.load_factor = base + (1 - base) * lf;
