@@ -87,7 +87,7 @@ struct NewtonOptions {
   // reach, against the mesh its segment started on, before the run moves that body's nodes back to their spread (0:
   // never), and how often it may
   double remesh_quality = 0;
-  int max_remeshes = 20;
+  int max_remeshes = 100;
   // how the user makes the steps smaller, for a diverged run's advice (a process's own step: "a smaller
   // process.travel_increment (now 1 mm)"); empty: more analysis.increments
   std::string smaller_steps;

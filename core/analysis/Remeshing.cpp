@@ -81,6 +81,18 @@ std::vector<int> contact_nodes(const Model& model, int b) {
   return nodes;
 }
 
+/// The node sets of body b whose every component is prescribed (a face stuck to a tool: a sticking platen's): free
+/// boundary nodes that cross their line fold onto them (mesh/EvenNodes).
+std::vector<std::vector<int>> stuck_faces(const Model& model, int b) {
+  std::vector<std::vector<int>> faces;
+  for (const DisplacementBC& bc : model.displacements) {
+    bool all = bc.body == b && !bc.rotation;
+    for (int c = 0; c < model.dim; ++c) all = all && bc.value[c].has_value();
+    if (all) faces.push_back(bc.nodes);
+  }
+  return faces;
+}
+
 /// The largest value of a point-state component and its integral over the mesh at `x`.
 struct CheckField {
   double integral = 0, max = 0;
@@ -177,7 +189,8 @@ Model remeshed_model(const Model& model, const Model& original, const Results& d
     record.quality = due.quality;
     record.shape_before = worst_shape(body.mesh, x);
     Mesh spread = moved.mesh;
-    spread.nodes = even_nodes(original.bodies[b].mesh, x, contact_nodes(model, static_cast<int>(b)));
+    spread.nodes = even_nodes(original.bodies[b].mesh, x, contact_nodes(model, static_cast<int>(b)),
+                              stuck_faces(model, static_cast<int>(b)));
     try {
       check_element_orientation(spread);
     } catch (const std::runtime_error& e) {  // the boundary itself has folded: the run goes on from where it is

@@ -178,15 +178,73 @@ double worst_sine(const Mesh& m, const std::vector<Point>& x) {
   for (int e = 0; e < m.num_elements(); ++e) worst = std::min(worst, corner_sine(m, x, e));
   return worst;
 }
+/// The unit normal of the line through the nodes `face` at `x`, pointing to `inside`, and a point on it; false when
+/// the face's nodes do not lie on one line (within 1e-6 of its length).
+bool face_line(const std::vector<int>& face, const std::vector<Point>& x, const Point& inside, Point& on, Point& n) {
+  auto farthest = [&](const Point& from) {
+    int best = face[0];
+    for (int f : face)
+      if (distance(x[f], from) > distance(x[best], from)) best = f;
+    return x[best];
+  };
+  on = farthest(x[face[0]]);
+  const Point end = farthest(on);
+  const double length = distance(on, end);
+  if (length <= 0) return false;
+  n = {-(end[1] - on[1]) / length, (end[0] - on[0]) / length, 0.0};
+  const auto side = [&](const Point& q) { return (q[0] - on[0]) * n[0] + (q[1] - on[1]) * n[1]; };
+  if (side(inside) < 0) n = {-n[0], -n[1], 0.0};
+  for (int f : face)
+    if (std::abs(side(x[f])) > 1e-6 * length) return false;
+  return true;
+}
+
+/// Free boundary nodes that have crossed the line of a face stuck to a tool (the nodes of `faces`, each on one line)
+/// fold onto it: the face's corner node moves to where the free boundary crosses back over the line, and the crossed
+/// nodes with it — the folded material lies on the tool now, and the grid's corner follows the boundary's corner
+/// (the spread along the chains then places them: the face's nodes along the line, the free ones down the side).
+std::vector<Point> fold_onto_faces(const Boundary& bd, const std::vector<std::vector<int>>& faces,
+                                   std::vector<Point> x) {
+  Point centre{0, 0, 0};
+  for (const Point& p : x) centre = {centre[0] + p[0] / x.size(), centre[1] + p[1] / x.size(), 0.0};
+  for (const std::vector<int>& face : faces) {
+    Point on, n;
+    if (face.size() < 2 || !face_line(face, x, centre, on, n)) continue;
+    const auto side = [&](const Point& q) { return (q[0] - on[0]) * n[0] + (q[1] - on[1]) * n[1]; };
+    const std::set<int> in(face.begin(), face.end());
+    for (int c : face) {
+      const auto at = bd.at.find(c);
+      if (at == bd.at.end()) continue;
+      for (int edge : at->second) {
+        int prev = c, node = other(bd, edge, c), walked = edge;
+        std::vector<int> folded;
+        while (!in.count(node) && side(x[node]) < 0 && bd.at.at(node).size() == 2) {
+          folded.push_back(node);
+          const std::vector<int>& two = bd.at.at(node);
+          walked = two[0] == walked ? two[1] : two[0];
+          prev = node, node = other(bd, walked, prev);
+        }
+        if (folded.empty() || in.count(node)) continue;
+        const double d0 = side(x[folded.back()]), d1 = side(x[node]), t = d0 / (d0 - d1);
+        const Point& a = x[folded.back()];
+        const Point crossing{a[0] + t * (x[node][0] - a[0]), a[1] + t * (x[node][1] - a[1]), 0.0};
+        x[c] = crossing;
+        for (int f : folded) x[f] = crossing;
+      }
+    }
+  }
+  return x;
+}
 }  // namespace
 
-std::vector<Point> even_nodes(const Mesh& original, const std::vector<Point>& current,
-                              const std::vector<int>& staying) {
+std::vector<Point> even_nodes(const Mesh& original, const std::vector<Point>& current_nodes,
+                              const std::vector<int>& staying, const std::vector<std::vector<int>>& faces) {
   if (original.type != ElementType::Quad4)
     throw std::invalid_argument("even_nodes: a 2D quad mesh only (this one has " +
                                 std::to_string(original.nodes_per_elem()) + "-node elements)");
   const std::vector<Names> sets = node_sets_of(original);
   const Boundary bd = boundary_of(original, sets);
+  const std::vector<Point> current = fold_onto_faces(bd, faces, current_nodes);
   std::vector<Point> boundary = current;
   std::set<int> feature = features(original, bd, sets);
   for (int n : staying)

@@ -21,7 +21,11 @@ namespace rollsim {
 /// The new node positions of `original` (its node positions: where it started) whose nodes are now at `current`;
 /// the boundary nodes `staying` are features too (a contact's touching nodes: moved along a chord of the surface they
 /// could end up inside the other body). Quad meshes (2D) only; throws std::invalid_argument for another.
+/// `faces`: node sets stuck to a tool (each on one line): free boundary nodes that have crossed a face's line fold
+/// onto it — the face's corner node moves to where the free boundary crosses back over the line, so that the folded
+/// material is face (the tool's from then on) and the grid's corner stays at the boundary's corner.
 std::vector<std::array<double, 3>> even_nodes(const Mesh& original, const std::vector<std::array<double, 3>>& current,
-                                              const std::vector<int>& staying = {});
+                                              const std::vector<int>& staying = {},
+                                              const std::vector<std::vector<int>>& faces = {});
 
 }  // namespace rollsim

@@ -1,6 +1,7 @@
 // A Newton run that remeshes (analysis/Remeshing): restarted from its current configuration after every step, a
-// homogeneous compression gives its own mesh's force at every step to round-off; the project checks refuse what a
-// remesh cannot carry, at the user's paths.
+// homogeneous compression gives its own mesh's force at every step to round-off; upsetting between sticking faces,
+// which stops at 56 % on its own mesh, is upset to the end; the project checks refuse what a remesh cannot carry, at
+// the user's paths.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -93,6 +94,40 @@ TEST(Remeshing, AfterEveryStepTheSameForceAsItsOwnMesh) {
     EXPECT_NEAR(r.increments[i].load_factor, plain.increments[i].load_factor, 1e-12);
     EXPECT_NEAR(platen_force(model, r.increments[i]) / platen_force(plain_model, plain.increments[i]), 1.0, 1e-9)
         << "increment " << i + 1;
+  }
+}
+
+TEST(Remeshing, UpsetsPastWhereItsOwnMeshStops) {
+  // plane-strain upsetting between sticking faces, 50 % in 50 steps on 20 × 20: on its own mesh the side folds over
+  // the platens' planes at the pinned corners and Newton stops at 56 %; remeshed, each fold is laid onto its face and
+  // the corner follows (mesh/EvenNodes), and the whole stroke is upset
+  const json j = upsetting(20, 5.0, 50);
+  const Project plain_project = parse_project(j.dump(), "test.json");
+  const Model plain_model = build_model(plain_project);
+  const Results plain = run_project(plain_project, plain_model, nullptr);
+  ASSERT_NE(plain.status.status, Status::converged) << "the mesh alone no longer stops early";
+  EXPECT_LT(plain.increments.back().load_factor, 0.6);
+
+  json remeshed = j;
+  remeshed["analysis"]["remesh_quality"] = 0.5;
+  const Project p = parse_project(remeshed.dump(), "test.json");
+  const Model model = build_model(p);
+  const Results r = run_project(p, model, nullptr);
+  ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
+  EXPECT_DOUBLE_EQ(r.increments.back().load_factor, 1.0);
+  ASSERT_GE(r.remeshes.size(), 4u);
+  int unfolded = 0;  // remeshes that laid a fold onto its face: the worst corner sine from ≤ 0 to a shape
+  for (const RemeshRecord& m : r.remeshes) {
+    EXPECT_EQ(m.nodes_kept, "") << "at load factor " << m.load_factor;
+    EXPECT_NEAR(m.plastic_strain_integral_after / m.plastic_strain_integral_before, 1.0, 0.01);
+    EXPECT_LE(m.plastic_strain_max_after, m.plastic_strain_max_before * (1 + 1e-12));
+    unfolded += m.shape_before <= 0 && m.shape_after > 0.2;
+  }
+  EXPECT_GE(unfolded, 2);
+  // up to the first remesh the two runs are one
+  for (size_t i = 0; i < plain.increments.size(); ++i) {
+    if (r.increments[i].load_factor > r.remeshes.front().load_factor + 1e-12) break;
+    EXPECT_NEAR(platen_force(model, r.increments[i]) / platen_force(plain_model, plain.increments[i]), 1.0, 1e-9);
   }
 }
 

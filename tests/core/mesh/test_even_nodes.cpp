@@ -1,6 +1,7 @@
 // Nodes moved back to their original spread (mesh/EvenNodes): a mesh moved rigidly or stretched uniformly is its own
 // answer; the boundary nodes of a distorted block go back to their graded fractions along each side, the corners
-// stay; the inner nodes follow and no element folds.
+// stay; the inner nodes follow and no element folds. A free side that crossed a stuck face's line folds onto it, the
+// corner following to where the side crosses back.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -76,6 +77,30 @@ TEST(EvenNodes, ANodeOfItsOwnSetStays) {
   for (int n : m.node_sets.at("ymax")) x[n][0] += 0.3 * std::sin(x[n][0]);
   const Points y = even_nodes(m, x);
   EXPECT_EQ(y[pinned], x[pinned]);
+}
+
+TEST(EvenNodes, ASideThatCrossedAStuckFaceFoldsOntoItAndTheCornerFollows) {
+  const Mesh m = block(4, 4);  // 10 × 6: the xmax side's nodes at y = 0, 1.5, 3, 4.5, 6
+  Points x = m.nodes;
+  const std::vector<int>& top = m.node_sets.at("ymax");
+  int corner = -1, below = -1;  // the top-right corner and the side node under it
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    if (m.nodes[n][0] == 10.0 && m.nodes[n][1] == 6.0) corner = n;
+    if (m.nodes[n][0] == 10.0 && m.nodes[n][1] == 4.5) below = n;
+  }
+  ASSERT_GE(corner, 0);
+  ASSERT_GE(below, 0);
+  x[below] = {10.5, 6.4, 0};  // past the top face's line y = 6: the side folded over the tool
+  const Points y = even_nodes(m, x, {}, {top});
+  // the free side crosses back over y = 6 between (10.5, 6.4) and (10, 3): there the corner now is
+  const double t = 0.4 / 3.4;
+  EXPECT_NEAR(y[corner][0], 10.5 - 0.5 * t, 1e-12);
+  EXPECT_NEAR(y[corner][1], 6.0, 1e-12);
+  for (int n : top) EXPECT_NEAR(y[n][1], 6.0, 1e-12) << "node " << n;  // the face stays on its line
+  EXPECT_LT(y[below][1], 6.0);  // the folded node is back on the free side
+  for (int e = 0; e < m.num_elements(); ++e) EXPECT_GT(corner_sine(m, y, e), 0.2) << "element " << e;
+  // without the face the corner stays where it is
+  EXPECT_EQ(even_nodes(m, x)[corner], x[corner]);
 }
 
 TEST(EvenNodes, RefusesHexahedra) {
