@@ -165,7 +165,8 @@ void add_segment(Results& run, Results seg, const std::shared_ptr<const Model>& 
   run.dofs = seg.dofs, run.multipliers = seg.multipliers, run.rigid_modes = seg.rigid_modes;
   run.subdomains = seg.subdomains, run.interface_multipliers = seg.interface_multipliers;
   run.paper_convention_multipliers = seg.paper_convention_multipliers;
-  run.load_increments = seg.load_increments, run.update_policy = seg.update_policy;
+  run.update_policy = seg.update_policy;
+  if (remeshes == 0) run.load_increments = seg.load_increments;  // the run's steps as the user asked for them
 }
 }  // namespace
 
