@@ -97,7 +97,7 @@ TEST(EvenNodes, ASideThatCrossedAStuckFaceFoldsOntoItAndTheCornerFollows) {
   EXPECT_NEAR(y[corner][0], 10.5 - 0.5 * t, 1e-12);
   EXPECT_NEAR(y[corner][1], 6.0, 1e-12);
   for (int n : top) EXPECT_NEAR(y[n][1], 6.0, 1e-12) << "node " << n;  // the face stays on its line
-  EXPECT_LT(y[below][1], 6.0);  // the folded node is back on the free side
+  EXPECT_LT(y[below][1], 6.0);                                         // the folded node is back on the free side
   for (int e = 0; e < m.num_elements(); ++e) EXPECT_GT(corner_sine(m, y, e), 0.2) << "element " << e;
   // without the face the corner stays where it is
   EXPECT_EQ(even_nodes(m, x)[corner], x[corner]);
