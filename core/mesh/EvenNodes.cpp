@@ -105,7 +105,7 @@ void spread_along(const std::vector<int>& chain, const Mesh& original, const std
   }
 }
 
-/// Every stretch of boundary between two features (a loop without one starts and ends at its lowest node).
+/// Every stretch of boundary between two features (a loop without one starts and ends at one of its nodes).
 std::vector<std::vector<int>> chains(const Boundary& bd, std::set<int> feature) {
   std::vector<std::vector<int>> out;
   std::vector<char> walked(bd.edges.size(), 0);
@@ -172,6 +172,7 @@ void follow_inside(const Mesh& original, const std::vector<Point>& from, bool un
       out[i] = uniform ? Point{w(inner[i], 0), w(inner[i], 1), 0.0}
                        : Point{from[i][0] + w(inner[i], 0), from[i][1] + w(inner[i], 1), 0.0};
 }
+
 /// The worst corner sine of the mesh's elements with its nodes at x (≤ 0: an element folds).
 double worst_sine(const Mesh& m, const std::vector<Point>& x) {
   double worst = 1;
