@@ -387,8 +387,9 @@ void NewtonRun::watch_folds(double lf, int increment) {
   const RemeshDue worst = worst_corner(lf, false);
   if (worst.quality > 0) return;
   fold_ = "body '" + model_.bodies[static_cast<size_t>(worst.body)].name + "': element " +
-          std::to_string(worst.element) + " has a folded corner from increment " + std::to_string(increment) +
-          " (load factor " + fmt(lf) + ") on (its corner Jacobian ratio " + fmt(worst.quality) +
+          std::to_string(worst.element) + " folded a corner in increment " + std::to_string(increment) +
+          " (load factor " + fmt(lf) + "), the first converged step that did (its corner Jacobian ratio " +
+          fmt(worst.quality) +
           ", every Gauss point's still positive; the `jacobian_ratio` cell field): the fields around it are not to be "
           "trusted — a finer mesh there, smaller steps, or analysis.remesh_quality";
 }

@@ -50,7 +50,8 @@ class Material {
                              FiniteTangent* tangent) const;
   /// Finite strain: a committed state as it reads on a reference configuration that is the current one, F the
   /// deformation gradient there from the old reference (a remesh's new mesh starts at the current positions, F = I):
-  /// update_finite(I, rebased) gives the stress update_finite(F, state) gave. Default: no state to change.
+  /// update_finite(I, rebased) gives the Cauchy stress update_finite(F, state) gave (τ per the new reference's volume:
+  /// the old τ / det F). Default: no state to change.
   virtual void rebase_state(const Eigen::Matrix3d& /*F*/, double* /*state*/) const {}
   /// The tangent at zero deformation and the initial state: the stiffness of a linear analysis.
   Tangent6 initial_tangent() const;
