@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "fem/Assembler.h"
 #include "fem/StateTransfer.h"
 #include "material/Material.h"
 #include "mesh/ElementQuality.h"
@@ -202,8 +203,15 @@ Model remeshed_model(const Model& model, const Model& original, const Results& d
     if (record.nodes_kept.empty()) {
       moved.mesh.nodes = spread.nodes;
       moved.initial_state = transfer_points(body.mesh, x, state, width, moved.mesh);
-      if (!moved.initial_temperature.empty())
+      if (!moved.initial_temperature.empty()) {
         moved.initial_temperature = transfer_nodes(body.mesh, x, moved.initial_temperature, moved.mesh);
+        // a conducting body's points hold their nodes' temperature (HeatConduction writes it back each step and
+        // counts the next step's plastic heat from it): the carried nodes' values, not the carried points'
+        if (const int rise = material->temperature_rise_index(); rise >= 0 && moved.material.thermal()) {
+          const std::vector<double> rises = initial_point_rises(moved);
+          for (size_t p = 0; p < rises.size(); ++p) moved.initial_state[p * width + rise] = rises[p];
+        }
+      }
     }
     const CheckField before = check_field(body.mesh, x, state, width, alpha);
     const CheckField after = check_field(moved.mesh, moved.mesh.nodes, moved.initial_state, width, alpha);
