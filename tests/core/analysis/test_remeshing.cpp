@@ -97,6 +97,32 @@ TEST(Remeshing, AfterEveryStepTheSameForceAsItsOwnMesh) {
   }
 }
 
+TEST(Remeshing, AfterEveryStepTheSameHeatAsItsOwnMesh) {
+  // the same compression conducting heat over 1 s (plastic work heats it, the air on its free side cools it): the
+  // temperatures carried across every restart — the nodes', the points' rises, what is left of the time — are its own
+  // mesh's to 3e-5 of the rise: HeatConduction's capacity is ρc per reference volume, and a restart's reference is
+  // the current, elastically compressed one (the mass it holds is J_p times it, which the stress carries and the heat
+  // does not: a p/K effect)
+  json j = upsetting(4, 3.0, 10);
+  j["materials"][0].update({{"conductivity", 30.0}, {"heat_capacity", 4.5}, {"temperature", 20.0}});
+  j["boundary_conditions"] =
+      json::array({{{"type", "displacement"}, {"body", "block"}, {"set", "ymin"}, {"uy", 0.0}},
+                   {{"type", "displacement"}, {"body", "block"}, {"set", "xmin"}, {"ux", 0.0}},
+                   {{"type", "displacement"}, {"body", "block"}, {"set", "ymax"}, {"uy", -3.0}}});
+  j["heat"] = {{"ambient_temperature", 20.0}, {"air", {{{"body", "block"}, {"surface", "xmax"}, {"convection", 0.5}}}}};
+  j["analysis"]["duration"] = 1.0;
+  const Results plain = run(j);
+  j["analysis"]["remesh_quality"] = 1.0;
+  const Results r = run(j);
+  ASSERT_EQ(plain.status.status, Status::converged) << plain.status.message;
+  ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
+  EXPECT_GE(r.remeshes.size(), 5u);
+  const Eigen::VectorXd &T = r.bodies[0].nodal_temperature, &T0 = plain.bodies[0].nodal_temperature;
+  ASSERT_EQ(T.size(), T0.size());
+  EXPECT_GT(T0.maxCoeff(), 30.0);  // the plastic work heated it
+  EXPECT_LT((T - T0).cwiseAbs().maxCoeff(), 1e-4 * (T0.maxCoeff() - 20.0));
+}
+
 TEST(Remeshing, UpsetsPastWhereItsOwnMeshStops) {
   // plane-strain upsetting between sticking faces, 50 % in 50 steps on 20 × 20: on its own mesh the side folds over
   // the platens' planes at the pinned corners and Newton stops at 56 %; remeshed, each fold is laid onto its face and
