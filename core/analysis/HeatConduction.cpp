@@ -35,6 +35,21 @@ typename SolidElement<D>::Coords moved_coords(const Mesh& m, int e, const Eigen:
     for (int i = 0; i < D; ++i) x(i, a) += u[static_cast<Eigen::Index>(conn[a]) * D + i];
   return x;
 }
+
+/// Each integration point's mass per unit reference volume over the original density's, J_p of its initial state
+/// (Material::plastic_volume): a remeshed run's later segments start on references under elastic strain. Empty when
+/// every point's is 1 (no initial state, or none that moved its reference).
+std::vector<double> point_masses(const Body& body, const Material& material) {
+  const int width = material.state_size();
+  if (body.initial_state.empty() || width == 0) return {};
+  std::vector<double> mass(body.initial_state.size() / static_cast<size_t>(width));
+  bool any = false;
+  for (size_t p = 0; p < mass.size(); ++p) {
+    mass[p] = material.plastic_volume(body.initial_state.data() + p * width);
+    any = any || mass[p] != 1.0;
+  }
+  return any ? mass : std::vector<double>{};
+}
 }  // namespace
 
 HeatConduction::HeatConduction(const Model& model)
@@ -49,6 +64,8 @@ HeatConduction::HeatConduction(const Model& model)
     if (!body.initial_temperature.empty())
       T_[b] = Eigen::Map<const Eigen::VectorXd>(body.initial_temperature.data(), body.mesh.num_nodes());
     h.share = Eigen::VectorXd::Zero(body.mesh.num_nodes());
+    const auto material = make_material(body.material);
+    const std::vector<double> mass = point_masses(body, *material);
     with_dimension(model.dim, [&]<int D>() {
       using El = SolidElement<D>;
       std::array<typename El::Gradients, El::NGP> dN;
@@ -57,13 +74,19 @@ HeatConduction::HeatConduction(const Model& model)
       for (int e = 0; e < body.mesh.num_elements(); ++e) {
         const auto x = element_coords<D>(body.mesh, e);
         El::gradients(x, dN, dv, centre);
-        const auto share = El::shape_integrals(x);
-        for (int a = 0; a < El::NN; ++a) h.share[body.mesh.element(e)[a]] += share[a];
+        if (!mass.empty())  // a rebased reference's points: their volume holds J_p times the original's mass
+          for (int p = 0; p < El::NGP; ++p) dv[p] *= mass[static_cast<size_t>(e) * El::NGP + p];
+        if (mass.empty()) {
+          const auto share = El::shape_integrals(x);
+          for (int a = 0; a < El::NN; ++a) h.share[body.mesh.element(e)[a]] += share[a];
+        } else {
+          for (int p = 0; p < El::NGP; ++p)
+            for (int a = 0; a < El::NN; ++a) h.share[body.mesh.element(e)[a]] += El::gauss_shape()(p, a) * dv[p];
+        }
         h.volume.insert(h.volume.end(), dv.begin(), dv.end());
       }
     });
     h.capacity = body.material.heat_capacity * h.share;
-    const auto material = make_material(body.material);
     if (body.material.thermal() && material->temperature_rise_index() >= 0) {
       h.stride = material->state_size();
       h.rise = material->temperature_rise_index();

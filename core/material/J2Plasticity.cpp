@@ -103,10 +103,9 @@ void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committ
   double log_committed[kStateSize] = {0, 0, 0, 0, 0, 0, committed[kAlpha], committed[kHeat]}, log_trial[kStateSize];
   Tangent6 modulus;
   update(d, log_committed, log_trial, tau, modulus);
-  // a reference moved to a configuration under elastic strain (rebase_state) holds a plastic volume J_p =
-  // 1 / √det C_p⁻¹ ≠ 1: the stress per reference volume is J_p times Hencky's on b_e (J σ = J_p J_e σ); plastic flow
-  // alone keeps det C_p⁻¹ = 1 to round-off, which is left alone
-  if (const double jp = 1 / std::sqrt(Cp_inv.determinant()); std::abs(jp - 1) > kUnitVolume) {
+  // a reference moved to a configuration under elastic strain (rebase_state) holds a plastic volume J_p ≠ 1: the
+  // stress per reference volume is J_p times Hencky's on b_e (J σ = J_p J_e σ)
+  if (const double jp = plastic_volume(committed); jp != 1.0) {
     tau *= jp;
     modulus *= jp;
   }
@@ -128,6 +127,13 @@ void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committ
   trial[3] = 0.5 * (C(0, 1) + C(1, 0));
   trial[4] = 0.5 * (C(1, 2) + C(2, 1));
   trial[5] = 0.5 * (C(2, 0) + C(0, 2));
+}
+
+double J2Plasticity::plastic_volume(const double* c) const {
+  Eigen::Matrix3d Cp_inv;
+  Cp_inv << 1 + c[0], c[3], c[5], c[3], 1 + c[1], c[4], c[5], c[4], 1 + c[2];
+  const double jp = 1 / std::sqrt(Cp_inv.determinant());
+  return std::abs(jp - 1) > kUnitVolume ? jp : 1.0;
 }
 
 void J2Plasticity::rebase_state(const Eigen::Matrix3d& F, double* c) const {

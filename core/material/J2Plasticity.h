@@ -34,6 +34,8 @@ class J2Plasticity final : public Material {
   /// C_p⁻¹ becomes b_e = F C_p⁻¹ Fᵀ (with F = I on the new reference, b_e trial = C_p⁻¹; its volume, det b_e = J_e²,
   /// becomes the plastic volume 1 / J_p² that update_finite scales the stress by); α and ΔT stay.
   void rebase_state(const Eigen::Matrix3d& F, double* state) const override;
+  /// 1 / √det C_p⁻¹, or 1 where that is within kUnitVolume of it (plastic flow alone: round-off).
+  double plastic_volume(const double* state) const override;
 
   /// σ_y at equivalent plastic strain α reached by Δα in this increment, the point `rise` above the material's
   /// temperature, and its slope dσ_y/dΔα [stress].

@@ -53,6 +53,9 @@ class Material {
   /// update_finite(I, rebased) gives the Cauchy stress update_finite(F, state) gave (τ per the new reference's volume:
   /// the old τ / det F). Default: no state to change.
   virtual void rebase_state(const Eigen::Matrix3d& /*F*/, double* /*state*/) const {}
+  /// The plastic volume J_p a finite-strain state holds (≠ 1 on a rebased reference, which is under elastic strain):
+  /// the mass of a unit of reference volume is J_p times the original density's. Default: 1.
+  virtual double plastic_volume(const double* /*state*/) const { return 1.0; }
   /// The tangent at zero deformation and the initial state: the stiffness of a linear analysis.
   Tangent6 initial_tangent() const;
 };
