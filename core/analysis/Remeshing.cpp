@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "analysis/AnalysisError.h"
 #include "fem/Assembler.h"
 #include "fem/StateTransfer.h"
 #include "material/Material.h"
@@ -92,6 +93,16 @@ std::vector<std::vector<int>> stuck_faces(const Model& model, int b) {
     if (all) faces.push_back(bc.nodes);
   }
   return faces;
+}
+
+/// Why `mesh` (at its own node positions) cannot be a reference — an element folded at a corner —, or "".
+std::string folded(const Mesh& mesh) {
+  try {
+    check_element_orientation(mesh);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
 }
 
 /// The largest value of a point-state component and its integral over the mesh at `x`.
@@ -185,7 +196,11 @@ Model remeshed_model(const Model& model, const Model& original, const Results& d
                                      r.nodal_temperature.data() + r.nodal_temperature.size());
     moved.mesh.nodes = x;
     moved.initial_state = state;
-    if (static_cast<int>(b) != due.body) continue;
+    if (static_cast<int>(b) != due.body) {
+      if (const std::string now = folded(moved.mesh); !now.empty())
+        throw AnalysisError("body '" + body.name + "' cannot go on from its current shape: " + now);
+      continue;
+    }
     record.body = body.name;
     record.element = due.element;
     record.quality = due.quality;
@@ -193,10 +208,12 @@ Model remeshed_model(const Model& model, const Model& original, const Results& d
     Mesh spread = moved.mesh;
     spread.nodes = even_nodes(original.bodies[b].mesh, x, contact_nodes(model, static_cast<int>(b)),
                               stuck_faces(model, static_cast<int>(b)));
-    try {
-      check_element_orientation(spread);
-    } catch (const std::runtime_error& e) {  // the boundary itself has folded: the run goes on from where it is
-      record.nodes_kept = std::string("moving them back to their spread would fold an element (") + e.what() + ")";
+    if (const std::string folds = folded(spread); !folds.empty()) {  // the run goes on from where it is
+      record.nodes_kept = "moving them back to their spread would fold an element (" + folds + ")";
+      if (const std::string now = folded(moved.mesh); !now.empty())
+        throw AnalysisError("body '" + body.name + "' cannot be remeshed: " + now + ", and moving its nodes back to " +
+                            "their spread would fold one too (" + folds + ") — a run cannot go on from a folded " +
+                            "shape: smaller steps, or an earlier remesh (a higher analysis.remesh_quality)");
     }
     const auto material = make_material(body.material);
     const int width = material->state_size(), alpha = material->equivalent_plastic_strain_index();
@@ -239,7 +256,12 @@ Results run_with_remeshing(const Model& model, const NewtonOptions& options, con
     RemeshRecord record;
     const double lf = r.increments.empty() ? 0.0 : r.increments.back().load_factor;
     std::optional<Model> next;
-    if (r.remesh_due) next = remeshed_model(m, model, r, lf, record);
+    if (r.remesh_due) try {
+        next = remeshed_model(m, model, r, lf, record);
+      } catch (const AnalysisError& e) {
+        r.status = {Status::diverged, Reason::none,
+                    "the remesh at load factor " + fmt(base + (1 - base) * lf) + " failed: " + e.what()};
+      }
     add_segment(out, std::move(r), current, remeshes, base);
     if (!next) break;
     record.increment = static_cast<int>(out.increments.size());

@@ -32,7 +32,9 @@ Results run_with_remeshing(const Model& model, const NewtonOptions& options, con
 /// The model a segment goes on with after `done` (a segment of `model` that stopped for a remesh, its last increment
 /// at the segment's load factor `lf`): see the header. `original`: the run's first model (the spread to move back
 /// to). Fills `record` with what the remesh changed; a body whose nodes would fold an element when moved keeps them
-/// where they are (record.nodes_kept says why: the run goes on from its current shape).
+/// where they are (record.nodes_kept says why: the run goes on from its current shape). Throws AnalysisError when a
+/// body would go on from a shape with a folded element (a reference must not be folded: restarted from one, a punch's
+/// force fell by 40 % in a step).
 Model remeshed_model(const Model& model, const Model& original, const Results& done, double lf, RemeshRecord& record);
 
 }  // namespace rollsim

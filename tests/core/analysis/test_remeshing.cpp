@@ -156,6 +156,52 @@ TEST(Remeshing, UpsetsPastWhereItsOwnMeshStops) {
   }
 }
 
+TEST(Remeshing, ARunNeverGoesOnFromAFoldedShape) {
+  // a flat punch 10 mm into a plastic base on rollers (20 × 12): at 92.5 % the surface element at the punch's corner
+  // has folded (its nodes are the contact's, which stay) — restarted from that shape the punch's force fell by 40 % in
+  // one step; the run ends there instead, saying why
+  const json base_mesh = {{"type", "block"}, {"nx", 20}, {"ny", 12}, {"lx", 50.0}, {"ly", 30.0}};
+  const json punch_mesh = {{"type", "block"}, {"nx", 4}, {"ny", 4}, {"lx", 10.0}, {"ly", 8.0}, {"origin", {0.0, 30.0}}};
+  const json j = {
+      {"name", "punch"},
+      {"dimension", 2},
+      {"materials",
+       {{{"name", "base"}, {"E", 200e3}, {"nu", 0.3}, {"yield_stress", 250.0}, {"hardening_modulus", 2000.0}},
+        {{"name", "tool"}, {"E", 2e6}, {"nu", 0.3}}}},
+      {"bodies",
+       {{{"name", "base"},
+         {"material", "base"},
+         {"formulation", "bbar"},
+         {"kinematics", "finite"},
+         {"mesh", base_mesh}},
+        {{"name", "punch"}, {"material", "tool"}, {"kinematics", "finite"}, {"mesh", punch_mesh}}}},
+      {"contacts",
+       {{{"name", "punch-base"},
+         {"type", "frictionless"},
+         {"slave_body", "base"},
+         {"slave_surface", "ymax"},
+         {"master_body", "punch"},
+         {"master_surface", "ymin"},
+         {"search_distance", 5.0},
+         {"sliding", "large"}}}},
+      {"boundary_conditions",
+       {{{"type", "displacement"}, {"body", "base"}, {"set", "ymin"}, {"uy", 0.0}},
+        {{"type", "symmetry"}, {"body", "base"}, {"set", "xmin"}, {"normal", "x"}},
+        {{"type", "symmetry"}, {"body", "punch"}, {"set", "xmin"}, {"normal", "x"}},
+        {{"type", "displacement"}, {"body", "punch"}, {"set", "ymax"}, {"ux", 0.0}, {"uy", -10.0}}}},
+      {"analysis", {{"type", "newton"}, {"increments", 40}, {"remesh_quality", 0.5}}},
+      {"solver", {{"mode", "direct"}}}};
+  const Results r = run(j);
+  ASSERT_EQ(r.status.status, Status::diverged) << r.status.message;
+  EXPECT_NE(r.status.message.find("cannot be remeshed: element "), std::string::npos) << r.status.message;
+  EXPECT_NE(r.status.message.find("a run cannot go on from a folded shape"), std::string::npos) << r.status.message;
+  ASSERT_GE(r.increments.size(), 2u);
+  // the contact's force grew at every step to the end
+  for (size_t i = 1; i < r.increments.size(); ++i)
+    EXPECT_GT(r.increments[i].contacts.at(0).normal_force, r.increments[i - 1].contacts.at(0).normal_force)
+        << "increment " << i + 1;
+}
+
 TEST(Remeshing, RefusesWhatARemeshCannotCarryAtTheUsersPaths) {
   json elastic = upsetting(4, 1.0, 4);
   elastic["analysis"]["remesh_quality"] = 0.5;
