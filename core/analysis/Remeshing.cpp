@@ -180,61 +180,67 @@ void add_segment(Results& run, Results seg, const std::shared_ptr<const Model>& 
   run.update_policy = seg.update_policy;
   if (remeshes == 0) run.load_increments = seg.load_increments;  // the run's steps as the user asked for them
 }
+
+/// The distorted body `b` of `model` moved onto its spread: `moved` (its reference at the current positions `x`, its
+/// state `state` read there) gets the spread nodes and the state and temperatures carried onto them — or keeps its
+/// nodes where moving them would fold an element (throwing when its current shape has a folded element too).
+void spread_body(const Model& model, const Model& original, int b, const std::vector<Point3>& x,
+                 const std::vector<double>& state, Body& moved, RemeshRecord& record) {
+  const Body& body = model.bodies[static_cast<size_t>(b)];
+  record.body = body.name;
+  record.shape_before = worst_shape(body.mesh, x);
+  Mesh spread = moved.mesh;
+  spread.nodes =
+      even_nodes(original.bodies[static_cast<size_t>(b)].mesh, x, contact_nodes(model, b), stuck_faces(model, b));
+  if (const std::string folds = folded(spread); !folds.empty()) {  // the run goes on from where it is
+    record.nodes_kept = "moving them back to their spread would fold an element (" + folds + ")";
+    if (const std::string now = folded(moved.mesh); !now.empty())
+      throw AnalysisError("body '" + body.name + "' cannot be remeshed: " + now + ", and moving its nodes back to " +
+                          "their spread would fold one too (" + folds + ") — a run cannot go on from a folded " +
+                          "shape: smaller steps, or an earlier remesh (a higher analysis.remesh_quality)");
+  }
+  const auto material = make_material(body.material);
+  const int width = material->state_size(), alpha = material->equivalent_plastic_strain_index();
+  if (record.nodes_kept.empty()) {
+    moved.mesh.nodes = spread.nodes;
+    moved.initial_state = transfer_points(body.mesh, x, state, width, moved.mesh);
+    if (!moved.initial_temperature.empty()) {
+      moved.initial_temperature = transfer_nodes(body.mesh, x, moved.initial_temperature, moved.mesh);
+      // a conducting body's points hold their nodes' temperature (HeatConduction writes it back each step and
+      // counts the next step's plastic heat from it): the carried nodes' values, not the carried points'
+      if (const int rise = material->temperature_rise_index(); rise >= 0 && moved.material.thermal()) {
+        const std::vector<double> rises = initial_point_rises(moved);
+        for (size_t p = 0; p < rises.size(); ++p) moved.initial_state[p * width + rise] = rises[p];
+      }
+    }
+  }
+  const CheckField before = check_field(body.mesh, x, state, width, alpha);
+  const CheckField after = check_field(moved.mesh, moved.mesh.nodes, moved.initial_state, width, alpha);
+  record.shape_after = worst_shape(moved.mesh, moved.mesh.nodes);
+  record.plastic_strain_integral_before = before.integral, record.plastic_strain_integral_after = after.integral;
+  record.plastic_strain_max_before = before.max, record.plastic_strain_max_after = after.max;
+}
 }  // namespace
 
 Model remeshed_model(const Model& model, const Model& original, const Results& done, double lf, RemeshRecord& record) {
   const RemeshDue& due = *done.remesh_due;
+  record.element = due.element;
+  record.quality = due.quality;
   Model next = model;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
-    const Body& body = model.bodies[b];
     const BodyResults& r = done.bodies[b];
     Body& moved = next.bodies[b];
-    const std::vector<Point3> x = displaced_nodes(body.mesh, r.displacement);
+    const std::vector<Point3> x = displaced_nodes(model.bodies[b].mesh, r.displacement);
     const std::vector<double> state = current_state(moved, r.displacement, as_stateful(moved, r.point_state));
     moved.initial_plastic_strain.clear();
     moved.initial_temperature.assign(r.nodal_temperature.data(),
                                      r.nodal_temperature.data() + r.nodal_temperature.size());
     moved.mesh.nodes = x;
     moved.initial_state = state;
-    if (static_cast<int>(b) != due.body) {
-      if (const std::string now = folded(moved.mesh); !now.empty())
-        throw AnalysisError("body '" + body.name + "' cannot go on from its current shape: " + now);
-      continue;
-    }
-    record.body = body.name;
-    record.element = due.element;
-    record.quality = due.quality;
-    record.shape_before = worst_shape(body.mesh, x);
-    Mesh spread = moved.mesh;
-    spread.nodes = even_nodes(original.bodies[b].mesh, x, contact_nodes(model, static_cast<int>(b)),
-                              stuck_faces(model, static_cast<int>(b)));
-    if (const std::string folds = folded(spread); !folds.empty()) {  // the run goes on from where it is
-      record.nodes_kept = "moving them back to their spread would fold an element (" + folds + ")";
-      if (const std::string now = folded(moved.mesh); !now.empty())
-        throw AnalysisError("body '" + body.name + "' cannot be remeshed: " + now + ", and moving its nodes back to " +
-                            "their spread would fold one too (" + folds + ") — a run cannot go on from a folded " +
-                            "shape: smaller steps, or an earlier remesh (a higher analysis.remesh_quality)");
-    }
-    const auto material = make_material(body.material);
-    const int width = material->state_size(), alpha = material->equivalent_plastic_strain_index();
-    if (record.nodes_kept.empty()) {
-      moved.mesh.nodes = spread.nodes;
-      moved.initial_state = transfer_points(body.mesh, x, state, width, moved.mesh);
-      if (!moved.initial_temperature.empty()) {
-        moved.initial_temperature = transfer_nodes(body.mesh, x, moved.initial_temperature, moved.mesh);
-        // a conducting body's points hold their nodes' temperature (HeatConduction writes it back each step and
-        // counts the next step's plastic heat from it): the carried nodes' values, not the carried points'
-        if (const int rise = material->temperature_rise_index(); rise >= 0 && moved.material.thermal()) {
-          const std::vector<double> rises = initial_point_rises(moved);
-          for (size_t p = 0; p < rises.size(); ++p) moved.initial_state[p * width + rise] = rises[p];
-        }
-      }
-    }
-    const CheckField before = check_field(body.mesh, x, state, width, alpha);
-    const CheckField after = check_field(moved.mesh, moved.mesh.nodes, moved.initial_state, width, alpha);
-    record.shape_after = worst_shape(moved.mesh, moved.mesh.nodes);
-    record.plastic_strain_integral_before = before.integral, record.plastic_strain_integral_after = after.integral;
-    record.plastic_strain_max_before = before.max, record.plastic_strain_max_after = after.max;
+    if (static_cast<int>(b) == due.body)
+      spread_body(model, original, static_cast<int>(b), x, state, moved, record);
+    else if (const std::string now = folded(moved.mesh); !now.empty())
+      throw AnalysisError("body '" + moved.name + "' cannot go on from its current shape: " + now);
   }
   for (DisplacementBC& bc : next.displacements) bc = rest_of(bc, lf);
   return next;
