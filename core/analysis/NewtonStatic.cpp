@@ -17,6 +17,7 @@
 #include "analysis/HeatConduction.h"
 #include "analysis/LinearStatic.h"
 #include "analysis/Recovery.h"
+#include "base/Format.h"
 #include "base/Stopwatch.h"
 #include "contact/ContactConstraints.h"
 #include "contact/ContactStiffness.h"
@@ -52,12 +53,6 @@ struct Iterate {
   double constraint = 0;        // max |C u − d| over the contact and glue rows
   double constraint_limit = 0;  // analysis.tolerance × max(max |u − u_n|, BlockSystem::d_reference)
 };
-
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
 
 /// A tangent that fails to factor after the load took effect (the model was held then, so no advice on supports):
 /// what the factorization found — at finite strain a part under heavy compression can lose stability alone.
@@ -388,8 +383,8 @@ void NewtonRun::watch_folds(double lf, int increment) {
   if (worst.quality > 0) return;
   fold_ = "body '" + model_.bodies[static_cast<size_t>(worst.body)].name + "': element " +
           std::to_string(worst.element) + " folded a corner in increment " + std::to_string(increment) +
-          " (load factor " + fmt(lf) + "), the first converged step that did (its corner Jacobian ratio " +
-          fmt(worst.quality) +
+          " (load factor " + four_digits(lf) + "), the first converged step that did (its corner Jacobian ratio " +
+          four_digits(worst.quality) +
           ", every Gauss point's still positive; the `jacobian_ratio` cell field): the fields around it are not to be "
           "trusted — a finer mesh there, smaller steps, or analysis.remesh_quality";
 }
@@ -448,7 +443,7 @@ std::vector<TangentChoice> NewtonRun::tangent_choices(const std::vector<size_t>&
     else if (!c.refactored && layout_.assembler().constant_tangent(g))
       c.why = "constant";
     else
-      c.why = "share " + fmt(share[g]) + (c.refactored ? " > " : " ≤ ") + fmt(policy_.threshold());
+      c.why = "share " + four_digits(share[g]) + (c.refactored ? " > " : " ≤ ") + four_digits(policy_.threshold());
     out.push_back(std::move(c));
   }
   return out;
@@ -474,36 +469,36 @@ Iterate NewtonRun::measure(double residual, double first, int k, const std::vect
 }
 
 std::string NewtonRun::unmet_check(const Iterate& it) const {
-  const std::string ratio = "the residual ratio " + fmt(it.relative);
-  if (!it.balanced) return ratio + " is above its tolerance " + fmt(opt_.tolerance) + " (analysis.tolerance)";
-  const std::string but = ratio + " is within its tolerance " + fmt(opt_.tolerance) + ", but ";
+  const std::string ratio = "the residual ratio " + four_digits(it.relative);
+  if (!it.balanced) return ratio + " is above its tolerance " + four_digits(opt_.tolerance) + " (analysis.tolerance)";
+  const std::string but = ratio + " is within its tolerance " + four_digits(opt_.tolerance) + ", but ";
   if (!lambda_valid_ || it.changed)
     return but + "the contact check failed: " + std::to_string(it.changed) +
            " contact points changed status (in or out, stick or slip) in the last iteration";
   if (it.constraint > it.constraint_limit)
-    return but + "the constraint check failed: a contact or glue row is unmet by " + fmt(it.constraint) +
+    return but + "the constraint check failed: a contact or glue row is unmet by " + four_digits(it.constraint) +
            ", above analysis.tolerance × the rows' scale (the step's largest displacement, or the terms of their "
            "right-hand side) = " +
-           fmt(it.constraint_limit) + interface_hint();
+           four_digits(it.constraint_limit) + interface_hint();
   const double limit = opt_.displacement_tolerance * it.step;
   if (it.correction > limit)
-    return but + "the correction check failed: ‖du‖ = " + fmt(it.correction) + " is above " +
-           fmt(opt_.displacement_tolerance) + " × the step's displacement " + fmt(it.step) + " = " + fmt(limit) +
-           interface_hint();
+    return but + "the correction check failed: ‖du‖ = " + four_digits(it.correction) + " is above " +
+           four_digits(opt_.displacement_tolerance) + " × the step's displacement " + four_digits(it.step) + " = " +
+           four_digits(limit) + interface_hint();
   return "";
 }
 
 std::string NewtonRun::unmet_projections(double relative, const ProjectionDrift& drift) const {
-  return "the residual ratio " + fmt(relative) + " is within its tolerance " + fmt(opt_.tolerance) +
+  return "the residual ratio " + four_digits(relative) + " is within its tolerance " + four_digits(opt_.tolerance) +
          ", but the projection check failed: " + std::to_string(drift.moved) +
-         " contact points are off their projection on the master surface by up to " + fmt(drift.largest) + " (limit " +
-         fmt(drift.limit) + ", 1e-8 of the pair's search distance)" + interface_hint();
+         " contact points are off their projection on the master surface by up to " + four_digits(drift.largest) +
+         " (limit " + four_digits(drift.limit) + ", 1e-8 of the pair's search distance)" + interface_hint();
 }
 
 std::string NewtonRun::interface_hint() const {
   if (!(solver_.multiplier_tolerance() > kExactInterface)) return "";
   return " — the interface solve leaves constraint errors of its tolerance: a tighter solver.cg_tolerance (now " +
-         fmt(solver_.options().cg_tolerance) + ")";
+         four_digits(solver_.options().cg_tolerance) + ")";
 }
 
 std::string NewtonRun::advice(const std::string& cause) const {
@@ -589,8 +584,8 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     if (unmet.empty()) {
       // a frozen friction direction must oppose its point's slip where the step ends (Friction.h, release_frozen)
       if (const int released = release_frozen(model_, body_displacements(lf), step_start_, pairs_); released > 0) {
-        unmet = "the residual ratio " + fmt(relative) + " is within its tolerance " + fmt(opt_.tolerance) +
-                ", but the friction check failed: " + std::to_string(released) +
+        unmet = "the residual ratio " + four_digits(relative) + " is within its tolerance " +
+                four_digits(opt_.tolerance) + ", but the friction check failed: " + std::to_string(released) +
                 " slipping points with a frozen friction direction do not slip against it";
         changed = released;
         continue;
@@ -607,8 +602,9 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
       continue;
     }
     if (k > 1 && relative > 1e6)
-      return {
-          {}, "the residual grew to " + fmt(relative) + " times its scale (the larger of its first two values)", k - 1};
+      return {{},
+              "the residual grew to " + four_digits(relative) + " times its scale (the larger of its first two values)",
+              k - 1};
     if (k > opt_.max_iterations)
       return {{}, "no convergence in " + std::to_string(opt_.max_iterations) + " iterations: " + unmet, k - 1};
     obs_.on_tangents(increment, k, choices);  // told only for an iteration that solves (as convergence.csv's rows)
@@ -685,8 +681,8 @@ Results NewtonRun::run() {
       if (increment == 0) throw;
       restore();
       res.status = {Status::error, Reason::none,
-                    "increment " + std::to_string(increment + 1) + " (load factor " + fmt(lf) + " to " + fmt(target) +
-                        "): " + e.what()};
+                    "increment " + std::to_string(increment + 1) + " (load factor " + four_digits(lf) + " to " +
+                        four_digits(target) + "): " + e.what()};
       break;
     }
     if (a.status.status == Status::cancelled) {
@@ -699,8 +695,8 @@ Results NewtonRun::run() {
       refresh_all_ = true;
       if (depth == opt_.max_cutbacks) {
         res.status = {Status::diverged, Reason::none,
-                      "increment " + std::to_string(increment + 1) + " (load factor " + fmt(lf) + " to " + fmt(target) +
-                          "): " + a.cause + "; " + std::to_string(depth) +
+                      "increment " + std::to_string(increment + 1) + " (load factor " + four_digits(lf) + " to " +
+                          four_digits(target) + "): " + a.cause + "; " + std::to_string(depth) +
                           " cut-backs used (analysis.max_cutbacks: the step halved that often)" + advice(a.cause)};
         break;
       }

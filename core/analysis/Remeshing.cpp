@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "analysis/AnalysisError.h"
+#include "base/Format.h"
 #include "fem/Assembler.h"
 #include "fem/StateTransfer.h"
 #include "material/Material.h"
@@ -17,11 +18,6 @@
 namespace rollsim {
 
 namespace {
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
 
 /// A segment's observer told to the run's: increments numbered on from those before, progress on the run's load
 /// factor (a segment's λ covers the run's [base, 1]).
@@ -126,7 +122,7 @@ double worst_shape(const Mesh& m, const std::vector<Point3>& x) {
 
 /// How a later segment's words name its increments and load factors: from the remesh it started at.
 std::string after_remesh(int remeshes, double base) {
-  return "after remesh " + std::to_string(remeshes) + " (load factor " + fmt(base) +
+  return "after remesh " + std::to_string(remeshes) + " (load factor " + four_digits(base) +
          "; increments and load factors below count from it): ";
 }
 
@@ -266,19 +262,19 @@ Results run_with_remeshing(const Model& model, const NewtonOptions& options, con
         next = remeshed_model(m, model, r, lf, record);
       } catch (const AnalysisError& e) {
         r.status = {Status::diverged, Reason::none,
-                    "the remesh at load factor " + fmt(base + (1 - base) * lf) + " failed: " + e.what()};
+                    "the remesh at load factor " + four_digits(base + (1 - base) * lf) + " failed: " + e.what()};
       }
     add_segment(out, std::move(r), current, remeshes, base);
     if (!next) break;
     record.increment = static_cast<int>(out.increments.size());
     record.load_factor = base + (1 - base) * lf;
     out.remeshes.push_back(record);
-    told->on_stage("remesh " + std::to_string(remeshes + 1) + " at load factor " + fmt(record.load_factor) +
+    told->on_stage("remesh " + std::to_string(remeshes + 1) + " at load factor " + four_digits(record.load_factor) +
                    ": body '" + record.body + "', element " + std::to_string(record.element) +
-                   " at corner Jacobian ratio " + fmt(record.quality) +
-                   (record.nodes_kept.empty()
-                        ? " (worst corner sine " + fmt(record.shape_before) + " -> " + fmt(record.shape_after) + ")"
-                        : "; its nodes kept: " + record.nodes_kept));
+                   " at corner Jacobian ratio " + four_digits(record.quality) +
+                   (record.nodes_kept.empty() ? " (worst corner sine " + four_digits(record.shape_before) + " -> " +
+                                                    four_digits(record.shape_after) + ")"
+                                              : "; its nodes kept: " + record.nodes_kept));
     base = record.load_factor;
     opt.increments = std::max(1, static_cast<int>(std::lround(options.increments * (1 - base))));
     opt.duration = options.duration * (1 - base);

@@ -20,6 +20,29 @@ Tangent6 deviatoric_projector() {
 
 /// s : s of a symmetric tensor in Voigt stress order (tensor shear components).
 double contract(const Voigt6& s) { return s.head<3>().squaredNorm() + 2.0 * s.tail<3>().squaredNorm(); }
+
+/// The finite-strain state's first six slots as the tensor they hold, C_p⁻¹ (stored as C_p⁻¹ − I).
+Eigen::Matrix3d cp_inverse(const double* c) {
+  Eigen::Matrix3d m;
+  m << 1 + c[0], c[3], c[5], c[3], 1 + c[1], c[4], c[5], c[4], 1 + c[2];
+  return m;
+}
+
+/// J_p = 1 / √det C_p⁻¹, or 1 where that is within `unit` of it (plastic flow alone: round-off).
+double plastic_volume_of(const Eigen::Matrix3d& Cp_inv, double unit) {
+  const double jp = 1 / std::sqrt(Cp_inv.determinant());
+  return std::abs(jp - 1) > unit ? jp : 1.0;
+}
+
+/// A symmetric tensor (its symmetric part) into those slots, less the identity.
+void store(const Eigen::Matrix3d& m, double* c) {
+  c[0] = m(0, 0) - 1;
+  c[1] = m(1, 1) - 1;
+  c[2] = m(2, 2) - 1;
+  c[3] = 0.5 * (m(0, 1) + m(1, 0));
+  c[4] = 0.5 * (m(1, 2) + m(2, 1));
+  c[5] = 0.5 * (m(2, 0) + m(0, 2));
+}
 }  // namespace
 
 J2Plasticity::J2Plasticity(const MaterialData& data, double dt)
@@ -94,9 +117,7 @@ void J2Plasticity::update(const Deformation& d, const double* committed, double*
 
 void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committed, double* trial, Voigt6& tau,
                                  FiniteTangent* tangent) const {
-  Eigen::Matrix3d Cp_inv;
-  const double* c = committed;
-  Cp_inv << 1 + c[0], c[3], c[5], c[3], 1 + c[1], c[4], c[5], c[4], 1 + c[2];
+  const Eigen::Matrix3d Cp_inv = cp_inverse(committed);
   Deformation d;
   const Spectrum b = spectrum(F * Cp_inv * F.transpose());  // elastic trial left Cauchy–Green tensor
   d.strain = log_strain(b);
@@ -105,7 +126,7 @@ void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committ
   update(d, log_committed, log_trial, tau, modulus);
   // a reference moved to a configuration under elastic strain (rebase_state) holds a plastic volume J_p ≠ 1: the
   // stress per reference volume is J_p times Hencky's on b_e (J σ = J_p J_e σ)
-  if (const double jp = plastic_volume(committed); jp != 1.0) {
+  if (const double jp = plastic_volume_of(Cp_inv, kUnitVolume); jp != 1.0) {
     tau *= jp;
     modulus *= jp;
   }
@@ -120,32 +141,13 @@ void J2Plasticity::update_finite(const Eigen::Matrix3d& F, const double* committ
   const Eigen::Vector3d dep_principal = (b.vectors.transpose() * dep * b.vectors).diagonal();
   const Eigen::Matrix3d be = compose(b, b.values.cwiseProduct((-2 * dep_principal).array().exp().matrix()));
   const Eigen::Matrix3d Finv = F.inverse();
-  const Eigen::Matrix3d C = Finv * be * Finv.transpose();
-  trial[0] = C(0, 0) - 1;
-  trial[1] = C(1, 1) - 1;
-  trial[2] = C(2, 2) - 1;
-  trial[3] = 0.5 * (C(0, 1) + C(1, 0));
-  trial[4] = 0.5 * (C(1, 2) + C(2, 1));
-  trial[5] = 0.5 * (C(2, 0) + C(0, 2));
+  store(Finv * be * Finv.transpose(), trial);
 }
 
-double J2Plasticity::plastic_volume(const double* c) const {
-  Eigen::Matrix3d Cp_inv;
-  Cp_inv << 1 + c[0], c[3], c[5], c[3], 1 + c[1], c[4], c[5], c[4], 1 + c[2];
-  const double jp = 1 / std::sqrt(Cp_inv.determinant());
-  return std::abs(jp - 1) > kUnitVolume ? jp : 1.0;
-}
+double J2Plasticity::plastic_volume(const double* c) const { return plastic_volume_of(cp_inverse(c), kUnitVolume); }
 
 void J2Plasticity::rebase_state(const Eigen::Matrix3d& F, double* c) const {
-  Eigen::Matrix3d Cp_inv;
-  Cp_inv << 1 + c[0], c[3], c[5], c[3], 1 + c[1], c[4], c[5], c[4], 1 + c[2];
-  const Eigen::Matrix3d be = F * Cp_inv * F.transpose();
-  c[0] = be(0, 0) - 1;
-  c[1] = be(1, 1) - 1;
-  c[2] = be(2, 2) - 1;
-  c[3] = 0.5 * (be(0, 1) + be(1, 0));
-  c[4] = 0.5 * (be(1, 2) + be(2, 1));
-  c[5] = 0.5 * (be(2, 0) + be(0, 2));
+  store(F * cp_inverse(c) * F.transpose(), c);
 }
 
 }  // namespace rollsim
