@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../../common/HeatBlocks.h"
+#include "../../common/RunJson.h"
 #include "analysis/HeatConduction.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
@@ -17,27 +19,13 @@ namespace test_heat_conduction {
 
 using namespace rollsim;
 using json = nlohmann::json;
+using testing_support::heat_block;
+using testing_support::held_at_rest;
+using testing_support::run_json;
 
 namespace {
 json material(const std::string& name, double k, double rho_c, double T) {
   return {{"name", name}, {"E", 2e5}, {"nu", 0.3}, {"conductivity", k}, {"heat_capacity", rho_c}, {"temperature", T}};
-}
-
-json block(const std::string& name, const std::string& mat, int nx, int ny, double lx, double ly, double y0 = 0) {
-  return {{"name", name},
-          {"material", mat},
-          {"mesh", {{"type", "block"}, {"nx", nx}, {"ny", ny}, {"lx", lx}, {"ly", ly}, {"origin", {0.0, y0}}}}};
-}
-
-/// A body held at xmin (x) and ymin (y), nothing else: the mechanics is at rest, the heat is what moves.
-json held(const std::string& body) {
-  return json::array({{{"type", "displacement"}, {"body", body}, {"set", "xmin"}, {"ux", 0.0}},
-                      {{"type", "displacement"}, {"body", body}, {"set", "ymin"}, {"uy", 0.0}}});
-}
-
-Results run(const json& j) {
-  const Project p = parse_project(j.dump(), "heat.json");
-  return run_project(p, build_model(p));
 }
 
 /// One body, cooled by air of `h` on `surfaces`, over `duration` in `steps`.
@@ -49,7 +37,7 @@ json cooling(const json& body, const json& mat, const std::vector<std::string>& 
           {"dimension", 2},
           {"materials", {mat}},
           {"bodies", {body}},
-          {"boundary_conditions", held(body["name"])},
+          {"boundary_conditions", held_at_rest(body["name"])},
           {"heat", {{"ambient_temperature", 20.0}, {"air", air}}},
           {"analysis", {{"increments", steps}, {"duration", duration}}}};
 }
@@ -70,7 +58,7 @@ double erfc_solution(double x, double t, double h) {
 double strip_error(int nx, int steps) {
   const double h = 20;  // kW/(m² K): a roll's contact, h √(α t) / k ≈ 1.7
   const json j =
-      cooling(block("strip", "steel", nx, 1, 40, 1), material("steel", k, rho_c, kT0), {"xmin"}, h, 1.0, steps);
+      cooling(heat_block("strip", "steel", nx, 1, 40, 1), material("steel", k, rho_c, kT0), {"xmin"}, h, 1.0, steps);
   const Project p = parse_project(j.dump(), "heat.json");
   const Model m = build_model(p);
   const Results r = run_project(p, m);
@@ -86,9 +74,9 @@ double strip_error(int nx, int steps) {
 TEST(HeatConduction, ABlockCoolsInAirAsItsLumpedClosedForm) {
   // k large: the block stays uniform (Biot h L / k = 5e-5); T = T_air + (T0 − T_air) exp(−h P t / (ρc A))
   const double h = 0.05, duration = 200, rate = h * 40 / (rho_c * 100);
-  const json j = cooling(block("block", "steel", 4, 4, 10, 10), material("steel", 1e4, rho_c, kT0),
+  const json j = cooling(heat_block("block", "steel", 4, 4, 10, 10), material("steel", 1e4, rho_c, kT0),
                          {"xmin", "xmax", "ymin", "ymax"}, h, duration, 200);
-  const Results r = run(j);
+  const Results r = run_json(j);
   ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
   const Eigen::VectorXd& T = r.bodies[0].nodal_temperature;
   ASSERT_EQ(T.size(), 25);
@@ -99,7 +87,7 @@ TEST(HeatConduction, ABlockCoolsInAirAsItsLumpedClosedForm) {
   const auto error = [&](int steps) {
     json c = j;
     c["analysis"]["increments"] = steps;
-    return std::abs(run(c).bodies[0].nodal_temperature.mean() - exact);
+    return std::abs(run_json(c).bodies[0].nodal_temperature.mean() - exact);
   };
   const double e10 = error(10), e20 = error(20);
   EXPECT_NEAR(std::log2(e10 / e20), 1.0, 0.15) << e10 << " " << e20;
@@ -135,23 +123,24 @@ double column_mean(const Eigen::VectorXd& T) {
 /// Two bodies stacked, the hot one below: `lower` on y ∈ [0, ly], `upper` on [ly, 2 ly], 1 element across x, the
 /// upper pressed down by 1e-3 mm onto the lower through a frictionless pair with conductance `hc`.
 json pressed(int ny, double ly, const json& hot, const json& cold, double hc, double duration, int steps) {
-  json bcs = held("lower");
+  json bcs = held_at_rest("lower");
   bcs.push_back({{"type", "displacement"}, {"body", "upper"}, {"set", "xmin"}, {"ux", 0.0}});
   bcs.push_back({{"type", "displacement"}, {"body", "upper"}, {"set", "ymax"}, {"uy", -1e-3}});
-  return {{"name", "pressed"},
-          {"dimension", 2},
-          {"materials", {hot, cold}},
-          {"bodies", {block("lower", hot["name"], 1, ny, 1, ly), block("upper", cold["name"], 1, ny, 1, ly, ly)}},
-          {"boundary_conditions", bcs},
-          {"contacts",
-           {{{"name", "interface"},
-             {"type", "frictionless"},
-             {"slave_body", "upper"},
-             {"slave_surface", "ymin"},
-             {"master_body", "lower"},
-             {"master_surface", "ymax"},
-             {"conductance", hc}}}},
-          {"analysis", {{"increments", steps}, {"duration", duration}}}};
+  return {
+      {"name", "pressed"},
+      {"dimension", 2},
+      {"materials", {hot, cold}},
+      {"bodies", {heat_block("lower", hot["name"], 1, ny, 1, ly), heat_block("upper", cold["name"], 1, ny, 1, ly, ly)}},
+      {"boundary_conditions", bcs},
+      {"contacts",
+       {{{"name", "interface"},
+         {"type", "frictionless"},
+         {"slave_body", "upper"},
+         {"slave_surface", "ymin"},
+         {"master_body", "lower"},
+         {"master_surface", "ymax"},
+         {"conductance", hc}}}},
+      {"analysis", {{"increments", steps}, {"duration", duration}}}};
 }
 }  // namespace
 
@@ -159,7 +148,7 @@ TEST(HeatConduction, TwoBlocksPressedTogetherExchangeHeatThroughTheirConductance
   // k large, each block uniform: ΔT = ΔT0 exp(−h_c A (1/C1 + 1/C2) t), and C1 T1 + C2 T2 kept (no air)
   const double hc = 0.1, c1 = 4, c2 = 2, duration = 100;
   const Results r =
-      run(pressed(4, 10, material("hot", 1e4, c1, kT0), material("cold", 1e4, c2, kAir), hc, duration, 400));
+      run_json(pressed(4, 10, material("hot", 1e4, c1, kT0), material("cold", 1e4, c2, kAir), hc, duration, 400));
   ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
   const double T1 = column_mean(r.bodies[0].nodal_temperature), T2 = column_mean(r.bodies[1].nodal_temperature);
   const double C1 = c1 * 10, C2 = c2 * 10;  // ρc V, 1 × 10 mm, unit thickness
@@ -171,7 +160,7 @@ TEST(HeatConduction, TwoBlocksPressedTogetherExchangeHeatThroughTheirConductance
 TEST(HeatConduction, TwoBodiesInPerfectContactMeetAtTheirEffusivityWeightedTemperature) {
   // semi-infinite bodies: the interface stays at (e1 T1 + e2 T2) / (e1 + e2), e = √(k ρc) (Carslaw & Jaeger §2.15)
   const json hot = material("hot", k, rho_c, kT0), cold = material("cold", 45, 3.6, kAir);
-  const Results r = run(pressed(80, 20, hot, cold, 1e3, 1.0, 100));
+  const Results r = run_json(pressed(80, 20, hot, cold, 1e3, 1.0, 100));
   ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
   const double e1 = std::sqrt(k * rho_c), e2 = std::sqrt(45 * 3.6), exact = (e1 * kT0 + e2 * kAir) / (e1 + e2);
   // the interface nodes: the lower body's top (nodes 160, 161 of 2 × 81) and the upper body's bottom (0, 1)
@@ -182,7 +171,7 @@ TEST(HeatConduction, TwoBodiesInPerfectContactMeetAtTheirEffusivityWeightedTempe
 }
 
 TEST(HeatConduction, ConductionWithoutTimeIsRefusedAtItsPath) {
-  json j = cooling(block("block", "steel", 2, 2, 10, 10), material("steel", 30, rho_c, kT0), {"xmin"}, 0.05, 1, 1);
+  json j = cooling(heat_block("block", "steel", 2, 2, 10, 10), material("steel", 30, rho_c, kT0), {"xmin"}, 0.05, 1, 1);
   j["analysis"].erase("duration");
   try {
     parse_project(j.dump(), "heat.json");
@@ -192,7 +181,7 @@ TEST(HeatConduction, ConductionWithoutTimeIsRefusedAtItsPath) {
     EXPECT_NE(std::string(e.what()).find("analysis.duration"), std::string::npos) << e.what();
   }
   json no_capacity =
-      cooling(block("block", "steel", 2, 2, 10, 10), material("steel", 30, rho_c, kT0), {"xmin"}, 0.05, 1, 1);
+      cooling(heat_block("block", "steel", 2, 2, 10, 10), material("steel", 30, rho_c, kT0), {"xmin"}, 0.05, 1, 1);
   no_capacity["materials"][0].erase("heat_capacity");
   try {
     build_model(parse_project(no_capacity.dump(), "heat.json"));
@@ -210,7 +199,7 @@ TEST(HeatConduction, ConductionWithoutTimeIsRefusedAtItsPath) {
     EXPECT_NE(std::string(e.what()).find("contacts[0].conductance"), std::string::npos) << e.what();
   }
   json bad_surface =
-      cooling(block("block", "steel", 2, 2, 10, 10), material("steel", 30, rho_c, kT0), {"top"}, 0.05, 1, 1);
+      cooling(heat_block("block", "steel", 2, 2, 10, 10), material("steel", 30, rho_c, kT0), {"top"}, 0.05, 1, 1);
   try {
     build_model(parse_project(bad_surface.dump(), "heat.json"));
     FAIL() << "accepted";

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../../common/HeatBlocks.h"
+#include "../../common/RunJson.h"
 #include "io/Summary.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
@@ -17,26 +19,12 @@ namespace test_heat_conduction_tables {
 
 using namespace rollsim;
 using json = nlohmann::json;
+using testing_support::heat_block;
+using testing_support::held_at_rest;
+using testing_support::run_json;
 
 namespace {
 constexpr double kAir = 20;
-
-json block(const std::string& name, const std::string& mat, int ny, double ly, double y0 = 0, int nx = 1,
-           double lx = 1) {
-  return {{"name", name},
-          {"material", mat},
-          {"mesh", {{"type", "block"}, {"nx", nx}, {"ny", ny}, {"lx", lx}, {"ly", ly}, {"origin", {0.0, y0}}}}};
-}
-
-json held(const std::string& body) {
-  return json::array({{{"type", "displacement"}, {"body", body}, {"set", "xmin"}, {"ux", 0.0}},
-                      {{"type", "displacement"}, {"body", body}, {"set", "ymin"}, {"uy", 0.0}}});
-}
-
-Results run(const json& j) {
-  const Project p = parse_project(j.dump(), "table.json");
-  return run_project(p, build_model(p));
-}
 
 // --- a lumped block whose ρc rises linearly with temperature -------------------------------------------------------
 
@@ -55,8 +43,8 @@ json lumped_block(int steps, const json& table) {
   return {{"name", "lumped"},
           {"dimension", 2},
           {"materials", {steel}},
-          {"bodies", {block("block", "steel", 4, 10, 0, 4, 10)}},
-          {"boundary_conditions", held("block")},
+          {"bodies", {heat_block("block", "steel", 4, 4, 10, 10)}},
+          {"boundary_conditions", held_at_rest("block")},
           {"heat", {{"ambient_temperature", kAir}, {"air", air}}},
           {"analysis", {{"increments", steps}, {"duration", kDuration}}}};
 }
@@ -76,7 +64,7 @@ double lumped_ode(double duration, int steps) {
 }
 
 double block_mean(int steps) {
-  const Results r = run(lumped_block(steps, kRisingCapacity));
+  const Results r = run_json(lumped_block(steps, kRisingCapacity));
   EXPECT_EQ(r.status.status, Status::converged) << r.status.message;
   return r.bodies[0].nodal_temperature.mean();
 }
@@ -121,13 +109,15 @@ json bar_under_reservoir(int ny, double duration, int steps) {
   const json reservoir = {
       {"name", "reservoir"},      {"E", 2e5}, {"nu", 0.3}, {"conductivity", 1e4}, {"heat_capacity", 1e7},
       {"temperature", kReservoir}};
-  json bcs = held("bar");
+  json bcs = held_at_rest("bar");
   bcs.push_back({{"type", "displacement"}, {"body", "reservoir"}, {"set", "xmin"}, {"ux", 0.0}});
   bcs.push_back({{"type", "displacement"}, {"body", "reservoir"}, {"set", "ymax"}, {"uy", -1e-5}});
   return {{"name", "bar"},
           {"dimension", 2},
           {"materials", {bar, reservoir}},
-          {"bodies", {block("bar", "bar", ny, kBarLength), block("reservoir", "reservoir", 1, kBarLength, kBarLength)}},
+          {"bodies",
+           {heat_block("bar", "bar", 1, ny, 1, kBarLength),
+            heat_block("reservoir", "reservoir", 1, 1, 1, kBarLength, kBarLength)}},
           {"boundary_conditions", bcs},
           {"contacts",
            {{{"name", "interface"},

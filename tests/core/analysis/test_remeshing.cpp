@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "../../common/RunJson.h"
 #include "analysis/Remeshing.h"
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
@@ -15,6 +16,7 @@ namespace test_remeshing {
 
 using namespace rollsim;
 using json = nlohmann::json;
+using testing_support::run_json;
 
 namespace {
 json upsetting(int n, double stroke, int increments) {
@@ -31,11 +33,6 @@ json upsetting(int n, double stroke, int increments) {
                     {{"type", "displacement"}, {"body", "block"}, {"set", "ymax"}, {"ux", 0.0}, {"uy", -stroke}}})},
       {"analysis", {{"type", "newton"}, {"increments", increments}}},
       {"solver", {{"mode", "direct"}}}};
-}
-
-Results run(const json& j) {
-  const Project p = parse_project(j.dump(), "test.json");
-  return run_project(p, build_model(p), nullptr);
 }
 
 /// The platen's force (the ymax nodes' reactions, y) of an increment, on the model it was computed on.
@@ -110,9 +107,9 @@ TEST(Remeshing, AfterEveryStepTheSameHeatAsItsOwnMesh) {
                    {{"type", "displacement"}, {"body", "block"}, {"set", "ymax"}, {"uy", -3.0}}});
   j["heat"] = {{"ambient_temperature", 20.0}, {"air", {{{"body", "block"}, {"surface", "xmax"}, {"convection", 0.5}}}}};
   j["analysis"]["duration"] = 1.0;
-  const Results plain = run(j);
+  const Results plain = run_json(j);
   j["analysis"]["remesh_quality"] = 1.0;
-  const Results r = run(j);
+  const Results r = run_json(j);
   ASSERT_EQ(plain.status.status, Status::converged) << plain.status.message;
   ASSERT_EQ(r.status.status, Status::converged) << r.status.message;
   EXPECT_GE(r.remeshes.size(), 5u);
@@ -191,7 +188,7 @@ TEST(Remeshing, ARunNeverGoesOnFromAFoldedShape) {
         {{"type", "displacement"}, {"body", "punch"}, {"set", "ymax"}, {"ux", 0.0}, {"uy", -10.0}}}},
       {"analysis", {{"type", "newton"}, {"increments", 40}, {"remesh_quality", 0.5}}},
       {"solver", {{"mode", "direct"}}}};
-  const Results r = run(j);
+  const Results r = run_json(j);
   ASSERT_EQ(r.status.status, Status::diverged) << r.status.message;
   EXPECT_NE(r.status.message.find("cannot be remeshed: element "), std::string::npos) << r.status.message;
   EXPECT_NE(r.status.message.find("a run cannot go on from a folded shape"), std::string::npos) << r.status.message;
