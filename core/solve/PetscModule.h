@@ -12,7 +12,7 @@
 namespace rollsim {
 
 inline constexpr int kPetscModuleAbi =
-    4;  // 2: SolverOptions holds enums; 3: max_interface_iterations; 4: BlockSystem::interface_tolerance
+    5;  // 2: SolverOptions holds enums; 3: max_interface_iterations; 4: BlockSystem::interface_tolerance; 5: mumps
 inline constexpr const char* kPetscModuleFile = "rollsim_petsc.so";       // beside the executable
 inline constexpr const char* kPetscModuleEnv = "ROLLSIM_PETSC_MODULE";    // overrides where it is
 inline constexpr const char* kPetscModuleEntry = "rollsim_petsc_module";  // its one exported symbol

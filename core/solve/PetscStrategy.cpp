@@ -15,60 +15,17 @@
 #include <stdexcept>
 
 #include "base/Stopwatch.h"
+#include "solve/PetscBordered.h"
 #include "solve/PetscModule.h"
+#include "solve/PetscSupport.h"
 
 namespace rollsim {
 
 namespace {
 
-bool started_here = false;
-
-/// Starts PETSc and MPI once (start_processes of PetscStrategy.h).
-void start_petsc() {
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (up) return;
-  if (static_cast<int>(PetscInitializeNoArguments()) != 0)
-    throw std::invalid_argument("petsc: PetscInitializeNoArguments failed (MPI or PETSc could not start)");
-  started_here = true;
-}
-
-/// This process's MPI rank, 0 before PETSc starts (process_rank).
-int mpi_rank() {
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (!up) return 0;
-  int r = 0;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &r);
-  return r;
-}
-
-/// Ends PETSc and MPI when start_petsc() started them (finish_processes).
-void finish_petsc() {
-  if (started_here) PetscFinalize();
-  started_here = false;
-}
-
-void check(PetscErrorCode code, const char* call) {
-  if (static_cast<int>(code) != 0)
-    throw std::invalid_argument(std::string("petsc: ") + call + " failed (PETSc error " +
-                                std::to_string(static_cast<int>(code)) + ")");
-}
-#define ROLLSIM_PETSC(call) check((call), #call)
-
-/// True on every rank when `ok` holds on every rank: no rank leaves for an error the others did not see.
-bool on_all_ranks(bool ok) {
-  int local = ok ? 1 : 0, global = 0;
-  MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
-  return global == 1;
-}
-
-/// Throws on every rank when any rank has a message (an MPI_Allreduce of the error flag first).
-void refuse_together(const std::string& message) {
-  if (on_all_ranks(message.empty())) return;
-  throw std::invalid_argument(message.empty() ? "petsc: another MPI rank refused the problem (see its message)"
-                                              : message);
-}
+using petsc::on_all_ranks;
+using petsc::refuse_together;
+using petsc::unused_options;
 
 /// The global dof numbers of every group's free dofs (see the file comment) and this rank's owned range.
 struct Numbering {
@@ -214,21 +171,6 @@ Eigen::VectorXd glue_forces(const BlockSystem& sys, const std::vector<Eigen::Vec
   return cg.solve(rhs);
 }
 
-/// The options nobody asked PETSc for (misspelt, or meant for the other method): what --petsc-options must not hold.
-std::string unused_options() {
-  PetscInt n = 0;
-  char **names = nullptr, **values = nullptr;
-  ROLLSIM_PETSC(PetscOptionsLeftGet(nullptr, &n, &names, &values));
-  std::string left;
-  for (PetscInt i = 0; i < n; ++i) {
-    const std::string name = names[i][0] == '-' ? names[i] + 1 : names[i];
-    if (name == "log_view" || name == "options_left") continue;  // read at PetscFinalize
-    left += (left.empty() ? "-" : ", -") + name;
-  }
-  ROLLSIM_PETSC(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
-  return left;
-}
-
 class PetscStrategy final : public SolverStrategy {
  public:
   explicit PetscStrategy(SolverOptions options) : options_(std::move(options)) {}  // the loader checked the method
@@ -242,15 +184,16 @@ class PetscStrategy final : public SolverStrategy {
   double multiplier_tolerance() const override { return rtol_; }
   const SolverOptions& options() const override { return options_; }
   std::vector<size_t> local_groups(std::vector<size_t> groups) const override {
-    start_petsc();
+    petsc::start();
     std::vector<size_t> mine;
     for (size_t g : groups)
-      if (g == static_cast<size_t>(mpi_rank())) mine.push_back(g);
+      if (g == static_cast<size_t>(petsc::rank())) mine.push_back(g);
     return mine;
   }
   std::string contact_refusal() const override {
-    return "solver 'petsc' does not yet support contact pairs (tied, frictionless or frictional): it solves "
-           "contact-free projects, linear or nonlinear (Newton) — use feti, mixed or direct for this one";
+    return "solver 'petsc' with --petsc-method " + word(options_.petsc_method) +
+           " solves contact-free projects only: --petsc-method mumps solves contact pairs (tied, frictionless or "
+           "frictional) — or use feti, mixed or direct";
   }
 
  private:
@@ -290,9 +233,8 @@ std::string PetscStrategy::check_system(const BlockSystem& sys) const {
   if (sys.num_multipliers() != glue_rows)
     return "petsc: contact constraints are not yet supported by --solver petsc (" +
            std::to_string(sys.num_multipliers() - glue_rows) +
-           " contact rows): use feti, mixed or direct for contact projects";
-  int ranks = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+           " contact rows): --petsc-method mumps solves them (or use feti, mixed or direct)";
+  const int ranks = petsc::ranks();
   const size_t G = sys.groups.size();
   if (G != static_cast<size_t>(ranks))
     return "petsc: one MPI rank per subdomain: the problem has " + std::to_string(G) + " subdomain" +
@@ -303,7 +245,7 @@ std::string PetscStrategy::check_system(const BlockSystem& sys) const {
   for (const Group& g : sys.groups)
     if (g.geometry.x.rows() != g.C.cols() || g.geometry.modes.rows() != g.C.cols())
       return "petsc: group '" + g.name + "' has no dof geometry (coordinates, rigid modes) to hand to PETSc";
-  const Group& own = sys.groups[static_cast<size_t>(mpi_rank())];
+  const Group& own = sys.groups[static_cast<size_t>(petsc::rank())];
   if (own.K.rows() != own.C.cols()) return "petsc: the stiffness of group '" + own.name + "' was not assembled";
   return "";
 }
@@ -311,7 +253,7 @@ std::string PetscStrategy::check_system(const BlockSystem& sys) const {
 void PetscStrategy::set_up(const BlockSystem& sys) {
   release();
   const MPI_Comm comm = PETSC_COMM_WORLD;
-  const size_t rank = static_cast<size_t>(mpi_rank());
+  const size_t rank = static_cast<size_t>(petsc::rank());
   const Group& own = sys.groups[rank];
   const int dim = static_cast<int>(own.geometry.x.cols());
   num_ = number_dofs(sys, dim);
@@ -413,10 +355,10 @@ void PetscStrategy::set_tolerance(const BlockSystem& sys) {
 }
 
 BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* observer) {
-  start_petsc();
+  petsc::start();
   ++stats_.solves;
   refuse_together(check_system(sys));
-  const size_t rank = static_cast<size_t>(mpi_rank());
+  const size_t rank = static_cast<size_t>(petsc::rank());
   const Group& own = sys.groups[rank];
   if (!options_checked_ && !options_.petsc_options.empty())
     ROLLSIM_PETSC(PetscOptionsInsertString(nullptr, options_.petsc_options.c_str()));
@@ -453,21 +395,12 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
     }
   }
   // every rank gets the whole solution: the driver recovers every body from the groups' displacements
-  VecScatter all = nullptr;
-  Vec xall = nullptr;
-  ROLLSIM_PETSC(VecScatterCreateToAll(x, &all, &xall));
-  ROLLSIM_PETSC(VecScatterBegin(all, x, xall, INSERT_VALUES, SCATTER_FORWARD));
-  ROLLSIM_PETSC(VecScatterEnd(all, x, xall, INSERT_VALUES, SCATTER_FORWARD));
-  const PetscScalar* a = nullptr;
-  ROLLSIM_PETSC(VecGetArrayRead(xall, &a));
+  const Eigen::VectorXd all = petsc::on_every_rank(x);
   BlockSolution sol;
   for (size_t g = 0; g < sys.groups.size(); ++g) {
     Eigen::VectorXd& u = sol.u.emplace_back(static_cast<long>(num_.global[g].size()));
-    for (size_t l = 0; l < num_.global[g].size(); ++l) u[static_cast<long>(l)] = a[num_.global[g][l]];
+    for (size_t l = 0; l < num_.global[g].size(); ++l) u[static_cast<long>(l)] = all[num_.global[g][l]];
   }
-  ROLLSIM_PETSC(VecRestoreArrayRead(xall, &a));
-  VecScatterDestroy(&all);
-  VecDestroy(&xall);
   VecDestroy(&x);
   VecDestroy(&b);
   sol.lambda = glue_forces(sys, gather_groups(sys, own.f - own.K * sol.u[rank]));
@@ -486,14 +419,17 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   return sol;
 }
 
-std::unique_ptr<SolverStrategy> make(const SolverOptions& options) { return std::make_unique<PetscStrategy>(options); }
+std::unique_ptr<SolverStrategy> make(const SolverOptions& options) {
+  if (options.petsc_method == PetscMethod::Mumps) return make_petsc_bordered(options);
+  return std::make_unique<PetscStrategy>(options);
+}
 
 }  // namespace
 
 }  // namespace rollsim
 
 extern "C" __attribute__((visibility("default"))) const rollsim::PetscModule* rollsim_petsc_module() {
-  static const rollsim::PetscModule module{rollsim::kPetscModuleAbi, &rollsim::make, &rollsim::start_petsc,
-                                           &rollsim::mpi_rank, &rollsim::finish_petsc};
+  static const rollsim::PetscModule module{rollsim::kPetscModuleAbi, &rollsim::make, &rollsim::petsc::start,
+                                           &rollsim::petsc::rank, &rollsim::petsc::finish};
   return &module;
 }

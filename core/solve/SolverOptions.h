@@ -18,7 +18,7 @@ enum class GlueMultipliers { NonRedundant, Redundant };   // feti's subdomain gl
 enum class ProjectorMetric { Identity, Preconditioner };  // Q of the rigid-mode projector: I (the paper's) or M⁻¹
 enum class InterfaceStart { Zero, Previous };             // where a Newton iteration's interface Krylov solve starts
 enum class InterfaceSolver { Krylov, Dense };             // projected CG / GMRES, or F formed and factored
-enum class PetscMethod { Bddc, FetiDp };                  // PCBDDC in CG, or KSPFETIDP
+enum class PetscMethod { Bddc, FetiDp, Mumps };           // PCBDDC in CG, KSPFETIDP, or MUMPS on eq. (1) whole
 
 template <>
 inline const std::vector<std::string>& words<Preconditioner>() {
@@ -47,7 +47,7 @@ inline const std::vector<std::string>& words<InterfaceSolver>() {
 }
 template <>
 inline const std::vector<std::string>& words<PetscMethod>() {
-  static const std::vector<std::string> w{"bddc", "fetidp"};
+  static const std::vector<std::string> w{"bddc", "fetidp", "mumps"};
   return w;
 }
 
@@ -105,8 +105,10 @@ inline const std::vector<BoundField<SolverOptions>>& solver_option_fields() {
            &S::interface_solver),
       bind(flag(str("petsc_method",
                     "method of `petsc`: bddc (PCBDDC preconditioning CG on the whole problem) or fetidp (KSPFETIDP: "
-                    "CG on the FETI-DP multipliers, the inner BDDC's coarse space); run as mpirun -n P with one "
-                    "subdomain per rank"),
+                    "CG on the FETI-DP multipliers, the inner BDDC's coarse space), contact-free, run as mpirun -n P "
+                    "with one subdomain per rank; or mumps (paper eq. (1) whole — stiffness, contact and glue rows — "
+                    "as one distributed matrix factored by MUMPS's LU: contact of every kind, any number of ranks, "
+                    "each assembling the tangents of its share of the groups)"),
                 "petsc-method"),
            &S::petsc_method),
       bind(

@@ -25,8 +25,9 @@ const std::vector<StrategyInfo>& solver_registry() {
        "contact multipliers with an optional lumped / Dirichlet preconditioner",
        [](const SolverOptions& o) { return std::make_unique<MixedStrategy>(o, true); }},
       {"petsc",
-       "PETSc (optional build): the subdomains as an unassembled MATIS matrix, one per MPI rank (mpirun -n P), solved "
-       "by PCBDDC in CG or KSPFETIDP (--petsc-method); contact-free projects, linear or Newton",
+       "PETSc (optional build) over MPI (mpirun -n P), linear or Newton: the subdomains as an unassembled MATIS "
+       "matrix, one per rank, solved by PCBDDC in CG or KSPFETIDP (contact-free), or paper eq. (1) whole — contact "
+       "of every kind — factored by MUMPS on any number of ranks (--petsc-method)",
        [](const SolverOptions& o) { return make_petsc_strategy(o); }},
   };
   return registry;

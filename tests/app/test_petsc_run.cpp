@@ -1,11 +1,12 @@
 // Solver `petsc` through the real binary: under `mpirun -n 4` (one subdomain per rank) PCBDDC and KSPFETIDP give
 // the displacements of `direct` on a 2D and a 3D cantilever; inside the Newton driver, a J2-plastic cantilever on 1,
 // 2 and 4 ranks takes `direct`'s Newton iterations per increment (±1) to its displacements and reactions, and a load
-// beyond the limit ends `diverged` on every rank; bad input — an option PETSc does not use, a rank count that is not
-// the partition's, no mpirun (linear and Newton projects alike), contact, an unknown method — exits 2 on every rank
-// with a message. PETSc is a module the binary loads when `petsc` is chosen: other commands and modes never map it, and
-// a module that cannot be loaded exits 2 naming the file, on every rank. Without PETSc in the build, `--solver petsc`
-// exits 2 saying how to build it.
+// beyond the limit ends `diverged` on every rank; MUMPS on the whole bordered system rolls a sticking pass on 1, 2
+// and 3 ranks and a Coulomb pass on a partitioned slab as `direct` does, and solves a tied pair; bad input — an
+// option PETSc does not use, a rank count that is not the partition's, no mpirun (linear and Newton projects alike),
+// contact under bddc / fetidp, an unknown method — exits 2 on every rank with a message. PETSc is a module the binary
+// loads when `petsc` is chosen: other commands and modes never map it, and a module that cannot be loaded exits 2
+// naming the file, on every rank. Without PETSc in the build, `--solver petsc` exits 2 saying how to build it.
 #include <gtest/gtest.h>
 #include <stdlib.h>
 #include <vtkDataArray.h>
@@ -188,6 +189,26 @@ TEST(PetscRun, NewtonBeyondTheLimitLoadEndsDivergedOnEveryRank) {
   EXPECT_EQ(message.find("nan"), std::string::npos) << message;
 }
 
+// The same load under mumps: LU with pivoting factors the lost tangent, Newton's residual grows, the steps are cut
+// back until none is left — `diverged` naming the increment on every rank, no NaN, exit 4.
+TEST(PetscRun, MumpsBeyondTheLimitLoadEndsDivergedOnEveryRank) {
+  const std::string dir = make_temp_dir("petsc-mumps-diverged");
+  const std::string file = plastic_cantilever(dir, [](json& j) {
+    j["materials"][0]["hardening_modulus"] = 0.0;
+    j["boundary_conditions"][1] = {{"type", "pressure"}, {"body", "beam"}, {"surface", "xmax"}, {"value", 2000.0}};
+    j["analysis"]["max_cutbacks"] = 1;
+  });
+  const auto r = mpirun(3, {"run", file, "--solver", "petsc", "--petsc-method", "mumps", "--out", dir + "/out"});
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  const json s = summary(dir + "/out");
+  EXPECT_EQ(s["status"], "diverged");
+  const std::string message = s["message"].get<std::string>();
+  EXPECT_NE(message.find("increment 2"), std::string::npos) << message;
+  EXPECT_NE(message.find("1 cut-backs"), std::string::npos) << message;
+  EXPECT_EQ(message.find("nan"), std::string::npos) << message;
+}
+
 /// `mpirun -n ranks rollsim run` (a small 2D cantilever in 2×2; `newton`: the small plastic one) with `extra`
 /// arguments exits 2 on every rank (no rank left hanging) with `message`.
 void expect_refused_by_every_rank(int ranks, const std::vector<std::string>& extra, const std::string& message,
@@ -224,9 +245,9 @@ TEST(PetscRun, WithoutMpirunAPartitionOfFourIsRefused) {
   }
 }
 
-// Contact pairs of every kind are refused before anything is solved, in the linear and the Newton analysis alike,
-// naming the pair and its kind.
-TEST(PetscRun, ContactIsNotYetSupported) {
+// Under bddc and fetidp contact pairs of every kind are refused before anything is solved, in the linear and the
+// Newton analysis alike, naming the pair, its kind and the method that solves them.
+TEST(PetscRun, BddcAndFetiDpRefuseContactNamingMumps) {
   const std::string dir = make_temp_dir("petsc-unsupported");
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"block-indent-2d-50x30.json", "is tied"},           // linear
@@ -236,10 +257,92 @@ TEST(PetscRun, ContactIsNotYetSupported) {
   for (const auto& [sample, kind] : cases) {
     const auto r = run_rollsim({"run", ROLLSIM_SOURCE_DIR "/samples/" + sample, "--solver", "petsc", "--out", dir});
     EXPECT_EQ(r.exit_code, 2) << sample << "\n" << r.err;
-    EXPECT_NE(r.err.find("solver 'petsc' does not yet support contact pairs"), std::string::npos) << sample << "\n"
-                                                                                                  << r.err;
+    EXPECT_NE(r.err.find("solves contact-free projects only: --petsc-method mumps solves contact pairs"),
+              std::string::npos)
+        << sample << "\n"
+        << r.err;
     EXPECT_NE(r.err.find(kind), std::string::npos) << sample << "\n" << r.err;
   }
+}
+
+/// Every number of a rolling.csv after its header (travel, force, torque, … of every increment), in order.
+std::vector<double> rolling_csv(const std::string& dir) {
+  std::vector<double> values;
+  const std::string text = read_text(dir + "/rolling.csv");
+  std::string cell;
+  bool header = true;
+  for (const char c : text + "\n") {
+    if (c == ',' || c == '\n') {
+      if (!header && !cell.empty()) values.push_back(std::stod(cell));
+      if (c == '\n') header = false;
+      cell.clear();
+    } else {
+      cell += c;
+    }
+  }
+  return values;
+}
+
+/// A rolling pass under `direct` and under mumps on each of `ranks`: every rank count gives direct's Newton
+/// iterations, status and rolling.csv (force, torque, contact length, … of every increment) to `tolerance`.
+void expect_rolls_as_direct(const std::string& dir, const std::string& project, const std::vector<int>& ranks,
+                            double tolerance) {
+  const auto direct = run_rollsim({"run", project, "--solver", "direct", "--out", dir + "/direct", "--quiet"});
+  ASSERT_EQ(direct.exit_code, 0) << direct.err;
+  const json d = summary(dir + "/direct");
+  const std::vector<double> expected = rolling_csv(dir + "/direct");
+  ASSERT_GT(expected.size(), 20u);
+  for (int n : ranks) {
+    const std::string out = dir + "/mumps" + std::to_string(n);
+    const auto r = mpirun(n, {"run", project, "--solver", "petsc", "--petsc-method", "mumps", "--out", out, "--quiet"});
+    ASSERT_EQ(r.exit_code, 0) << n << " ranks\n" << r.err;
+    const json s = summary(out);
+    EXPECT_EQ(s["status"], d["status"]) << n;
+    EXPECT_EQ(s["solver"]["newton_iterations"], d["solver"]["newton_iterations"]) << n;
+    EXPECT_GT(s["results"]["rolling"]["roll_force"].get<double>(), 1000.0) << n;  // the slab is being rolled
+    EXPECT_LT(relative_difference(expected, rolling_csv(out)), tolerance) << n << " ranks";
+  }
+}
+
+// MUMPS on the whole bordered system: a sticking rolling pass (two groups, slab and roll) on 1, 2 and 3 ranks — the
+// third rank assembles no group, only factors — takes direct's iterations to direct's forces.
+TEST(PetscRun, MumpsRollsASticking2DPassAsDirectOnOneTwoAndThreeRanks) {
+  const std::string dir = make_temp_dir("petsc-mumps-rolling");
+  const std::string file = dir + "/pass.json";
+  json j = json::parse(read_text(ROLLSIM_SOURCE_DIR "/samples/rolling-2d-36x6.json"));
+  j["process"]["travel"] = 6;
+  write_text(file, j.dump(2));
+  expect_rolls_as_direct(dir, file, {1, 2, 3}, 1e-9);
+}
+
+// Coulomb friction (an unsymmetric bordered matrix where points slip) on a slab torn into four subdomains (glue rows
+// beside the contact rows, five groups over three ranks).
+TEST(PetscRun, MumpsRollsACoulombPassOnAPartitionedSlabAsDirect) {
+  const std::string dir = make_temp_dir("petsc-mumps-coulomb");
+  const std::string file = dir + "/pass.json";
+  json j = json::parse(read_text(ROLLSIM_SOURCE_DIR "/samples/rolling-2d-72x12-dd.json"));
+  j["process"]["slab_nx"] = 36;
+  j["process"]["slab_nt"] = 6;
+  j["process"]["roll_n_around"] = 60;
+  j["process"]["travel"] = 3;
+  j["process"]["travel_increment"] = 0.5;
+  j["process"]["friction"] = "coulomb";
+  j["process"]["friction_coefficient"] = 0.35;
+  write_text(file, j.dump(2));
+  expect_rolls_as_direct(dir, file, {3}, 1e-8);
+}
+
+// A linear analysis with a tied pair: the displacements of direct.
+TEST(PetscRun, MumpsSolvesALinearTiedContactAsDirect) {
+  const std::string dir = make_temp_dir("petsc-mumps-tied");
+  const std::string file = ROLLSIM_SOURCE_DIR "/samples/block-indent-2d-50x30.json";
+  const auto direct = run_rollsim({"run", file, "--solver", "direct", "--out", dir + "/direct", "--quiet"});
+  ASSERT_EQ(direct.exit_code, 0) << direct.err;
+  const auto r =
+      mpirun(2, {"run", file, "--solver", "petsc", "--petsc-method", "mumps", "--out", dir + "/mumps", "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_LT(relative_difference(displacements(dir + "/direct/result.vtu"), displacements(dir + "/mumps/result.vtu")),
+            1e-10);
 }
 
 /// Sets an environment variable for the processes spawned in its scope (unset again after).
@@ -296,7 +399,7 @@ TEST(PetscRun, RefusesAnUnknownMethod) {
   const auto r = run_rollsim(
       {"run", ROLLSIM_SOURCE_DIR "/samples/plate-hole-2d.json", "--solver", "petsc", "--petsc-method", "gamg"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("--petsc-method: must be one of bddc, fetidp, got \"gamg\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--petsc-method: must be one of bddc, fetidp, mumps, got \"gamg\""), std::string::npos) << r.err;
 }
 #else
 TEST(PetscRun, ABuildWithoutPetscRefusesTheStrategy) {
