@@ -12,23 +12,106 @@
 
 namespace rollsim {
 
-MixedStrategy::MixedStrategy(SolverOptions options, bool subdomains, std::string factorization)
+MixedStrategy::MixedStrategy(SolverOptions options, bool subdomains, std::string factorization,
+                             std::shared_ptr<const GroupDistribution> spread)
     : options_(std::move(options)),
       subdomains_(subdomains),
+      spread_(std::move(spread)),
       preconditioner_(subdomains ? make_interface_preconditioner(options_.preconditioner, options_.threads) : nullptr),
-      kind_(std::move(factorization)) {}
+      kind_(std::move(factorization)) {
+  if (spread_ && (preconditioner_ || options_.interface_solver == InterfaceSolver::Dense))
+    throw std::invalid_argument(
+        "the mixed method over MPI (petsc_method: mixed) solves its interface by projected CG / GMRES without a "
+        "preconditioner: solver.preconditioner must be none and solver.interface_solver krylov");
+}
+
+std::vector<size_t> MixedStrategy::local_groups(std::vector<size_t> groups) const {
+  std::vector<size_t> mine;
+  for (size_t g : groups)
+    if (held(g)) mine.push_back(g);
+  return mine;
+}
+
+void MixedStrategy::share_kernels(const BlockSystem& sys) {
+  const size_t n = sys.groups.size();
+  Eigen::VectorXd cols = Eigen::VectorXd::Zero(static_cast<long>(n));
+  for (size_t g = 0; g < n; ++g)
+    if (held(g)) cols[static_cast<long>(g)] = static_cast<double>(sys.groups[g].R.cols());
+  sum(cols);
+  std::vector<long> offset(n + 1, 0);
+  for (size_t g = 0; g < n; ++g)
+    offset[g + 1] = offset[g] + sys.groups[g].C.cols() * static_cast<long>(cols[static_cast<long>(g)]);
+  Eigen::VectorXd all = Eigen::VectorXd::Zero(offset[n]);
+  for (size_t g = 0; g < n; ++g)
+    if (held(g)) all.segment(offset[g], offset[g + 1] - offset[g]) = sys.groups[g].R.reshaped();
+  sum(all);
+  kernels_.resize(n);
+  for (size_t g = 0; g < n; ++g)
+    kernels_[g] = all.segment(offset[g], offset[g + 1] - offset[g])
+                      .reshaped(sys.groups[g].C.cols(), static_cast<long>(cols[static_cast<long>(g)]));
+}
+
+void MixedStrategy::share_displacements(std::vector<Eigen::VectorXd>& u) const {
+  if (!spread_) return;
+  long size = 0;
+  for (const Eigen::VectorXd& x : u) size += x.size();
+  Eigen::VectorXd all(size);
+  long at = 0;
+  for (const Eigen::VectorXd& x : u) {
+    all.segment(at, x.size()) = x;
+    at += x.size();
+  }
+  sum(all);
+  at = 0;
+  for (Eigen::VectorXd& x : u) {
+    x = all.segment(at, x.size());
+    at += x.size();
+  }
+}
 
 Eigen::VectorXd MixedStrategy::sum_over_groups(const BlockSystem& sys,
                                                const std::function<Eigen::VectorXd(size_t)>& op) const {
   const size_t n = sys.groups.size();
   std::vector<Eigen::VectorXd> parts(n);
   for_each_group(n, options_.threads, [&](size_t g) {
-    if (sys.groups[g].C.nonZeros()) parts[g] = op(g);
+    if (sys.groups[g].C.nonZeros() && held(g)) parts[g] = op(g);
   });
   Eigen::VectorXd y = Eigen::VectorXd::Zero(sys.num_multipliers());
   for (size_t g = 0; g < n; ++g)
     if (parts[g].size()) y += sys.groups[g].C * parts[g];
+  sum(y);
   return y;
+}
+
+void MixedStrategy::throw_first_failure(const std::vector<SingularMatrix>& failed) const {
+  const auto first = [&]() -> long {
+    for (size_t g = 0; g < failed.size(); ++g)
+      if (held(g) && *failed[g].what()) return static_cast<long>(g);
+    return -1;
+  };
+  if (!spread_) {
+    if (const long g = first(); g >= 0) throw failed[static_cast<size_t>(g)];
+    return;
+  }
+  // spread: every process throws together — the lowest failed group's message and column, from its holder
+  Eigen::VectorXd flags = Eigen::VectorXd::Zero(static_cast<long>(failed.size()));
+  for (size_t g = 0; g < failed.size(); ++g) flags[static_cast<long>(g)] = held(g) && *failed[g].what() ? 1 : 0;
+  sum(flags);
+  long g = 0;
+  while (g < flags.size() && flags[g] == 0) ++g;
+  if (g == flags.size()) return;
+  constexpr long kLength = 400;
+  Eigen::VectorXd text = Eigen::VectorXd::Zero(kLength + 1);
+  if (held(static_cast<size_t>(g))) {
+    const std::string what = failed[static_cast<size_t>(g)].what();
+    for (long i = 0; i < std::min<long>(kLength, static_cast<long>(what.size())); ++i)
+      text[i] = static_cast<unsigned char>(what[static_cast<size_t>(i)]);
+    text[kLength] = failed[static_cast<size_t>(g)].column;
+  }
+  sum(text);
+  std::string what;
+  for (long i = 0; i < kLength && text[i] != 0; ++i) what += static_cast<char>(text[i]);
+  throw SingularMatrix(what, static_cast<int>(text[kLength]));
 }
 
 void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* observer) {
@@ -38,28 +121,35 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
     flexibility_.assign(sys.groups.size(), InterfaceFlexibility());
     factored_version_.assign(sys.groups.size(), -1);
   }
-  std::vector<size_t> todo;
+  std::vector<size_t> todo, changed;  // spread: every process counts every group's refactorization, does its own
   for (size_t g = 0; g < sys.groups.size(); ++g)
-    if (factored_version_[g] != sys.groups[g].version) todo.push_back(g);
+    if (factored_version_[g] != sys.groups[g].version) {
+      changed.push_back(g);
+      if (held(g)) todo.push_back(g);
+    }
   // independent groups are factored concurrently (BLAS on one thread: see solve()); a failure (e.g. a subdomain
   // that is not positive definite) is rethrown here instead of terminating the process from a worker thread
+  std::vector<SingularMatrix> failed(sys.groups.size(), SingularMatrix("", -1));
   for_each_group(todo.size(), options_.threads, [&](size_t i) {
     try {
       groups_[todo[i]].factorize(sys.groups[todo[i]]);
     } catch (const SingularMatrix& e) {  // the column in the groups' stacked numbering, as the global strategies
       long offset = 0;
-      for (size_t g = 0; g < todo[i]; ++g) offset += sys.groups[g].K.rows();
-      throw SingularMatrix(e.what(), e.column < 0 ? -1 : static_cast<int>(offset + e.column));
+      for (size_t g = 0; g < todo[i]; ++g) offset += sys.groups[g].C.cols();
+      failed[todo[i]] = SingularMatrix(e.what(), e.column < 0 ? -1 : static_cast<int>(offset + e.column));
     }
   });
-  for (size_t g : todo) {
+  throw_first_failure(failed);
+  for (size_t g : changed) {
     factored_version_[g] = sys.groups[g].version;
     ++stats_.factorizations[sys.groups[g].name];
     if (observer) observer->on_factorization(sys.groups[g].name);
   }
   stats_.analyze_s = stats_.factorize_s = stats_.factor_flops_total = 0;
   stats_.factor.flops = stats_.factor.nnz_factor = 0;  // one factorization of every group: what one global factor
-  for (const GroupSolver& gs : groups_) {              // would report
+  for (size_t g = 0; g < groups_.size(); ++g) {        // would report (spread: of this process's groups)
+    if (!held(g)) continue;
+    const GroupSolver& gs = groups_[g];
     stats_.analyze_s += gs.stats().analyze_s;
     stats_.factorize_s += gs.stats().factorize_s;
     stats_.factor_flops_total += gs.stats().flops_total();
@@ -71,8 +161,10 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
 InterfaceProblem MixedStrategy::interface_problem(const BlockSystem& sys, const std::vector<Eigen::VectorXd>& Kf) {
   InterfaceProblem p;
   const long m = sys.num_multipliers();
-  p.b = -sys.d;
-  p.e.resize(sys.num_rigid_modes());
+  p.b = spread_ ? Eigen::VectorXd(Eigen::VectorXd::Zero(m)) : Eigen::VectorXd(-sys.d);  // − d after the sum, spread
+  long modes = 0;
+  for (size_t g = 0; g < sys.groups.size(); ++g) modes += kernel(sys, g).cols();
+  p.e = Eigen::VectorXd::Zero(modes);
   // G = [C_g R_g], sparse: group g's modes touch only its own constraint rows; G̃ = [C_eq,g R_g] when a group's
   // equations take C_eq (slipping Coulomb friction: an unsymmetric problem)
   std::vector<Eigen::Triplet<double, int>> t, tt;
@@ -80,17 +172,23 @@ InterfaceProblem MixedStrategy::interface_problem(const BlockSystem& sys, const 
   int col = 0;
   for (size_t g = 0; g < sys.groups.size(); ++g) {
     const Group& grp = sys.groups[g];
-    p.b += grp.C * Kf[g];  // paper eq. (2)/(8): b = Σ C_g K_g⁺ f_g − d
+    const Eigen::MatrixXd& R_g = kernel(sys, g);
+    if (held(g)) p.b += grp.C * Kf[g];  // paper eq. (2)/(8): b = Σ C_g K_g⁺ f_g − d
     unsymmetric = unsymmetric || grp.C_eq.rows() > 0;
-    if (grp.R.cols() == 0) continue;
-    const SparseMatrix R = grp.R.sparseView();
+    if (R_g.cols() == 0) continue;
+    const SparseMatrix R = R_g.sparseView();
     const SparseMatrix CR = grp.C * R, CeqR = grp.equation_C() * R;
     for (int j = 0; j < CR.outerSize(); ++j) {
       for (SparseMatrix::InnerIterator it(CR, j); it; ++it) t.emplace_back(it.row(), col + j, it.value());
       for (SparseMatrix::InnerIterator it(CeqR, j); it; ++it) tt.emplace_back(it.row(), col + j, it.value());
     }
-    p.e.segment(col, grp.R.cols()) = grp.R.transpose() * grp.f;  // e = [R_gᵀ f_g]
-    col += static_cast<int>(grp.R.cols());
+    if (held(g)) p.e.segment(col, R_g.cols()) = R_g.transpose() * grp.f;  // e = [R_gᵀ f_g]
+    col += static_cast<int>(R_g.cols());
+  }
+  if (spread_) {
+    sum(p.b);
+    sum(p.e);
+    p.b -= sys.d;
   }
   p.Gs.resize(static_cast<int>(m), col);
   p.Gs.setFromTriplets(t.begin(), t.end());
@@ -120,7 +218,11 @@ const SparseMatrix& MixedStrategy::weighted_modes(const BlockSystem& sys, const 
 }
 
 bool MixedStrategy::any_indefinite() const {
-  return std::any_of(groups_.begin(), groups_.end(), [](const GroupSolver& g) { return g.indefinite(); });
+  Eigen::VectorXd count = Eigen::VectorXd::Zero(1);
+  for (size_t g = 0; g < groups_.size(); ++g)
+    if (held(g) && groups_[g].indefinite()) count[0] += 1;
+  sum(count);
+  return count[0] > 0;
 }
 
 bool MixedStrategy::same_constraints(const BlockSystem& sys, const std::vector<SparseMatrix>& C) {
@@ -235,8 +337,11 @@ BlockSolution MixedStrategy::solve_plain(const BlockSystem& sys, AnalysisObserve
     preconditioned_C_.clear();
     for (const Group& g : sys.groups) preconditioned_C_.push_back(g.C);
   }
+  if (spread_) share_kernels(sys);
   std::vector<Eigen::VectorXd> Kf(sys.groups.size());
-  for_each_group(sys.groups.size(), options_.threads, [&](size_t g) { Kf[g] = groups_[g].apply(sys.groups[g].f); });
+  for_each_group(sys.groups.size(), options_.threads, [&](size_t g) {
+    if (held(g)) Kf[g] = groups_[g].apply(sys.groups[g].f);
+  });
   InterfaceProblem problem = interface_problem(sys, Kf);
   last_ = solve_interface(sys, problem, new_preconditioner, solve, observer);
   stats_.cg_iterations += last_.iterations;
@@ -254,14 +359,20 @@ BlockSolution MixedStrategy::solve_plain(const BlockSystem& sys, AnalysisObserve
     out.status = {Status::not_converged, Reason::breakdown, what};
   }
   std::vector<long> first_mode(sys.groups.size(), 0);  // column of group g's modes in α
-  for (size_t g = 1; g < sys.groups.size(); ++g) first_mode[g] = first_mode[g - 1] + sys.groups[g - 1].R.cols();
+  for (size_t g = 1; g < sys.groups.size(); ++g) first_mode[g] = first_mode[g - 1] + kernel(sys, g - 1).cols();
   out.u.resize(sys.groups.size());
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) {
     const Group& grp = sys.groups[g];
+    if (!held(g)) {
+      out.u[g] = Eigen::VectorXd::Zero(grp.C.cols());  // its holder's, from share_displacements
+      return;
+    }
     Eigen::VectorXd u = grp.C.nonZeros() ? groups_[g].apply(grp.f - grp.equation_C().transpose() * out.lambda) : Kf[g];
-    if (grp.R.cols()) u += grp.R * last_.alpha.segment(first_mode[g], grp.R.cols());  // paper eq. (5)
+    const Eigen::MatrixXd& R = kernel(sys, g);
+    if (R.cols()) u += R * last_.alpha.segment(first_mode[g], R.cols());  // paper eq. (5)
     out.u[g] = std::move(u);
   });
+  share_displacements(out.u);
   stats_.solve_s += t.seconds();
   if (observer) observer->on_solve_end(solve, last_.iterations);
   return out;

@@ -3,9 +3,15 @@
 // multipliers found by (projected) CG on the condensed interface without forming it — each product F p is,
 // per group, p → C_gᵀp → K_g⁺ (forward/back substitution) → C_g(·) — and the displacements recovered by
 // u_g = K_g⁺(f_g − C_gᵀλ) + R_g α_g. A group is refactored only when its stiffness changed (Group::version).
+// Spread over processes (a GroupDistribution: `petsc` with `petsc_method: mixed`), each process factors and solves
+// with the groups it holds, the interface vectors and every group's kernel and displacement are summed over the
+// processes, and every process runs the same interface Krylov solve.
 #include <functional>
 
+#include <memory>
+
 #include "solve/ConstraintBasis.h"
+#include "solve/GroupDistribution.h"
 #include "solve/GroupSolver.h"
 #include "solve/InterfaceFlexibility.h"
 #include "solve/InterfacePreconditioner.h"
@@ -17,11 +23,16 @@ namespace rollsim {
 class MixedStrategy final : public SolverStrategy {
  public:
   /// `subdomains`: the `feti` flavour (partitioned bodies torn into subdomains, preconditioner from the options).
-  MixedStrategy(SolverOptions options, bool subdomains = false, std::string factorization = "cholmod");
+  /// `spread`: the groups over processes (null: this process holds them all); spread, the interface preconditioner
+  /// and the dense interface solver are refused (std::invalid_argument) — they are not distributed yet.
+  MixedStrategy(SolverOptions options, bool subdomains = false, std::string factorization = "cholmod",
+                std::shared_ptr<const GroupDistribution> spread = nullptr);
   BlockSolution solve(const BlockSystem& system, AnalysisObserver* observer = nullptr) override;
   const SolveStats& stats() const override { return stats_; }
   bool uses_subdomains() const override { return subdomains_; }
   const SolverOptions& options() const override { return options_; }
+  /// The groups this process holds (all of them unless spread).
+  std::vector<size_t> local_groups(std::vector<size_t> groups) const override;
   /// A group with C_eq (slipping Coulomb friction) makes the interface unsymmetric: projected GMRES solves it.
   bool solves_unsymmetric() const override { return true; }
   /// `mixed` (not `feti`): compliant rows join its interface, each multiplier with its compliance on F's diagonal.
@@ -61,10 +72,28 @@ class MixedStrategy final : public SolverStrategy {
   static bool same_constraints(const BlockSystem& sys, const std::vector<SparseMatrix>& C);
   /// Some group's factor is of an indefinite tangent (GroupSolver::indefinite): the interface is solved by GMRES.
   bool any_indefinite() const;
+  bool held(size_t g) const { return !spread_ || spread_->holds(g); }
+  /// Spread: x summed over the processes (a no-op in one process).
+  void sum(Eigen::VectorXd& x) const {
+    if (spread_) spread_->sum(x);
+  }
+  /// Group g's kernel R_g as its holder has it (a finite-strain group's R is the kernel of the tangent it assembled):
+  /// spread, shared by share_kernels() at the start of each solve.
+  const Eigen::MatrixXd& kernel(const BlockSystem& sys, size_t g) const {
+    return spread_ ? kernels_[g] : sys.groups[g].R;
+  }
+  void share_kernels(const BlockSystem& sys);
+  /// Throws the lowest group's SingularMatrix among `failed` (an empty message: that group factored) — spread, on
+  /// every process alike, with the message of the group's holder.
+  void throw_first_failure(const std::vector<SingularMatrix>& failed) const;
+  /// Spread: every group's u from its holder, on every process.
+  void share_displacements(std::vector<Eigen::VectorXd>& u) const;
   const SparseMatrix& weighted_modes(const BlockSystem& sys, const SparseMatrix& G, bool preconditioner_changed);
 
   SolverOptions options_;
   bool subdomains_;
+  std::shared_ptr<const GroupDistribution> spread_;
+  std::vector<Eigen::MatrixXd> kernels_;  // spread: every group's R from its holder
   std::unique_ptr<InterfacePreconditioner> preconditioner_;
   std::vector<SparseMatrix> preconditioned_C_;  // every group's C when the preconditioner was set up
   SparseMatrix QG_, QG_of_;                     // weighted_modes() and the G it was computed for

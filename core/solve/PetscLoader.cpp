@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "base/ModuleLoader.h"
+#include "solve/MixedStrategy.h"
 #include "solve/PetscModule.h"
 #include "solve/PetscStrategy.h"
 
@@ -51,7 +52,10 @@ std::filesystem::path petsc_module_path() { return module_path(kPetscModuleEnv, 
 bool petsc_available() { return true; }
 
 std::unique_ptr<SolverStrategy> make_petsc_strategy(const SolverOptions& options) {
-  return load().make_strategy(options);
+  const PetscModule& module = load();
+  if (options.petsc_method == PetscMethod::Mixed)  // the paper's mixed method, its groups spread over the ranks
+    return std::make_unique<MixedStrategy>(options, true, "cholmod", module.distribution());
+  return module.make_strategy(options);
 }
 
 void start_processes() { load().start(); }

@@ -7,12 +7,13 @@
 #include <filesystem>
 #include <memory>
 
+#include "solve/GroupDistribution.h"
 #include "solve/SolverStrategy.h"
 
 namespace rollsim {
 
-inline constexpr int kPetscModuleAbi =
-    5;  // 2: SolverOptions holds enums; 3: max_interface_iterations; 4: BlockSystem::interface_tolerance; 5: mumps
+inline constexpr int kPetscModuleAbi = 6;  // 2: SolverOptions holds enums; 3: max_interface_iterations; 4:
+                                           // BlockSystem::interface_tolerance; 5: mumps; 6: mixed (distribution)
 inline constexpr const char* kPetscModuleFile = "rollsim_petsc.so";       // beside the executable
 inline constexpr const char* kPetscModuleEnv = "ROLLSIM_PETSC_MODULE";    // overrides where it is
 inline constexpr const char* kPetscModuleEntry = "rollsim_petsc_module";  // its one exported symbol
@@ -23,6 +24,7 @@ struct PetscModule {
   void (*start)();                                                         // start_processes
   int (*rank)();                                                           // process_rank
   void (*finish)();                                                        // finish_processes
+  std::shared_ptr<const GroupDistribution> (*distribution)();  // the groups over the ranks (petsc_method: mixed)
 };
 
 /// Where the module is looked for: $ROLLSIM_PETSC_MODULE when set and not empty, else rollsim_petsc.so in the

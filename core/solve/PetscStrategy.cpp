@@ -16,6 +16,7 @@
 
 #include "base/Stopwatch.h"
 #include "solve/PetscBordered.h"
+#include "solve/PetscDistribution.h"
 #include "solve/PetscModule.h"
 #include "solve/PetscSupport.h"
 
@@ -421,6 +422,8 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
 
 std::unique_ptr<SolverStrategy> make(const SolverOptions& options) {
   if (options.petsc_method == PetscMethod::Mumps) return make_petsc_bordered(options);
+  if (options.petsc_method == PetscMethod::Mixed)  // the core's MixedStrategy over distribution(): PetscLoader
+    throw std::invalid_argument("petsc: the mixed method is made by the core, not by the module");
   return std::make_unique<PetscStrategy>(options);
 }
 
@@ -429,7 +432,8 @@ std::unique_ptr<SolverStrategy> make(const SolverOptions& options) {
 }  // namespace rollsim
 
 extern "C" __attribute__((visibility("default"))) const rollsim::PetscModule* rollsim_petsc_module() {
-  static const rollsim::PetscModule module{rollsim::kPetscModuleAbi, &rollsim::make, &rollsim::petsc::start,
-                                           &rollsim::petsc::rank, &rollsim::petsc::finish};
+  static const rollsim::PetscModule module{rollsim::kPetscModuleAbi, &rollsim::make,
+                                           &rollsim::petsc::start,   &rollsim::petsc::rank,
+                                           &rollsim::petsc::finish,  &rollsim::mpi_group_distribution};
   return &module;
 }

@@ -18,7 +18,7 @@ enum class GlueMultipliers { NonRedundant, Redundant };   // feti's subdomain gl
 enum class ProjectorMetric { Identity, Preconditioner };  // Q of the rigid-mode projector: I (the paper's) or M⁻¹
 enum class InterfaceStart { Zero, Previous };             // where a Newton iteration's interface Krylov solve starts
 enum class InterfaceSolver { Krylov, Dense };             // projected CG / GMRES, or F formed and factored
-enum class PetscMethod { Bddc, FetiDp, Mumps };           // PCBDDC in CG, KSPFETIDP, or MUMPS on eq. (1) whole
+enum class PetscMethod { Bddc, FetiDp, Mumps, Mixed };    // PCBDDC in CG, KSPFETIDP, MUMPS on eq. (1), mixed over MPI
 
 template <>
 inline const std::vector<std::string>& words<Preconditioner>() {
@@ -47,7 +47,7 @@ inline const std::vector<std::string>& words<InterfaceSolver>() {
 }
 template <>
 inline const std::vector<std::string>& words<PetscMethod>() {
-  static const std::vector<std::string> w{"bddc", "fetidp", "mumps"};
+  static const std::vector<std::string> w{"bddc", "fetidp", "mumps", "mixed"};
   return w;
 }
 
@@ -108,7 +108,10 @@ inline const std::vector<BoundField<SolverOptions>>& solver_option_fields() {
                     "CG on the FETI-DP multipliers, the inner BDDC's coarse space), contact-free, run as mpirun -n P "
                     "with one subdomain per rank; or mumps (paper eq. (1) whole — stiffness, contact and glue rows — "
                     "as one distributed matrix factored by MUMPS's LU: contact of every kind, any number of ranks, "
-                    "each assembling the tangents of its share of the groups)"),
+                    "each assembling the tangents of its share of the groups); or mixed (the paper's mixed method "
+                    "over MPI: each rank assembles and factors its own groups — bodies, or a partition's "
+                    "subdomains — with CHOLMOD, only those whose tangent changed, and every rank runs the projected "
+                    "CG / GMRES on the contact and glue multipliers, its products summed over the ranks)"),
                 "petsc-method"),
            &S::petsc_method),
       bind(

@@ -283,42 +283,41 @@ std::vector<double> rolling_csv(const std::string& dir) {
   return values;
 }
 
-/// A rolling pass under `direct` and under mumps on each of `ranks`: every rank count gives direct's Newton
-/// iterations, status and rolling.csv (force, torque, contact length, … of every increment) to `tolerance`.
-void expect_rolls_as_direct(const std::string& dir, const std::string& project, const std::vector<int>& ranks,
-                            double tolerance) {
-  const auto direct = run_rollsim({"run", project, "--solver", "direct", "--out", dir + "/direct", "--quiet"});
-  ASSERT_EQ(direct.exit_code, 0) << direct.err;
-  const json d = summary(dir + "/direct");
-  const std::vector<double> expected = rolling_csv(dir + "/direct");
+/// A rolling pass in one process under `reference` and under `petsc` with `method` on each of `ranks`: every rank
+/// count gives the reference's Newton iterations, status and rolling.csv (force, torque, contact length, … of every
+/// increment) to `tolerance`; the mixed method also its factorizations of every group (the selective update's).
+void expect_rolls_as(const std::string& dir, const std::string& project, const std::string& reference,
+                     const std::string& method, const std::vector<int>& ranks, double tolerance) {
+  const auto one = run_rollsim({"run", project, "--solver", reference, "--out", dir + "/" + reference, "--quiet"});
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const json d = summary(dir + "/" + reference);
+  const std::vector<double> expected = rolling_csv(dir + "/" + reference);
   ASSERT_GT(expected.size(), 20u);
   for (int n : ranks) {
-    const std::string out = dir + "/mumps" + std::to_string(n);
-    const auto r = mpirun(n, {"run", project, "--solver", "petsc", "--petsc-method", "mumps", "--out", out, "--quiet"});
+    const std::string out = dir + "/" + method + std::to_string(n);
+    const auto r = mpirun(n, {"run", project, "--solver", "petsc", "--petsc-method", method, "--out", out, "--quiet"});
     ASSERT_EQ(r.exit_code, 0) << n << " ranks\n" << r.err;
     const json s = summary(out);
     EXPECT_EQ(s["status"], d["status"]) << n;
     EXPECT_EQ(s["solver"]["newton_iterations"], d["solver"]["newton_iterations"]) << n;
+    if (method == "mixed")  // group by group, as the reference (mumps refactors its one matrix, torn or not)
+      EXPECT_EQ(s["solver"]["factorizations"], d["solver"]["factorizations"]) << n;
     EXPECT_GT(s["results"]["rolling"]["roll_force"].get<double>(), 1000.0) << n;  // the slab is being rolled
     EXPECT_LT(relative_difference(expected, rolling_csv(out)), tolerance) << n << " ranks";
   }
 }
 
-// MUMPS on the whole bordered system: a sticking rolling pass (two groups, slab and roll) on 1, 2 and 3 ranks — the
-// third rank assembles no group, only factors — takes direct's iterations to direct's forces.
-TEST(PetscRun, MumpsRollsASticking2DPassAsDirectOnOneTwoAndThreeRanks) {
-  const std::string dir = make_temp_dir("petsc-mumps-rolling");
+/// The main job's pass, 6 mm of travel, written into `dir`.
+std::string short_pass(const std::string& dir) {
   const std::string file = dir + "/pass.json";
   json j = json::parse(read_text(ROLLSIM_SOURCE_DIR "/samples/rolling-2d-36x6.json"));
   j["process"]["travel"] = 6;
   write_text(file, j.dump(2));
-  expect_rolls_as_direct(dir, file, {1, 2, 3}, 1e-9);
+  return file;
 }
 
-// Coulomb friction (an unsymmetric bordered matrix where points slip) on a slab torn into four subdomains (glue rows
-// beside the contact rows, five groups over three ranks).
-TEST(PetscRun, MumpsRollsACoulombPassOnAPartitionedSlabAsDirect) {
-  const std::string dir = make_temp_dir("petsc-mumps-coulomb");
+/// The partitioned pass (slab in 4 subdomains) made small, Coulomb μ 0.35 in 0.5 mm steps, written into `dir`.
+std::string coulomb_partitioned_pass(const std::string& dir) {
   const std::string file = dir + "/pass.json";
   json j = json::parse(read_text(ROLLSIM_SOURCE_DIR "/samples/rolling-2d-72x12-dd.json"));
   j["process"]["slab_nx"] = 36;
@@ -329,7 +328,44 @@ TEST(PetscRun, MumpsRollsACoulombPassOnAPartitionedSlabAsDirect) {
   j["process"]["friction"] = "coulomb";
   j["process"]["friction_coefficient"] = 0.35;
   write_text(file, j.dump(2));
-  expect_rolls_as_direct(dir, file, {3}, 1e-8);
+  return file;
+}
+
+// MUMPS on the whole bordered system: a sticking rolling pass (two groups, slab and roll) on 1, 2 and 3 ranks — the
+// third rank assembles no group, only factors — takes direct's iterations to direct's forces.
+TEST(PetscRun, MumpsRollsASticking2DPassAsDirectOnOneTwoAndThreeRanks) {
+  const std::string dir = make_temp_dir("petsc-mumps-rolling");
+  expect_rolls_as(dir, short_pass(dir), "direct", "mumps", {1, 2, 3}, 1e-9);
+}
+
+// Coulomb friction (an unsymmetric bordered matrix where points slip) on a slab torn into four subdomains (glue rows
+// beside the contact rows, five groups over three ranks).
+TEST(PetscRun, MumpsRollsACoulombPassOnAPartitionedSlabAsDirect) {
+  const std::string dir = make_temp_dir("petsc-mumps-coulomb");
+  expect_rolls_as(dir, coulomb_partitioned_pass(dir), "direct", "mumps", {3}, 1e-8);
+}
+
+// The paper's mixed method over MPI: slab and roll on their own ranks (and a third rank holding nothing), each
+// factoring its own group only when its tangent changed — `mixed`'s iterations and factorizations, its forces.
+TEST(PetscRun, MixedMethodRollsASticking2DPassAsMixedOnTwoAndThreeRanks) {
+  const std::string dir = make_temp_dir("petsc-mixed-rolling");
+  expect_rolls_as(dir, short_pass(dir), "mixed", "mixed", {2, 3}, 1e-9);
+}
+
+// Five groups (four slab subdomains and the roll) over three ranks, the interface unsymmetric where points slip
+// (projected GMRES): `feti`'s iterations, factorizations and forces.
+TEST(PetscRun, MixedMethodRollsACoulombPassOnAPartitionedSlabAsFeti) {
+  const std::string dir = make_temp_dir("petsc-mixed-coulomb");
+  expect_rolls_as(dir, coulomb_partitioned_pass(dir), "feti", "mixed", {3}, 1e-8);
+}
+
+TEST(PetscRun, MixedMethodRefusesAPreconditionerOnEveryRank) {
+  const std::string dir = make_temp_dir("petsc-mixed-refused");
+  const auto r = mpirun(2, {"run", short_pass(dir), "--solver", "petsc", "--petsc-method", "mixed", "--preconditioner",
+                            "lumped", "--out", dir + "/out"});
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("solver.preconditioner must be none"), std::string::npos) << r.err;
 }
 
 // A linear analysis with a tied pair: the displacements of direct.
@@ -399,7 +435,8 @@ TEST(PetscRun, RefusesAnUnknownMethod) {
   const auto r = run_rollsim(
       {"run", ROLLSIM_SOURCE_DIR "/samples/plate-hole-2d.json", "--solver", "petsc", "--petsc-method", "gamg"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("--petsc-method: must be one of bddc, fetidp, mumps, got \"gamg\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--petsc-method: must be one of bddc, fetidp, mumps, mixed, got \"gamg\""), std::string::npos)
+      << r.err;
 }
 #else
 TEST(PetscRun, ABuildWithoutPetscRefusesTheStrategy) {

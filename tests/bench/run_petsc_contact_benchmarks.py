@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""Benchmarks of issue 37 (the rolling pass through PETSc: `--petsc-method mumps`) -> docs/petsc-contact-bench-output.md.
+
+Usage: tests/bench/run_petsc_contact_benchmarks.py [--build DIR] [--out FILE] [--ranks LIST] [--repeats N] [--with-3d]
+  --build     build directory holding app/rollsim built with -DROLLSIM_WITH_PETSC=ON (default: build)
+  --out       the tables (default docs/petsc-contact-bench-output.md; docs/BENCHMARKS-PETSC.md §6 reads them)
+  --ranks     MPI ranks of the mumps runs (default 1,2,4,8; above 2 oversubscribed on this 2-core machine)
+  --repeats   runs of each 2D case whose median wall time is quoted (default 3)
+  --with-3d   also the 3D pass 16 x 8 x 4 (samples/rolling-3d-16x8x4.json: about 10 min per run), direct and 2 ranks
+
+Each case runs once under `direct` in one process (the reference) and under `mpirun -n N --oversubscribe rollsim run
+--solver petsc --petsc-method mumps` for every N; the tables hold what summary.json and rolling.csv say: status, Newton
+iterations, roll force and torque, the largest relative difference of any rolling.csv entry from direct's, whether
+the same output files were written, the median wall time and the largest peak RSS of any rank (/usr/bin/time -v).
+Nothing is typed in; timing is not a test: this script fails only if a run fails.
+"""
+import argparse
+import csv
+import json
+import os
+import platform
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+
+CASES_2D = [
+    ("2D pass, sticking (the main job), 36 x 6", "rolling-2d-36x6.json", []),
+    ("2D pass, Coulomb mu 0.35, 0.5 mm steps", "rolling-2d-36x6.json",
+     ["--set", "process.friction=coulomb", "--set", "process.friction_coefficient=0.35",
+      "--set", "process.travel_increment=0.5"]),
+    ("2D pass, slab 72 x 12 in 4 subdomains (glue + contact), 10 mm", "rolling-2d-72x12-dd.json", []),
+]
+CASE_3D = ("3D pass 16 x 8 x 4, half width, sticking", "rolling-3d-16x8x4.json", [])
+
+
+def log(*a):
+    print("run_petsc_contact_benchmarks:", *a, file=sys.stderr, flush=True)
+
+
+class Runner:
+    def __init__(self, rollsim, work):
+        self.rollsim, self.work, self.count = rollsim, work, 0
+
+    def run(self, sample, extra, ranks):
+        """ranks 0: direct in one process. Returns (summary, out dir, wall s, largest peak RSS of a process in MiB)."""
+        self.count += 1
+        out = os.path.join(self.work, "run%d" % self.count)
+        solver = ["--solver", "direct"] if ranks == 0 else ["--solver", "petsc", "--petsc-method", "mumps"]
+        cmd = ["/usr/bin/time", "-v", self.rollsim, "run", os.path.join(ROOT, "samples", sample), *solver, *extra,
+               "--out", out, "--quiet"]
+        if ranks:
+            cmd = ["mpirun", "-n", str(ranks), "--oversubscribe", *cmd]
+        t0 = time.time()
+        p = subprocess.run(cmd, capture_output=True, text=True)
+        wall = time.time() - t0
+        if p.returncode != 0:
+            log("FAILED:", " ".join(cmd), "\n", p.stderr[-3000:])
+            raise SystemExit(1)
+        rss = [int(m) / 1024 for m in re.findall(r"Maximum resident set size \(kbytes\): (\d+)", p.stderr)]
+        with open(os.path.join(out, "summary.json")) as f:
+            return json.load(f), out, wall, max(rss) if rss else float("nan")
+
+
+def rolling_rows(out):
+    with open(os.path.join(out, "rolling.csv")) as f:
+        return [[float(v) for v in row] for row in list(csv.reader(f))[1:] if row]
+
+
+def largest_difference(a, b):
+    """max |a - b| over every entry of every column, relative to that column's largest |a| (1 when shapes differ)."""
+    if len(a) != len(b) or any(len(x) != len(y) for x, y in zip(a, b)):
+        return 1.0
+    worst = 0.0
+    for c in range(len(a[0]) if a else 0):
+        scale = max(abs(row[c]) for row in a)
+        if scale > 0:
+            worst = max(worst, max(abs(x[c] - y[c]) for x, y in zip(a, b)) / scale)
+    return worst
+
+
+def case(runner, lines, title, sample, extra, ranks, repeats):
+    log(title)
+    lines += ["", "### " + title, "",
+              "| run | status | Newton iterations | roll force N/mm (N) | roll torque | max rel. diff. of rolling.csv "
+              "| same files | wall s (median of %d) | peak RSS per rank MiB |" % repeats,
+              "|---|---|---|---|---|---|---|---|---|"]
+    ref = None
+    for n in [0] + ranks:
+        runs = [runner.run(sample, extra, n) for _ in range(repeats)]
+        s, out, _, rss = runs[0]
+        rows, files = rolling_rows(out), sorted(os.listdir(out))
+        if ref is None:
+            ref = (rows, files)
+        roll = s["results"]["rolling"]
+        lines.append("| %s | %s | %d | %.10g | %.10g | %s | %s | %.2f | %.0f |" % (
+            "direct, 1 process" if n == 0 else "mumps, %d rank%s" % (n, "" if n == 1 else "s"), s["status"],
+            s["solver"]["newton_iterations"], roll["roll_force"], roll["roll_torque"],
+            "(reference)" if n == 0 else "%.1e" % largest_difference(ref[0], rows),
+            "(reference)" if n == 0 else ("yes" if files == ref[1] else "no"),
+            statistics.median(r[2] for r in runs), rss))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "petsc-contact-bench-output.md"))
+    ap.add_argument("--ranks", default="1,2,4,8")
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--with-3d", action="store_true")
+    a = ap.parse_args()
+    ranks = [int(r) for r in a.ranks.split(",")]
+    rollsim = os.path.join(a.build, "app", "rollsim")
+    version = subprocess.run([rollsim, "--version"], capture_output=True, text=True).stdout.strip()
+    lines = ["# `--petsc-method mumps`: the rolling pass through PETSc (output of tests/bench/run_petsc_contact_benchmarks.py)",
+             "", "Measured %s on %s (%s, %d cores, load average %s); %s." % (
+                 time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), platform.node(), platform.machine(),
+                 os.cpu_count(), " ".join("%.2f" % x for x in os.getloadavg()), version)]
+    with tempfile.TemporaryDirectory(prefix="petsc-contact-") as work:
+        runner = Runner(rollsim, work)
+        for title, sample, extra in CASES_2D:
+            case(runner, lines, title, sample, extra, ranks, a.repeats)
+        if a.with_3d:
+            case(runner, lines, CASE_3D[0], CASE_3D[1], CASE_3D[2], [2], 1)
+    with open(a.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    log("wrote", a.out)
+
+
+if __name__ == "__main__":
+    main()
