@@ -145,6 +145,25 @@ json remeshes_section(const std::vector<RemeshRecord>& remeshes) {
 }
 }  // namespace
 
+namespace {
+/// Groups spread over MPI ranks: each group's rank, and each rank's groups with their factorizations — the selective
+/// update per rank (a rank whose groups converged keeps its factors).
+json ranks_section(const SolveStats& st) {
+  json holder = json::object(), per_rank = json::array();
+  for (const auto& [group, rank] : st.ranks) {
+    holder[group] = rank;
+    while (static_cast<int>(per_rank.size()) <= rank)
+      per_rank.push_back({{"groups", json::array()}, {"factorizations", 0}});
+    per_rank[static_cast<size_t>(rank)]["groups"].push_back(group);
+    const auto it = st.factorizations.find(group);
+    per_rank[static_cast<size_t>(rank)]["factorizations"] =
+        per_rank[static_cast<size_t>(rank)]["factorizations"].get<long>() +
+        (it == st.factorizations.end() ? 0 : it->second);
+  }
+  return {{"group_rank", holder}, {"per_rank", per_rank}};
+}
+}  // namespace
+
 json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   const SolveStats& st = r.solver;
   json factorizations = json::object();
@@ -194,6 +213,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
                            {"reason", r.auto_choice->reason},
                            {"choice_s", r.auto_choice->seconds}};
   }
+  if (!st.ranks.empty()) s["solver"]["ranks"] = ranks_section(st);
   if (st.interface_columns > 0) s["solver"]["interface_columns"] = st.interface_columns;
   if (st.factor.min_pivot_ratio > 0) s["solver"]["min_pivot_ratio"] = st.factor.min_pivot_ratio;
   s["analysis"] = r.update_policy.empty() ? "linear" : "newton";

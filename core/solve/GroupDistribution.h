@@ -12,6 +12,8 @@ namespace rollsim {
 class GroupDistribution {
  public:
   virtual ~GroupDistribution() = default;
+  /// The process (MPI rank) that holds group g.
+  virtual int holder(size_t group) const = 0;
   /// True when this process holds group g.
   virtual bool holds(size_t group) const = 0;
   /// x summed over every process, in place; every process receives the same bits. A value only its holder computed

@@ -141,6 +141,7 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
   });
   throw_first_failure(failed);
   for (size_t g : changed) {
+    if (spread_) stats_.ranks[sys.groups[g].name] = spread_->holder(g);
     factored_version_[g] = sys.groups[g].version;
     ++stats_.factorizations[sys.groups[g].name];
     if (observer) observer->on_factorization(sys.groups[g].name);

@@ -21,6 +21,7 @@ struct FactorStats {
 
 struct SolveStats {
   std::map<std::string, long> factorizations;  // per group name
+  std::map<std::string, int> ranks;            // groups spread over MPI ranks (petsc_method: mixed): each one's holder
   long cg_iterations = 0;
   /// The dense interface solver's columns of K⁺ solved for (InterfaceFlexibility), over all groups and solves:
   /// each about one forward and back substitution's work, done many at a time.

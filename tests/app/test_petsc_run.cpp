@@ -300,8 +300,14 @@ void expect_rolls_as(const std::string& dir, const std::string& project, const s
     const json s = summary(out);
     EXPECT_EQ(s["status"], d["status"]) << n;
     EXPECT_EQ(s["solver"]["newton_iterations"], d["solver"]["newton_iterations"]) << n;
-    if (method == "mixed")  // group by group, as the reference (mumps refactors its one matrix, torn or not)
+    if (method == "mixed") {  // group by group, as the reference (mumps refactors its one matrix, torn or not)
       EXPECT_EQ(s["solver"]["factorizations"], d["solver"]["factorizations"]) << n;
+      long total = 0, per_rank = 0;  // and per rank: every group on one rank, g mod n
+      for (const auto& f : s["solver"]["factorizations"]) total += f.get<long>();
+      for (const auto& r : s["solver"]["ranks"]["per_rank"]) per_rank += r["factorizations"].get<long>();
+      EXPECT_EQ(per_rank, total) << n;
+      EXPECT_EQ(s["solver"]["ranks"]["per_rank"].size(), std::min<size_t>(n, s["solver"]["factorizations"].size()));
+    }
     EXPECT_GT(s["results"]["rolling"]["roll_force"].get<double>(), 1000.0) << n;  // the slab is being rolled
     EXPECT_LT(relative_difference(expected, rolling_csv(out)), tolerance) << n << " ranks";
   }
