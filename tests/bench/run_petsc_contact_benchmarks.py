@@ -6,12 +6,15 @@ Usage: tests/bench/run_petsc_contact_benchmarks.py [--build DIR] [--out FILE] [-
   --out       the tables (default docs/petsc-contact-bench-output.md; docs/BENCHMARKS-PETSC.md §6 reads them)
   --ranks     MPI ranks of the mumps runs (default 1,2,4,8; above 2 oversubscribed on this 2-core machine)
   --repeats   runs of each 2D case whose median wall time is quoted (default 3)
-  --with-3d   also the 3D pass 16 x 8 x 4 (samples/rolling-3d-16x8x4.json: about 10 min per run), direct and 2 ranks
+  --with-3d   also the 3D pass 16 x 8 x 4 (samples/rolling-3d-16x8x4.json: about 10 min per run), on 2 ranks
 
-Each case runs once under `direct` in one process (the reference) and under `mpirun -n N --oversubscribe rollsim run
---solver petsc --petsc-method mumps` for every N; the tables hold what summary.json and rolling.csv say: status, Newton
-iterations, roll force and torque, the largest relative difference of any rolling.csv entry from direct's, whether
-the same output files were written, the median wall time and the largest peak RSS of any rank (/usr/bin/time -v).
+Each case runs under `direct` in one process (the reference), under the sample's own mode in one process, and under
+`mpirun -n N --oversubscribe rollsim run --solver petsc --petsc-method mumps | mixed` for every N; the tables hold what
+summary.json and rolling.csv say: status, Newton iterations, interface CG iterations per Newton iteration, the
+factorizations of the busiest and idlest rank (mixed), roll force and torque, the largest relative difference of any
+rolling.csv entry from direct's, whether the same output files were written, the median wall time and the largest
+peak RSS of any rank (/usr/bin/time -v). A last table tears the 72 x 12 slab into 1-8 subdomains on as many ranks
+plus one.
 Nothing is typed in; timing is not a test: this script fails only if a run fails.
 """
 import argparse
@@ -31,13 +34,13 @@ os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
 os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
 
 CASES_2D = [
-    ("2D pass, sticking (the main job), 36 x 6", "rolling-2d-36x6.json", []),
+    ("2D pass, sticking (the main job), 36 x 6", "rolling-2d-36x6.json", [], "mixed"),
     ("2D pass, Coulomb mu 0.35, 0.5 mm steps", "rolling-2d-36x6.json",
      ["--set", "process.friction=coulomb", "--set", "process.friction_coefficient=0.35",
-      "--set", "process.travel_increment=0.5"]),
-    ("2D pass, slab 72 x 12 in 4 subdomains (glue + contact), 10 mm", "rolling-2d-72x12-dd.json", []),
+      "--set", "process.travel_increment=0.5"], "mixed"),
+    ("2D pass, slab 72 x 12 in 4 subdomains (glue + contact), 10 mm", "rolling-2d-72x12-dd.json", [], "feti"),
 ]
-CASE_3D = ("3D pass 16 x 8 x 4, half width, sticking", "rolling-3d-16x8x4.json", [])
+CASE_3D = ("3D pass 16 x 8 x 4, half width, sticking", "rolling-3d-16x8x4.json", [], "mixed")
 
 
 def log(*a):
@@ -48,11 +51,12 @@ class Runner:
     def __init__(self, rollsim, work):
         self.rollsim, self.work, self.count = rollsim, work, 0
 
-    def run(self, sample, extra, ranks):
-        """ranks 0: direct in one process. Returns (summary, out dir, wall s, largest peak RSS of a process in MiB)."""
+    def run(self, sample, extra, mode, ranks):
+        """`mode` in one process (ranks 0) or `petsc` with petsc_method `mode` under mpirun -n ranks. Returns
+        (summary, out dir, wall s, largest peak RSS of a process in MiB)."""
         self.count += 1
         out = os.path.join(self.work, "run%d" % self.count)
-        solver = ["--solver", "direct"] if ranks == 0 else ["--solver", "petsc", "--petsc-method", "mumps"]
+        solver = ["--solver", mode] if ranks == 0 else ["--solver", "petsc", "--petsc-method", mode]
         cmd = ["/usr/bin/time", "-v", self.rollsim, "run", os.path.join(ROOT, "samples", sample), *solver, *extra,
                "--out", out, "--quiet"]
         if ranks:
@@ -85,26 +89,59 @@ def largest_difference(a, b):
     return worst
 
 
-def case(runner, lines, title, sample, extra, ranks, repeats):
+def per_newton(s):
+    return s["solver"]["cg_iterations_total"] / max(1, s["solver"]["newton_iterations"])
+
+
+def rank_factorizations(s):
+    """The largest and smallest factorization count of a rank (mixed over MPI), or '' for other runs."""
+    per = [r["factorizations"] for r in s["solver"].get("ranks", {}).get("per_rank", [])]
+    return "%d / %d" % (max(per), min(per)) if per else ""
+
+
+def case(runner, lines, title, sample, extra, own_mode, ranks, repeats):
     log(title)
     lines += ["", "### " + title, "",
-              "| run | status | Newton iterations | roll force N/mm (N) | roll torque | max rel. diff. of rolling.csv "
-              "| same files | wall s (median of %d) | peak RSS per rank MiB |" % repeats,
-              "|---|---|---|---|---|---|---|---|---|"]
+              "| run | status | Newton iterations | interface CG per Newton iteration | factorizations: rank max / min "
+              "| roll force | roll torque | max rel. diff. of rolling.csv | same files | wall s (median of %d) "
+              "| peak RSS per rank MiB |" % repeats,
+              "|---|---|---|---|---|---|---|---|---|---|---|"]
     ref = None
-    for n in [0] + ranks:
-        runs = [runner.run(sample, extra, n) for _ in range(repeats)]
+    runs_asked = [("direct", 0), (own_mode, 0)] + [("mumps", n) for n in ranks] + [("mixed", n) for n in ranks]
+    for mode, n in runs_asked:
+        runs = [runner.run(sample, extra, mode, n) for _ in range(repeats)]
         s, out, _, rss = runs[0]
         rows, files = rolling_rows(out), sorted(os.listdir(out))
         if ref is None:
             ref = (rows, files)
         roll = s["results"]["rolling"]
-        lines.append("| %s | %s | %d | %.10g | %.10g | %s | %s | %.2f | %.0f |" % (
-            "direct, 1 process" if n == 0 else "mumps, %d rank%s" % (n, "" if n == 1 else "s"), s["status"],
-            s["solver"]["newton_iterations"], roll["roll_force"], roll["roll_torque"],
-            "(reference)" if n == 0 else "%.1e" % largest_difference(ref[0], rows),
-            "(reference)" if n == 0 else ("yes" if files == ref[1] else "no"),
+        label = "%s, 1 process" % mode if n == 0 else "petsc %s, %d rank%s" % (mode, n, "" if n == 1 else "s")
+        lines.append("| %s | %s | %d | %s | %s | %.10g | %.10g | %s | %s | %.2f | %.0f |" % (
+            label, s["status"], s["solver"]["newton_iterations"],
+            "%.1f" % per_newton(s) if s["solver"]["cg_iterations_total"] else "", rank_factorizations(s),
+            roll["roll_force"], roll["roll_torque"],
+            "(reference)" if ref[0] is rows else "%.1e" % largest_difference(ref[0], rows),
+            "(reference)" if ref[0] is rows else ("yes" if files == ref[1] else "no"),
             statistics.median(r[2] for r in runs), rss))
+
+
+def subdomains(runner, lines, counts, repeats):
+    """The 72 x 12 pass (10 mm) with its slab in P subdomains along the rolling direction, P + 1 ranks (the roll on one
+    of them): how the mixed method's interface iterations and each rank's factorizations go as P grows."""
+    log("subdomains")
+    lines += ["", "### Slab 72 x 12 in P subdomains, P + 1 groups on P + 1 ranks (10 mm of travel)", "",
+              "| P | ranks | method | status | Newton iterations | interface CG per Newton iteration "
+              "| factorizations: rank max / min | roll force | wall s (median of %d) | peak RSS per rank MiB |" % repeats,
+              "|---|---|---|---|---|---|---|---|---|---|"]
+    for p in counts:
+        extra = ["--set", "process.slab_partition=%dx1" % p]
+        for mode in ("mixed", "mumps"):
+            runs = [runner.run("rolling-2d-72x12-dd.json", extra, mode, p + 1) for _ in range(repeats)]
+            s, _, _, rss = runs[0]
+            lines.append("| %d | %d | %s | %s | %d | %s | %s | %.10g | %.2f | %.0f |" % (
+                p, p + 1, mode, s["status"], s["solver"]["newton_iterations"],
+                "%.1f" % per_newton(s) if s["solver"]["cg_iterations_total"] else "", rank_factorizations(s),
+                s["results"]["rolling"]["roll_force"], statistics.median(r[2] for r in runs), rss))
 
 
 def main():
@@ -124,10 +161,11 @@ def main():
                  os.cpu_count(), " ".join("%.2f" % x for x in os.getloadavg()), version)]
     with tempfile.TemporaryDirectory(prefix="petsc-contact-") as work:
         runner = Runner(rollsim, work)
-        for title, sample, extra in CASES_2D:
-            case(runner, lines, title, sample, extra, ranks, a.repeats)
+        for title, sample, extra, own in CASES_2D:
+            case(runner, lines, title, sample, extra, own, ranks, a.repeats)
+        subdomains(runner, lines, [1, 2, 4, 8], a.repeats)
         if a.with_3d:
-            case(runner, lines, CASE_3D[0], CASE_3D[1], CASE_3D[2], [2], 1)
+            case(runner, lines, *CASE_3D, [2], 1)
     with open(a.out, "w") as f:
         f.write("\n".join(lines) + "\n")
     log("wrote", a.out)
