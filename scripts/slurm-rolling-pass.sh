@@ -11,8 +11,8 @@
 #
 # Ranks and groups. `--petsc-method mixed` (the default here) is the paper's mixed method over MPI: group g — a body,
 # or a subdomain of a partitioned body — is assembled and factored on rank g mod P, so P should not exceed the number
-# of groups: the slab's subdomains (`process.slab_partition`, or a partition painted in the window and saved in the
-# project) plus one for the roll. ROLLSIM_PARTITION=4x1 tears the slab into four: five groups for the five tasks
+# of groups: the slab's subdomains (`process.slab_partition`; a project of bodies: their `partition`) plus one for
+# the roll. ROLLSIM_PARTITION=4x1 tears the slab into four: five groups for the five tasks
 # asked above. `ROLLSIM_PETSC_METHOD=mumps` factors the whole system with MUMPS instead, on any number of ranks.
 # Bad input is refused by every rank with one message (exit 2). Every rank reads the project; rank 0 writes OUT
 # (summary.json, rolling.csv, results.pvd, …), whose summary.json lists each group's rank and each rank's
