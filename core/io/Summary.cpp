@@ -146,8 +146,8 @@ json remeshes_section(const std::vector<RemeshRecord>& remeshes) {
 }  // namespace
 
 namespace {
-/// Groups spread over MPI ranks: each group's rank, and each rank's groups with their factorizations — the selective
-/// update per rank (a rank whose groups converged keeps its factors).
+/// Groups spread over MPI ranks: each group's rank, and each rank's groups with their factorizations and the seconds
+/// they took — the selective update per rank (a rank whose groups converged keeps its factors).
 json ranks_section(const SolveStats& st) {
   json holder = json::object(), per_rank = json::array();
   for (const auto& [group, rank] : st.ranks) {
@@ -160,6 +160,8 @@ json ranks_section(const SolveStats& st) {
         per_rank[static_cast<size_t>(rank)]["factorizations"].get<long>() +
         (it == st.factorizations.end() ? 0 : it->second);
   }
+  for (size_t r = 0; r < per_rank.size() && r < st.rank_factorize_s.size(); ++r)
+    per_rank[r]["factorize_s"] = st.rank_factorize_s[r];
   return {{"group_rank", holder}, {"per_rank", per_rank}};
 }
 }  // namespace

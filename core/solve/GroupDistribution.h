@@ -14,8 +14,11 @@ class GroupDistribution {
   virtual ~GroupDistribution() = default;
   /// The process (MPI rank) that holds group g.
   virtual int holder(size_t group) const = 0;
+  /// This process's number (MPI rank) and how many there are.
+  virtual int process() const = 0;
+  virtual int processes() const = 0;
   /// True when this process holds group g.
-  virtual bool holds(size_t group) const = 0;
+  bool holds(size_t group) const { return holder(group) == process(); }
   /// x summed over every process, in place; every process receives the same bits. A value only its holder computed
   /// (the others' are zero) comes back exact: this is also the gather.
   virtual void sum(Eigen::VectorXd& x) const = 0;

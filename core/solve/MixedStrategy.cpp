@@ -114,8 +114,22 @@ void MixedStrategy::throw_first_failure(const std::vector<SingularMatrix>& faile
   throw SingularMatrix(what, static_cast<int>(text[kLength]));
 }
 
+void MixedStrategy::refuse_idle_ranks(const BlockSystem& sys) const {
+  const size_t groups = sys.groups.size();
+  if (!spread_ || static_cast<size_t>(spread_->processes()) <= groups) return;
+  const std::string P = std::to_string(spread_->processes()), G = std::to_string(groups);
+  throw std::invalid_argument(
+      "petsc (mixed): " + P + " MPI ranks for " + G +
+      " groups (bodies and subdomains): the mixed method gives each "
+      "rank whole groups, so ranks " +
+      G + " to " + std::to_string(spread_->processes() - 1) + " would hold none — start it with mpirun -n " + G +
+      " or fewer, tear a body into more subdomains "
+      "(process.slab_partition, a body's partition), or use --petsc-method mumps, which takes any number of ranks");
+}
+
 void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* observer) {
   if (groups_.size() != sys.groups.size()) {
+    refuse_idle_ranks(sys);
     groups_.clear();
     for (size_t g = 0; g < sys.groups.size(); ++g) groups_.emplace_back(kind_);
     flexibility_.assign(sys.groups.size(), InterfaceFlexibility());
@@ -156,6 +170,12 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
     stats_.factor_flops_total += gs.stats().flops_total();
     stats_.factor.flops += gs.stats().flops;
     stats_.factor.nnz_factor += gs.stats().nnz_factor;
+  }
+  if (spread_) {  // every rank's seconds, for the load balance of the selective update
+    Eigen::VectorXd seconds = Eigen::VectorXd::Zero(spread_->processes());
+    seconds[spread_->process()] = stats_.analyze_s + stats_.factorize_s;
+    sum(seconds);
+    stats_.rank_factorize_s.assign(seconds.data(), seconds.data() + seconds.size());
   }
 }
 

@@ -86,6 +86,8 @@ class MixedStrategy final : public SolverStrategy {
   /// Throws the lowest group's SingularMatrix among `failed` (an empty message: that group factored) — spread, on
   /// every process alike, with the message of the group's holder.
   void throw_first_failure(const std::vector<SingularMatrix>& failed) const;
+  /// Spread over more processes than groups: std::invalid_argument (every process alike), naming both counts.
+  void refuse_idle_ranks(const BlockSystem& sys) const;
   /// Spread: every group's u from its holder, on every process.
   void share_displacements(std::vector<Eigen::VectorXd>& u) const;
   const SparseMatrix& weighted_modes(const BlockSystem& sys, const SparseMatrix& G, bool preconditioner_changed);

@@ -14,7 +14,8 @@ class MpiGroups final : public GroupDistribution {
  public:
   MpiGroups() : rank_(petsc::rank()), ranks_(petsc::ranks()) {}
   int holder(size_t group) const override { return static_cast<int>(group % static_cast<size_t>(ranks_)); }
-  bool holds(size_t group) const override { return holder(group) == rank_; }
+  int process() const override { return rank_; }
+  int processes() const override { return ranks_; }
   void sum(Eigen::VectorXd& x) const override {
     if (ranks_ == 1 || x.size() == 0) return;
     Eigen::VectorXd total(x.size());

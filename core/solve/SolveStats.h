@@ -3,6 +3,7 @@
 // writers read results and never the solver objects.
 #include <map>
 #include <string>
+#include <vector>
 
 namespace rollsim {
 
@@ -22,6 +23,7 @@ struct FactorStats {
 struct SolveStats {
   std::map<std::string, long> factorizations;  // per group name
   std::map<std::string, int> ranks;            // groups spread over MPI ranks (petsc_method: mixed): each one's holder
+  std::vector<double> rank_factorize_s;        // and each rank's analysis and factorization seconds so far
   long cg_iterations = 0;
   /// The dense interface solver's columns of K⁺ solved for (InterfaceFlexibility), over all groups and solves:
   /// each about one forward and back substitution's work, done many at a time.

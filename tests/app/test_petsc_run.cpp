@@ -306,7 +306,8 @@ void expect_rolls_as(const std::string& dir, const std::string& project, const s
       for (const auto& f : s["solver"]["factorizations"]) total += f.get<long>();
       for (const auto& r : s["solver"]["ranks"]["per_rank"]) per_rank += r["factorizations"].get<long>();
       EXPECT_EQ(per_rank, total) << n;
-      EXPECT_EQ(s["solver"]["ranks"]["per_rank"].size(), std::min<size_t>(n, s["solver"]["factorizations"].size()));
+      EXPECT_EQ(s["solver"]["ranks"]["per_rank"].size(), static_cast<size_t>(n));
+      for (const auto& r : s["solver"]["ranks"]["per_rank"]) EXPECT_GT(r["factorize_s"].get<double>(), 0.0) << n;
     }
     EXPECT_GT(s["results"]["rolling"]["roll_force"].get<double>(), 1000.0) << n;  // the slab is being rolled
     EXPECT_LT(relative_difference(expected, rolling_csv(out)), tolerance) << n << " ranks";
@@ -351,11 +352,22 @@ TEST(PetscRun, MumpsRollsACoulombPassOnAPartitionedSlabAsDirect) {
   expect_rolls_as(dir, coulomb_partitioned_pass(dir), "direct", "mumps", {3}, 1e-8);
 }
 
-// The paper's mixed method over MPI: slab and roll on their own ranks (and a third rank holding nothing), each
-// factoring its own group only when its tangent changed — `mixed`'s iterations and factorizations, its forces.
-TEST(PetscRun, MixedMethodRollsASticking2DPassAsMixedOnTwoAndThreeRanks) {
+// The paper's mixed method over MPI: slab and roll on their own ranks (or both on one), each factoring its own group
+// only when its tangent changed — `mixed`'s iterations and factorizations, its forces.
+TEST(PetscRun, MixedMethodRollsASticking2DPassAsMixedOnOneAndTwoRanks) {
   const std::string dir = make_temp_dir("petsc-mixed-rolling");
-  expect_rolls_as(dir, short_pass(dir), "mixed", "mixed", {2, 3}, 1e-9);
+  expect_rolls_as(dir, short_pass(dir), "mixed", "mixed", {1, 2}, 1e-9);
+}
+
+// A rank would hold no group: refused on every rank, naming both counts and the ways out.
+TEST(PetscRun, MixedMethodRefusesMoreRanksThanGroupsOnEveryRank) {
+  const std::string dir = make_temp_dir("petsc-mixed-ranks");
+  const auto r =
+      mpirun(3, {"run", short_pass(dir), "--solver", "petsc", "--petsc-method", "mixed", "--out", dir + "/o"});
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("3 MPI ranks for 2 groups (bodies and subdomains)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--petsc-method mumps, which takes any number of ranks"), std::string::npos) << r.err;
 }
 
 // Five groups (four slab subdomains and the roll) over three ranks, the interface unsymmetric where points slip
