@@ -110,7 +110,7 @@ def case(runner, lines, title, sample, extra, own_mode, ranks, repeats):
     ref, groups = None, None
     runs_asked = [("direct", 0), (own_mode, 0)] + [("mumps", n) for n in ranks] + [("mixed", n) for n in ranks]
     for mode, n in runs_asked:
-        if mode == "mixed" and n > groups:  # refused: the mixed method gives every rank whole groups
+        if mode == "mixed" and n > 0 and n > groups:  # refused: the mixed method gives every rank whole groups
             continue
         runs = [runner.run(sample, extra, mode, n) for _ in range(repeats)]
         s, out, _, rss = runs[0]
