@@ -35,7 +35,8 @@ struct GroupBlocks {
 
 class BlockPreconditioner final : public InterfacePreconditioner {
  public:
-  BlockPreconditioner(bool dirichlet, int threads) : dirichlet_(dirichlet), threads_(threads) {}
+  BlockPreconditioner(bool dirichlet, int threads, std::shared_ptr<const GroupDistribution> spread)
+      : dirichlet_(dirichlet), threads_(threads), spread_(std::move(spread)) {}
 
   void setup(const BlockSystem& sys) override {
     blocks_.clear();
@@ -52,6 +53,7 @@ class BlockPreconditioner final : public InterfacePreconditioner {
     for_each_group(sys.groups.size(), threads_, [&](size_t i) {
       const Group& g = sys.groups[i];
       GroupBlocks& b = blocks_[i];
+      if (spread_ && !spread_->holds(i)) return;  // its holder's (another process's K_g is not assembled here)
       b.boundary = touched_dofs(g.C);
       if (!b.boundary.empty()) {
         std::vector<int> all(static_cast<size_t>(g.C.rows()));
@@ -65,6 +67,10 @@ class BlockPreconditioner final : public InterfacePreconditioner {
   }
 
   SparseMatrix apply_columns(const BlockSystem&, const SparseMatrix& X) const override {
+    if (spread_)
+      throw std::invalid_argument(
+          "the mixed method over MPI does not spread the preconditioner-weighted projector: solver.projector must be "
+          "identity");
     const SparseMatrix Xs = scale_columns(X);
     std::vector<std::vector<Eigen::Triplet<double, int>>> parts(blocks_.size());
     for_each_group(blocks_.size(), threads_, [&](size_t i) {
@@ -98,6 +104,7 @@ class BlockPreconditioner final : public InterfacePreconditioner {
     Eigen::VectorXd z = Eigen::VectorXd::Zero(r.size());
     for (size_t i = 0; i < blocks_.size(); ++i)
       if (!blocks_[i].boundary.empty()) z += blocks_[i].WCb * s[i];
+    if (spread_) spread_->sum(z);  // the other processes' groups
     return scale(z);
   }
 
@@ -160,15 +167,17 @@ class BlockPreconditioner final : public InterfacePreconditioner {
 
   bool dirichlet_;
   int threads_;
+  std::shared_ptr<const GroupDistribution> spread_;
   std::vector<GroupBlocks> blocks_;
   std::pair<long, long> glue_{0, 0};  // first row, count
   std::unique_ptr<Factorization> BBt_;
 };
 }  // namespace
 
-std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(Preconditioner kind, int threads) {
+std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(
+    Preconditioner kind, int threads, std::shared_ptr<const GroupDistribution> spread) {
   if (kind == Preconditioner::None) return nullptr;
-  return std::make_unique<BlockPreconditioner>(kind == Preconditioner::Dirichlet, threads);
+  return std::make_unique<BlockPreconditioner>(kind == Preconditioner::Dirichlet, threads, std::move(spread));
 }
 
 }  // namespace rollsim

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "solve/BlockSystem.h"
+#include "solve/GroupDistribution.h"
 #include "solve/SolverOptions.h"
 
 namespace rollsim {
@@ -27,7 +28,9 @@ class InterfacePreconditioner {
 };
 
 /// None gives nullptr. `threads`: the groups' blocks are set up and applied concurrently (summed in group order: the
-/// result does not depend on it).
-std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(Preconditioner kind, int threads = 1);
+/// result does not depend on it). `spread`: the groups over processes — each sets up and applies the blocks of the
+/// groups it holds, apply() sums over the processes; apply_columns() is then refused (std::invalid_argument).
+std::unique_ptr<InterfacePreconditioner> make_interface_preconditioner(
+    Preconditioner kind, int threads = 1, std::shared_ptr<const GroupDistribution> spread = nullptr);
 
 }  // namespace rollsim

@@ -17,12 +17,14 @@ MixedStrategy::MixedStrategy(SolverOptions options, bool subdomains, std::string
     : options_(std::move(options)),
       subdomains_(subdomains),
       spread_(std::move(spread)),
-      preconditioner_(subdomains ? make_interface_preconditioner(options_.preconditioner, options_.threads) : nullptr),
+      preconditioner_(subdomains ? make_interface_preconditioner(options_.preconditioner, options_.threads, spread_)
+                                 : nullptr),
       kind_(std::move(factorization)) {
-  if (spread_ && (preconditioner_ || options_.interface_solver == InterfaceSolver::Dense))
+  if (spread_ && (options_.interface_solver == InterfaceSolver::Dense ||
+                  (preconditioner_ && options_.projector == ProjectorMetric::Preconditioner)))
     throw std::invalid_argument(
-        "the mixed method over MPI (petsc_method: mixed) solves its interface by projected CG / GMRES without a "
-        "preconditioner: solver.preconditioner must be none and solver.interface_solver krylov");
+        "the mixed method over MPI (petsc_method: mixed) solves its interface by projected CG / GMRES with the "
+        "identity projector: solver.interface_solver must be krylov and solver.projector identity");
 }
 
 std::vector<size_t> MixedStrategy::local_groups(std::vector<size_t> groups) const {

@@ -23,8 +23,8 @@ namespace rollsim {
 class MixedStrategy final : public SolverStrategy {
  public:
   /// `subdomains`: the `feti` flavour (partitioned bodies torn into subdomains, preconditioner from the options).
-  /// `spread`: the groups over processes (null: this process holds them all); spread, the interface preconditioner
-  /// and the dense interface solver are refused (std::invalid_argument) — they are not distributed yet.
+  /// `spread`: the groups over processes (null: this process holds them all); spread, the dense interface solver and
+  /// the preconditioner-weighted projector are refused (std::invalid_argument) — they are not distributed yet.
   MixedStrategy(SolverOptions options, bool subdomains = false, std::string factorization = "cholmod",
                 std::shared_ptr<const GroupDistribution> spread = nullptr);
   BlockSolution solve(const BlockSystem& system, AnalysisObserver* observer = nullptr) override;
