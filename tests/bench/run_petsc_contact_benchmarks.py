@@ -7,6 +7,7 @@ Usage: tests/bench/run_petsc_contact_benchmarks.py [--build DIR] [--out FILE] [-
   --ranks     MPI ranks of the mumps runs (default 1,2,4,8; above 2 oversubscribed on this 2-core machine)
   --repeats   runs of each 2D case whose median wall time is quoted (default 3)
   --with-3d   also the 3D pass 16 x 8 x 4 (samples/rolling-3d-16x8x4.json: about 10 min per run), on 2 ranks
+  --sections  cases,subdomains (default: both): the three 2D passes, the 72 x 12 slab in 1-8 subdomains
 
 Each case runs under `direct` in one process (the reference), under the sample's own mode in one process, and under
 `mpirun -n N --oversubscribe rollsim run --solver petsc --petsc-method mumps | mixed` for every N (mixed: up to the
@@ -15,7 +16,7 @@ summary.json and rolling.csv say: status, Newton iterations, interface CG iterat
 factorizations of the busiest and idlest rank (mixed), roll force and torque, the largest relative difference of any
 rolling.csv entry from direct's, whether the same output files were written, the median wall time and the largest
 peak RSS of any rank (/usr/bin/time -v). A last table tears the 72 x 12 slab into 1-8 subdomains on as many ranks
-plus one.
+plus one (the mixed method without and with FETI's Dirichlet preconditioner, and mumps).
 Nothing is typed in; timing is not a test: this script fails only if a run fails.
 """
 import argparse
@@ -140,11 +141,11 @@ def subdomains(runner, lines, counts, repeats):
               "|---|---|---|---|---|---|---|---|---|---|"]
     for p in counts:
         extra = ["--set", "process.slab_partition=%dx1" % p]
-        for mode in ("mixed", "mumps"):
-            runs = [runner.run("rolling-2d-72x12-dd.json", extra, mode, p + 1) for _ in range(repeats)]
+        for mode, more in (("mixed", []), ("mixed", ["--preconditioner", "dirichlet"]), ("mumps", [])):
+            runs = [runner.run("rolling-2d-72x12-dd.json", extra + more, mode, p + 1) for _ in range(repeats)]
             s, _, _, rss = runs[0]
             lines.append("| %d | %d | %s | %s | %d | %s | %s | %.10g | %.2f | %.0f |" % (
-                p, p + 1, mode, s["status"], s["solver"]["newton_iterations"],
+                p, p + 1, mode + (", Dirichlet" if more else ""), s["status"], s["solver"]["newton_iterations"],
                 "%.1f" % per_newton(s) if s["solver"]["cg_iterations_total"] else "", rank_factorizations(s),
                 s["results"]["rolling"]["roll_force"], statistics.median(r[2] for r in runs), rss))
 
@@ -156,7 +157,9 @@ def main():
     ap.add_argument("--ranks", default="1,2,4,8")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--with-3d", action="store_true")
+    ap.add_argument("--sections", default="cases,subdomains")
     a = ap.parse_args()
+    sections = a.sections.split(",")
     ranks = [int(r) for r in a.ranks.split(",")]
     rollsim = os.path.join(a.build, "app", "rollsim")
     version = subprocess.run([rollsim, "--version"], capture_output=True, text=True).stdout.strip()
@@ -166,9 +169,11 @@ def main():
                  os.cpu_count(), " ".join("%.2f" % x for x in os.getloadavg()), version)]
     with tempfile.TemporaryDirectory(prefix="petsc-contact-") as work:
         runner = Runner(rollsim, work)
-        for title, sample, extra, own in CASES_2D:
-            case(runner, lines, title, sample, extra, own, ranks, a.repeats)
-        subdomains(runner, lines, [1, 2, 4, 8], a.repeats)
+        if "cases" in sections:
+            for title, sample, extra, own in CASES_2D:
+                case(runner, lines, title, sample, extra, own, ranks, a.repeats)
+        if "subdomains" in sections:
+            subdomains(runner, lines, [1, 2, 4, 8], a.repeats)
         if a.with_3d:
             case(runner, lines, *CASE_3D, [2], 1)
     with open(a.out, "w") as f:
