@@ -6,6 +6,10 @@
 // engine knows this interface only, never MPI.
 #include <Eigen/Dense>
 #include <cstddef>
+#include <vector>
+
+#include "solve/BlockSystem.h"
+#include "solve/Factorization.h"
 
 namespace rollsim {
 
@@ -23,5 +27,19 @@ class GroupDistribution {
   /// (the others' are zero) comes back exact: this is also the gather.
   virtual void sum(Eigen::VectorXd& x) const = 0;
 };
+
+/// Every group's kernel R_g as its holder has it (a finite-strain group's R is the kernel of the tangent its holder
+/// assembled; another process's copy is the body's geometric modes), on every process.
+std::vector<Eigen::MatrixXd> shared_kernels(const GroupDistribution& spread, const BlockSystem& sys);
+
+/// Every group's vector (its holder's; the others hold zeros of its size) on every process.
+void share_vectors(const GroupDistribution& spread, std::vector<Eigen::VectorXd>& per_group);
+
+/// Throws the lowest group's SingularMatrix among `failed` (an empty message: that group factored, or another
+/// process holds it); spread (not null), every process throws it alike, with the message of the group's holder.
+void throw_first_failure(const GroupDistribution* spread, const std::vector<SingularMatrix>& failed);
+
+/// More processes than groups: std::invalid_argument naming both counts and the ways out (every process alike).
+void refuse_idle_processes(const GroupDistribution& spread, size_t groups);
 
 }  // namespace rollsim

@@ -34,43 +34,6 @@ std::vector<size_t> MixedStrategy::local_groups(std::vector<size_t> groups) cons
   return mine;
 }
 
-void MixedStrategy::share_kernels(const BlockSystem& sys) {
-  const size_t n = sys.groups.size();
-  Eigen::VectorXd cols = Eigen::VectorXd::Zero(static_cast<long>(n));
-  for (size_t g = 0; g < n; ++g)
-    if (held(g)) cols[static_cast<long>(g)] = static_cast<double>(sys.groups[g].R.cols());
-  sum(cols);
-  std::vector<long> offset(n + 1, 0);
-  for (size_t g = 0; g < n; ++g)
-    offset[g + 1] = offset[g] + sys.groups[g].C.cols() * static_cast<long>(cols[static_cast<long>(g)]);
-  Eigen::VectorXd all = Eigen::VectorXd::Zero(offset[n]);
-  for (size_t g = 0; g < n; ++g)
-    if (held(g)) all.segment(offset[g], offset[g + 1] - offset[g]) = sys.groups[g].R.reshaped();
-  sum(all);
-  kernels_.resize(n);
-  for (size_t g = 0; g < n; ++g)
-    kernels_[g] = all.segment(offset[g], offset[g + 1] - offset[g])
-                      .reshaped(sys.groups[g].C.cols(), static_cast<long>(cols[static_cast<long>(g)]));
-}
-
-void MixedStrategy::share_displacements(std::vector<Eigen::VectorXd>& u) const {
-  if (!spread_) return;
-  long size = 0;
-  for (const Eigen::VectorXd& x : u) size += x.size();
-  Eigen::VectorXd all(size);
-  long at = 0;
-  for (const Eigen::VectorXd& x : u) {
-    all.segment(at, x.size()) = x;
-    at += x.size();
-  }
-  sum(all);
-  at = 0;
-  for (Eigen::VectorXd& x : u) {
-    x = all.segment(at, x.size());
-    at += x.size();
-  }
-}
-
 Eigen::VectorXd MixedStrategy::sum_over_groups(const BlockSystem& sys,
                                                const std::function<Eigen::VectorXd(size_t)>& op) const {
   const size_t n = sys.groups.size();
@@ -85,53 +48,9 @@ Eigen::VectorXd MixedStrategy::sum_over_groups(const BlockSystem& sys,
   return y;
 }
 
-void MixedStrategy::throw_first_failure(const std::vector<SingularMatrix>& failed) const {
-  const auto first = [&]() -> long {
-    for (size_t g = 0; g < failed.size(); ++g)
-      if (held(g) && *failed[g].what()) return static_cast<long>(g);
-    return -1;
-  };
-  if (!spread_) {
-    if (const long g = first(); g >= 0) throw failed[static_cast<size_t>(g)];
-    return;
-  }
-  // spread: every process throws together — the lowest failed group's message and column, from its holder
-  Eigen::VectorXd flags = Eigen::VectorXd::Zero(static_cast<long>(failed.size()));
-  for (size_t g = 0; g < failed.size(); ++g) flags[static_cast<long>(g)] = held(g) && *failed[g].what() ? 1 : 0;
-  sum(flags);
-  long g = 0;
-  while (g < flags.size() && flags[g] == 0) ++g;
-  if (g == flags.size()) return;
-  constexpr long kLength = 400;
-  Eigen::VectorXd text = Eigen::VectorXd::Zero(kLength + 1);
-  if (held(static_cast<size_t>(g))) {
-    const std::string what = failed[static_cast<size_t>(g)].what();
-    for (long i = 0; i < std::min<long>(kLength, static_cast<long>(what.size())); ++i)
-      text[i] = static_cast<unsigned char>(what[static_cast<size_t>(i)]);
-    text[kLength] = failed[static_cast<size_t>(g)].column;
-  }
-  sum(text);
-  std::string what;
-  for (long i = 0; i < kLength && text[i] != 0; ++i) what += static_cast<char>(text[i]);
-  throw SingularMatrix(what, static_cast<int>(text[kLength]));
-}
-
-void MixedStrategy::refuse_idle_ranks(const BlockSystem& sys) const {
-  const size_t groups = sys.groups.size();
-  if (!spread_ || static_cast<size_t>(spread_->processes()) <= groups) return;
-  const std::string P = std::to_string(spread_->processes()), G = std::to_string(groups);
-  throw std::invalid_argument(
-      "petsc (mixed): " + P + " MPI ranks for " + G +
-      " groups (bodies and subdomains): the mixed method gives each "
-      "rank whole groups, so ranks " +
-      G + " to " + std::to_string(spread_->processes() - 1) + " would hold none — start it with mpirun -n " + G +
-      " or fewer, tear a body into more subdomains "
-      "(process.slab_partition, a body's partition), or use --petsc-method mumps, which takes any number of ranks");
-}
-
 void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* observer) {
   if (groups_.size() != sys.groups.size()) {
-    refuse_idle_ranks(sys);
+    if (spread_) refuse_idle_processes(*spread_, sys.groups.size());
     groups_.clear();
     for (size_t g = 0; g < sys.groups.size(); ++g) groups_.emplace_back(kind_);
     flexibility_.assign(sys.groups.size(), InterfaceFlexibility());
@@ -155,7 +74,7 @@ void MixedStrategy::factorize_changed(const BlockSystem& sys, AnalysisObserver* 
       failed[todo[i]] = SingularMatrix(e.what(), e.column < 0 ? -1 : static_cast<int>(offset + e.column));
     }
   });
-  throw_first_failure(failed);
+  throw_first_failure(spread_.get(), failed);
   for (size_t g : changed) {
     if (spread_) stats_.ranks[sys.groups[g].name] = spread_->holder(g);
     factored_version_[g] = sys.groups[g].version;
@@ -360,7 +279,7 @@ BlockSolution MixedStrategy::solve_plain(const BlockSystem& sys, AnalysisObserve
     preconditioned_C_.clear();
     for (const Group& g : sys.groups) preconditioned_C_.push_back(g.C);
   }
-  if (spread_) share_kernels(sys);
+  if (spread_) kernels_ = shared_kernels(*spread_, sys);
   std::vector<Eigen::VectorXd> Kf(sys.groups.size());
   for_each_group(sys.groups.size(), options_.threads, [&](size_t g) {
     if (held(g)) Kf[g] = groups_[g].apply(sys.groups[g].f);
@@ -395,7 +314,7 @@ BlockSolution MixedStrategy::solve_plain(const BlockSystem& sys, AnalysisObserve
     if (R.cols()) u += R * last_.alpha.segment(first_mode[g], R.cols());  // paper eq. (5)
     out.u[g] = std::move(u);
   });
-  share_displacements(out.u);
+  if (spread_) share_vectors(*spread_, out.u);
   stats_.solve_s += t.seconds();
   if (observer) observer->on_solve_end(solve, last_.iterations);
   return out;

@@ -78,18 +78,10 @@ class MixedStrategy final : public SolverStrategy {
     if (spread_) spread_->sum(x);
   }
   /// Group g's kernel R_g as its holder has it (a finite-strain group's R is the kernel of the tangent it assembled):
-  /// spread, shared by share_kernels() at the start of each solve.
+  /// spread, shared (shared_kernels) at the start of each solve.
   const Eigen::MatrixXd& kernel(const BlockSystem& sys, size_t g) const {
     return spread_ ? kernels_[g] : sys.groups[g].R;
   }
-  void share_kernels(const BlockSystem& sys);
-  /// Throws the lowest group's SingularMatrix among `failed` (an empty message: that group factored) — spread, on
-  /// every process alike, with the message of the group's holder.
-  void throw_first_failure(const std::vector<SingularMatrix>& failed) const;
-  /// Spread over more processes than groups: std::invalid_argument (every process alike), naming both counts.
-  void refuse_idle_ranks(const BlockSystem& sys) const;
-  /// Spread: every group's u from its holder, on every process.
-  void share_displacements(std::vector<Eigen::VectorXd>& u) const;
   const SparseMatrix& weighted_modes(const BlockSystem& sys, const SparseMatrix& G, bool preconditioner_changed);
 
   SolverOptions options_;
