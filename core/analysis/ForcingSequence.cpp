@@ -16,7 +16,7 @@ ForcingSequence::ForcingSequence(Forcing kind, double loosest, double floor)
 void ForcingSequence::restart() { last_residual_ = last_eta_ = 0; }
 
 InterfaceTolerance ForcingSequence::next(double residual, bool balanced, double enough) {
-  if (kind_ == Forcing::Fixed) return {loosest_, 0};
+  if (kind_ == Forcing::Fixed) return {loosest_, 0, false, enough};  // and the constraints met to Newton's check
   double eta = balanced ? floor_ : loosest_;
   if (!balanced && last_eta_ > 0 && last_residual_ > 0) {
     eta = kGamma * std::pow(residual / last_residual_, kAlpha);

@@ -217,6 +217,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   }
   if (!st.ranks.empty()) s["solver"]["ranks"] = ranks_section(st);
   if (st.interface_columns > 0) s["solver"]["interface_columns"] = st.interface_columns;
+  if (st.extra_interface_iterations > 0) s["solver"]["extra_interface_iterations"] = st.extra_interface_iterations;
   if (st.factor.min_pivot_ratio > 0) s["solver"]["min_pivot_ratio"] = st.factor.min_pivot_ratio;
   s["analysis"] = r.update_policy.empty() ? "linear" : "newton";
   if (!r.update_policy.empty()) {

@@ -16,17 +16,18 @@ json echo(const std::vector<BoundField<S>>& table, const S& value) {
   return out;
 }
 /// A fixed interface tolerance above Newton's own: the interface solve's λ is the total multiplier, so every solve
-/// leaves constraint errors of up to that share of the whole interface's data however close Newton is — more than
-/// its constraint and projection checks accept (the paper's pass at 1e-4 balanced its residual and then ran out of
-/// iterations on the projection check).
+/// would leave constraint errors of up to that share of the whole interface's data however close Newton is — more
+/// than its constraint and projection checks accept (the paper's pass at 1e-4 balanced its residual and then ran out
+/// of iterations on the projection check, before the solves went on to the check's bound: InterfaceTolerance::at_most).
 std::vector<std::string> forcing_warnings(double cg_tolerance, const NewtonOptions& n) {
   if (n.forcing != Forcing::Fixed || cg_tolerance <= n.tolerance) return {};
-  char w[400];
+  char w[520];
   std::snprintf(w, sizeof w,
-                "solver.cg_tolerance %.3g is above analysis.tolerance %.3g: under analysis.forcing 'fixed' every "
-                "interface solve leaves constraint errors Newton's checks do not accept, so its steps will be cut "
-                "back and the run may diverge; leave it unset (%.3g), or take analysis.forcing 'eisenstat_walker', "
-                "under which it is only the loosest tolerance",
+                "solver.cg_tolerance %.3g is above analysis.tolerance %.3g: under analysis.forcing 'fixed' an "
+                "interface solve stopped there leaves constraint errors Newton's checks do not accept, so each goes "
+                "on until they are met (cg_tolerance is an upper bound; summary.json solver.extra_interface_iterations "
+                "counts what that cost); leave it unset (%.3g), or take analysis.forcing 'eisenstat_walker', under "
+                "which it is only the loosest tolerance",
                 cg_tolerance, n.tolerance, kInterfaceTolerancePerNewton * n.tolerance);
   return {w};
 }

@@ -193,7 +193,7 @@ Eigen::MatrixXd MixedStrategy::formed_interface(const BlockSystem& sys) {
 ProjectedCGOptions MixedStrategy::krylov_options(const BlockSystem& sys, int solve) {
   const InterfaceTolerance& t = sys.interface_tolerance;
   last_tolerance_ = t.relative > 0 ? t.relative : options_.cg_tolerance;
-  return {last_tolerance_, options_.max_interface_iterations, {}, solve, t.absolute, t.from_last};
+  return {last_tolerance_, options_.max_interface_iterations, {}, solve, t.absolute, t.from_last, t.at_most};
 }
 
 ProjectedCGResult MixedStrategy::solve_interface(const BlockSystem& sys, InterfaceProblem& problem,
@@ -287,6 +287,7 @@ BlockSolution MixedStrategy::solve_plain(const BlockSystem& sys, AnalysisObserve
   InterfaceProblem problem = interface_problem(sys, Kf);
   last_ = solve_interface(sys, problem, new_preconditioner, solve, observer);
   stats_.cg_iterations += last_.iterations;
+  stats_.extra_interface_iterations += last_.extra_iterations;
   stats_.cg_lambda_min = last_.lambda_min;
   stats_.cg_lambda_max = last_.lambda_max;
   BlockSolution out;

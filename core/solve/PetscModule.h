@@ -12,8 +12,9 @@
 
 namespace rollsim {
 
-inline constexpr int kPetscModuleAbi = 6;  // 2: SolverOptions holds enums; 3: max_interface_iterations; 4:
-                                           // BlockSystem::interface_tolerance; 5: mumps; 6: mixed (distribution)
+inline constexpr int kPetscModuleAbi = 7;  // 2: SolverOptions holds enums; 3: max_interface_iterations; 4:
+                                           // BlockSystem::interface_tolerance; 5: mumps; 6: mixed (distribution);
+                                           // 7: InterfaceTolerance::at_most
 inline constexpr const char* kPetscModuleFile = "rollsim_petsc.so";       // beside the executable
 inline constexpr const char* kPetscModuleEnv = "ROLLSIM_PETSC_MODULE";    // overrides where it is
 inline constexpr const char* kPetscModuleEntry = "rollsim_petsc_module";  // its one exported symbol

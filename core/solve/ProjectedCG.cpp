@@ -76,13 +76,15 @@ ProjectedCGResult projected_cg(const InterfaceProblem& p, const ProjectedCGOptio
     if (wg.norm() < w0) res.lambda = std::move(guess), r = std::move(rg), w = std::move(wg);
   }
   res.residuals.push_back(w0 > floor ? w.norm() / w0 : 0.0);
-  const double target = std::max(o.tolerance * (o.relative_to_start ? w.norm() : w0), o.absolute);
+  const double relaxed = std::max(o.tolerance * (o.relative_to_start ? w.norm() : w0), o.absolute);
+  const double target = o.at_most > 0 ? std::min(relaxed, o.at_most) : relaxed;
   res.max_constraint_error = constraint_error(G, p.e, res.lambda, g_max);
   Eigen::VectorXd dir;
   double wy_prev = 0;
   std::vector<double> steps, updates;  // CG's a_k, b_k for the eigenvalue estimate
   res.converged = w0 <= floor || w.norm() <= target;
   while (!res.converged && res.iterations < o.max_iterations) {
+    res.extra_iterations += w.norm() <= relaxed;  // on only for the constraints' bound
     const Eigen::VectorXd y = P.direction(o.preconditioner ? o.preconditioner(w) : w);
     const double wy = w.dot(y);
     const double update = res.iterations == 0 ? 0.0 : wy / wy_prev;

@@ -43,6 +43,7 @@ struct ProjectedCGOptions {
   int solve = 1;                   // the linear solve's number, reported with every iteration
   double absolute = 0;             // or on ‖Pᵀ r_k‖ itself (0: none): converged at the larger of the two
   bool relative_to_start = false;  // `tolerance` of the start's residual (the guess's, when it is kept), not of w_0
+  double at_most = 0;              // and ‖Pᵀ r_k‖ at most this, whatever the two above allow (0: no bound)
 };
 
 struct ProjectedCGResult {
@@ -51,6 +52,7 @@ struct ProjectedCGResult {
   bool converged = false;
   bool breakdown = false;         // stopped on non-positive curvature or a NaN (F not positive definite on ker Gᵀ)
   bool round_off = false;         // stopped at the round-off floor (1e-14 of the data) above the tolerance
+  int extra_iterations = 0;       // iterations only ProjectedCGOptions::at_most asked for (within the tolerance)
   bool cancelled = false;         // the observer asked to stop: λ, α are the last iterate (Gᵀλ = e holds)
   std::vector<double> residuals;  // ‖Pᵀ r_k‖ / ‖Pᵀ r_0‖, k = 0..iterations
   /// Extreme eigenvalues of the (preconditioned, projected) operator estimated from the CG coefficients (the

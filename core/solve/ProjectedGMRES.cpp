@@ -58,8 +58,9 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
   }
   res.residuals.push_back(r0 > floor ? r.norm() / r0 : 0.0);
   // the relative tolerance (of the start's residual, when asked), or the absolute one, as a residual relative to r0
-  const double tolerance =
+  const double relaxed =
       std::max(o.tolerance * (o.relative_to_start ? res.residuals[0] : 1.0), r0 > 0 ? o.absolute / r0 : 0.0);
+  const double tolerance = o.at_most > 0 && r0 > 0 ? std::min(relaxed, o.at_most / r0) : relaxed;
   res.converged = r0 <= floor || res.residuals[0] <= tolerance;
   while (!res.converged && !res.breakdown && !res.cancelled && res.iterations < o.max_iterations) {
     const double beta = r.norm();
@@ -69,6 +70,7 @@ ProjectedCGResult projected_gmres(const InterfaceProblem& p, const ProjectedCGOp
     std::vector<Eigen::VectorXd> V{r / beta}, Z;
     int k = 0;
     for (; k < kRestart && res.iterations < o.max_iterations; ++k) {
+      res.extra_iterations += res.residuals.back() <= relaxed;  // on only for the constraints' bound
       Z.push_back(o.preconditioner ? P.direction(o.preconditioner(V[k])) : V[k]);
       Eigen::VectorXd w = P.direction(p.F(Z[k]));
       for (int i = 0; i <= k; ++i) {

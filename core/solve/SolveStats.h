@@ -25,6 +25,9 @@ struct SolveStats {
   std::map<std::string, int> ranks;            // groups spread over MPI ranks (petsc_method: mixed): each one's holder
   std::vector<double> rank_factorize_s;        // and each rank's analysis and factorization seconds so far
   long cg_iterations = 0;
+  /// Interface iterations done past solver.cg_tolerance only to meet Newton's constraint check
+  /// (InterfaceTolerance::at_most): what a cg_tolerance too loose for the constraints cost.
+  long extra_interface_iterations = 0;
   /// The dense interface solver's columns of K⁺ solved for (InterfaceFlexibility), over all groups and solves:
   /// each about one forward and back substitution's work, done many at a time.
   long interface_columns = 0;

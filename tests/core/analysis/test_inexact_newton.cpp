@@ -63,19 +63,19 @@ TEST(InexactNewton, EisenstatWalkerEndsAtTheForceOfAFixedTightTolerance) {
   EXPECT_LT(ew.solver.cg_iterations, fixed.solver.cg_iterations);
 }
 
-TEST(InexactNewton, AStepWithAnUnmetGlueRowIsNotAccepted) {
-  const Results loose = run(pressed_block("feti", 0.5, "fixed"));
-  ASSERT_EQ(loose.status.status, Status::diverged) << loose.status.message;
-  EXPECT_NE(loose.status.message.find("the constraint check failed: a contact or glue row is unmet by "),
-            std::string::npos)
-      << loose.status.message;
-  EXPECT_NE(loose.status.message.find("a tighter solver.cg_tolerance (now 0.5)"), std::string::npos)
-      << loose.status.message;
-  const Results ew = run(pressed_block("feti", 0.5, "eisenstat_walker"));
+// A glue tolerance of 0.5 under `fixed`: an interface solve stopped there leaves the glue rows unmet by more than
+// Newton's check accepts (until 2026-11-29 the step was refused, then the run diverged); each solve now goes on
+// until they are met, and the answer is direct's — as under eisenstat_walker, which starts from the same 0.5.
+TEST(InexactNewton, AGlueRowIsMetWhateverTheFixedTolerance) {
   const Results direct = run(pressed_block("direct", 1e-10, "fixed"));
-  ASSERT_TRUE(ew.status.ok() && direct.status.ok()) << ew.status.message << direct.status.message;
-  const Eigen::VectorXd& u = ew.bodies[0].displacement;
-  EXPECT_LT((u - direct.bodies[0].displacement).lpNorm<Eigen::Infinity>(), 1e-7 * u.lpNorm<Eigen::Infinity>());
+  for (const char* forcing : {"fixed", "eisenstat_walker"}) {
+    const Results loose = run(pressed_block("feti", 0.5, forcing));
+    ASSERT_TRUE(loose.status.ok() && direct.status.ok()) << forcing << loose.status.message << direct.status.message;
+    const Eigen::VectorXd& u = loose.bodies[0].displacement;
+    EXPECT_LT((u - direct.bodies[0].displacement).lpNorm<Eigen::Infinity>(), 1e-7 * u.lpNorm<Eigen::Infinity>())
+        << forcing;
+  }
+  EXPECT_GT(run(pressed_block("feti", 0.5, "fixed")).solver.extra_interface_iterations, 0) << "what 0.5 cost";
 }
 
 }  // namespace test_inexact_newton
