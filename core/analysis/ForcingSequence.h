@@ -18,8 +18,9 @@ class ForcingSequence {
   /// The next solve's tolerance from the Newton residual ‖r_k‖ of the iterate it corrects: η_k, the floor where that
   /// iterate is `balanced` (it solves again only to meet a check: the constraint rows, the contact statuses); under
   /// eisenstat_walker with the constraint error `enough` as an absolute tolerance (solving below it spends
-  /// iterations the Newton checks do not ask for). fixed: {loosest, 0}, and at most `enough` (the relative tolerance of
-  /// the total multipliers' residual may leave the constraint rows unmet by more than Newton's check accepts).
+  /// iterations the Newton checks do not ask for). fixed: {loosest, 0}, and for a balanced iterate at most `enough`
+  /// (the relative tolerance of the total multipliers' residual may leave the constraint rows unmet by more than
+  /// Newton's check accepts).
   InterfaceTolerance next(double residual, bool balanced, double enough);
   double floor() const { return floor_; }
 

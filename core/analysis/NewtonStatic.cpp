@@ -470,7 +470,9 @@ Iterate NewtonRun::measure(double residual, double first, int k, const std::vect
 
 std::string NewtonRun::unmet_check(const Iterate& it) const {
   const std::string ratio = "the residual ratio " + four_digits(it.relative);
-  if (!it.balanced) return ratio + " is above its tolerance " + four_digits(opt_.tolerance) + " (analysis.tolerance)";
+  if (!it.balanced)  // an interface solved more loosely than Newton's own tolerance stalls the residual too
+    return ratio + " is above its tolerance " + four_digits(opt_.tolerance) + " (analysis.tolerance)" +
+           (solver_.options().cg_tolerance > opt_.tolerance ? interface_hint() : "");
   const std::string but = ratio + " is within its tolerance " + four_digits(opt_.tolerance) + ", but ";
   if (!lambda_valid_ || it.changed)
     return but + "the contact check failed: " + std::to_string(it.changed) +

@@ -23,11 +23,11 @@ std::vector<std::string> forcing_warnings(double cg_tolerance, const NewtonOptio
   if (n.forcing != Forcing::Fixed || cg_tolerance <= n.tolerance) return {};
   char w[520];
   std::snprintf(w, sizeof w,
-                "solver.cg_tolerance %.3g is above analysis.tolerance %.3g: under analysis.forcing 'fixed' an "
-                "interface solve stopped there leaves constraint errors Newton's checks do not accept, so each goes "
-                "on until they are met (cg_tolerance is an upper bound; summary.json solver.extra_interface_iterations "
-                "counts what that cost); leave it unset (%.3g), or take analysis.forcing 'eisenstat_walker', under "
-                "which it is only the loosest tolerance",
+                "solver.cg_tolerance %.3g is above analysis.tolerance %.3g: under analysis.forcing 'fixed' every "
+                "interface solve leaves errors Newton's checks do not accept, so its steps may be cut back and the "
+                "run may diverge (once a residual is balanced, its solves go on until the constraint rows are met: "
+                "summary.json solver.extra_interface_iterations); leave it unset (%.3g), or take analysis.forcing "
+                "'eisenstat_walker', under which it is only the loosest tolerance",
                 cg_tolerance, n.tolerance, kInterfaceTolerancePerNewton * n.tolerance);
   return {w};
 }

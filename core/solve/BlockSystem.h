@@ -78,6 +78,7 @@ struct InterfaceTolerance {
   // And at most this on ‖Pᵀr_k‖ (0: no bound): the constraint accuracy Newton's check needs, reached whatever the
   // relative tolerance allows — a relative tolerance of a large first residual (the total multipliers') can leave
   // glue and contact rows unmet by more than the check accepts (a slab in 8 subdomains: 4.2e-7 against 2.0e-8).
+  // The fixed forcing asks for it once the residual is balanced (analysis/ForcingSequence).
   double at_most = 0;
 };
 

@@ -64,8 +64,9 @@ TEST(InexactNewton, EisenstatWalkerEndsAtTheForceOfAFixedTightTolerance) {
 }
 
 // A glue tolerance of 0.5 under `fixed`: an interface solve stopped there leaves the glue rows unmet by more than
-// Newton's check accepts (until 2026-11-29 the step was refused, then the run diverged); each solve now goes on
-// until they are met, and the answer is direct's — as under eisenstat_walker, which starts from the same 0.5.
+// Newton's check accepts (until 2026-11-29 the step was refused, then the run diverged); once the residual is
+// balanced each solve now goes on until they are met, and the answer is direct's — as under eisenstat_walker, which
+// starts from the same 0.5.
 TEST(InexactNewton, AGlueRowIsMetWhateverTheFixedTolerance) {
   const Results direct = run(pressed_block("direct", 1e-10, "fixed"));
   for (const char* forcing : {"fixed", "eisenstat_walker"}) {
