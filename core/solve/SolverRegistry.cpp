@@ -26,8 +26,9 @@ const std::vector<StrategyInfo>& solver_registry() {
        [](const SolverOptions& o) { return std::make_unique<MixedStrategy>(o, true); }},
       {"petsc",
        "PETSc (optional build) over MPI (mpirun -n P), linear or Newton: the subdomains as an unassembled MATIS "
-       "matrix, one per rank, solved by PCBDDC in CG or KSPFETIDP (contact-free), or paper eq. (1) whole — contact "
-       "of every kind — factored by MUMPS on any number of ranks (--petsc-method)",
+       "matrix, one per rank, solved by PCBDDC in CG or KSPFETIDP (contact-free); with contact of every kind, the "
+       "paper's mixed method with each rank's own groups, or paper eq. (1) whole factored by MUMPS on any number of "
+       "ranks (--petsc-method)",
        [](const SolverOptions& o) { return make_petsc_strategy(o); }},
   };
   return registry;
