@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "solve/Factorization.h"
+#include "solve/SparseCompare.h"
 
 namespace rollsim {
 
@@ -51,6 +52,27 @@ SparseMatrix bordered_matrix(const BlockSystem& sys, const std::vector<int>& kep
   SparseMatrix A(size, size);
   A.setFromTriplets(t.begin(), t.end());
   return A;
+}
+
+bool BorderedFactorKey::matches(const BlockSystem& sys) const {
+  if (versions_.empty() || versions_.size() != sys.groups.size() || !same_matrix(coupling_, sys.coupling)) return false;
+  for (size_t g = 0; g < sys.groups.size(); ++g)
+    if (versions_[g] != sys.groups[g].version || !same_matrix(C_[g], sys.groups[g].C) ||
+        !same_matrix(C_eq_[g], sys.groups[g].C_eq))
+      return false;
+  return true;
+}
+
+void BorderedFactorKey::record(const BlockSystem& sys) {
+  versions_.clear();
+  C_.clear();
+  C_eq_.clear();
+  coupling_ = sys.coupling;
+  for (const Group& g : sys.groups) {
+    versions_.push_back(g.version);
+    C_.push_back(g.C);
+    C_eq_.push_back(g.C_eq);
+  }
 }
 
 void check_backward_error(double error) {

@@ -20,6 +20,21 @@ Triplets bordered_entries(const BlockSystem& sys, const std::vector<int>& kept, 
 /// The whole bordered matrix of `sys` with the constraint rows `kept`: (n + kept) × (n + kept).
 SparseMatrix bordered_matrix(const BlockSystem& sys, const std::vector<int>& kept);
 
+/// What a factor of the bordered matrix was made from — every group's stiffness version and constraint blocks, and the
+/// coupling stiffness: the factor still belongs to a system exactly when all of them are the same (`direct` and
+/// `petsc`'s mumps refactor then, and only then).
+class BorderedFactorKey {
+ public:
+  bool matches(const BlockSystem& sys) const;
+  void record(const BlockSystem& sys);
+  void clear() { versions_.clear(); }
+
+ private:
+  std::vector<long> versions_;  // empty: nothing recorded
+  std::vector<SparseMatrix> C_, C_eq_;
+  SparseMatrix coupling_;
+};
+
 /// Refuses a solve whose normwise backward error ‖A x − f‖∞ / (‖A‖∞ ‖x‖∞ + ‖f‖∞) is above 1e-8 (round-off is ~1e-16
 /// for a stable factorization of a regular matrix): SingularMatrix — the factor does not represent A, a pivot lost
 /// to cancellation that the factorization's own tests let through (UMFPACK and MUMPS stop only at a zero pivot).

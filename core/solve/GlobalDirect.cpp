@@ -34,16 +34,6 @@ void GlobalDirect::add_times(const FactorStats& s) {
   earlier_flops_ += s.flops_total();
 }
 
-bool GlobalDirect::factored(const BlockSystem& sys) const {
-  if (!factor_ || factored_versions_.size() != sys.groups.size() || !same_matrix(factored_coupling_, sys.coupling))
-    return false;
-  for (size_t g = 0; g < sys.groups.size(); ++g)
-    if (factored_versions_[g] != sys.groups[g].version || !same_matrix(factored_C_[g], sys.groups[g].C) ||
-        !same_matrix(factored_C_eq_[g], sys.groups[g].C_eq))
-      return false;
-  return true;
-}
-
 void GlobalDirect::factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer) {
   const long m = static_cast<long>(basis_.kept.size());
   if (!factor_ || trailing_ != m || !analyzed_.matches(A)) {  // an active-set swap changes the pattern
@@ -53,15 +43,9 @@ void GlobalDirect::factorize(const BlockSystem& sys, const SparseMatrix& A, Anal
     trailing_ = m;
     factor_->analyze(A);
   }
-  factored_versions_.clear();
-  factored_C_.clear();
-  factored_C_eq_.clear();
-  factored_coupling_ = sys.coupling;
   factor_->factorize(A);
+  key_.record(sys);
   for (const Group& g : sys.groups) {
-    factored_versions_.push_back(g.version);
-    factored_C_.push_back(g.C);
-    factored_C_eq_.push_back(g.C_eq);
     ++stats_.factorizations[g.name];
     if (observer) observer->on_factorization(g.name);
   }
@@ -74,7 +58,8 @@ BlockSolution GlobalDirect::solve(const BlockSystem& sys, AnalysisObserver* obse
                                 std::to_string(sys.num_rigid_modes()) +
                                 " rigid modes held only by contact): use 'direct' or 'mixed'");
   const bool single = sys.groups.size() == 1 && m == 0;
-  const bool refactor = !factored(sys);  // the update policy's versions, or constraint rows that changed
+  const bool refactor =
+      !factor_ || !key_.matches(sys);  // the update policy's versions, or constraint rows that changed
   if (refactor) {
     basis_ = independent_rows(stacked_constraints(sys));
     if (!single) global_ = bordered_matrix(sys, basis_.kept);

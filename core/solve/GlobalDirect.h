@@ -3,6 +3,7 @@
 // constraint rows last once contact exists) factored by a single sparse factorization — again only when a group's
 // version (the update policy) or the constraint rows changed. Linearly dependent constraint rows are left out of the
 // matrix (solve/ConstraintBasis) and their multipliers recovered as the least-norm λ with the same forces.
+#include "solve/BorderedMatrix.h"
 #include "solve/ConstraintBasis.h"
 #include "solve/SolverStrategy.h"
 #include "solve/SparseCompare.h"
@@ -24,13 +25,9 @@ class GlobalDirect final : public SolverStrategy {
   SparseMatrix global_;
   ConstraintBasis basis_;  // the independent constraint rows of the factored matrix (all of them, as a rule)
   void add_times(const FactorStats& s);
-  /// True when the factor belongs to `sys`: every group's version and constraint block as when it was made.
-  bool factored(const BlockSystem& sys) const;
   /// (Re-)analyses when the pattern changed, factors A, records the versions and blocks it holds.
   void factorize(const BlockSystem& sys, const SparseMatrix& A, AnalysisObserver* observer);
-  std::vector<long> factored_versions_;
-  std::vector<SparseMatrix> factored_C_, factored_C_eq_;
-  SparseMatrix factored_coupling_;
+  BorderedFactorKey key_;     // what the factor was made from
   SparsityPattern analyzed_;  // of the last analysis: a new pattern (not only a new size) needs a new one
   long trailing_ = 0;
   FactorStats earlier_;       // times of factors replaced by a new pattern (active-set changes)

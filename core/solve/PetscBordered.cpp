@@ -36,9 +36,6 @@ class PetscBordered final : public SolverStrategy {
   bool assembles_globally() const override { return true; }
 
  private:
-  /// True when the factor belongs to `sys`: every group's version, constraint rows and coupling as when it was made
-  /// (the same on every rank: each runs the Newton driver alike).
-  bool factored(const BlockSystem& sys) const;
   /// A_ from this rank's entries (its groups' K; rank 0 the border), a new matrix and KSP when any rank's positions
   /// changed (an active-set change), else the values only: MUMPS then refactors on the analysis it has.
   void assemble(const BlockSystem& sys);
@@ -55,25 +52,14 @@ class PetscBordered final : public SolverStrategy {
   Mat A_ = nullptr;
   KSP ksp_ = nullptr;
   std::vector<PetscInt> rows_, cols_;  // this rank's entries' positions in A_
-  std::vector<long> versions_;
-  std::vector<SparseMatrix> C_, C_eq_;
-  SparseMatrix coupling_;
+  BorderedFactorKey key_;  // what the factor was made from: the same on every rank (each runs the driver alike)
   bool options_checked_ = false;
 };
 
 void PetscBordered::release() {
   if (ksp_) KSPDestroy(&ksp_);
   if (A_) MatDestroy(&A_);
-  versions_.clear();
-}
-
-bool PetscBordered::factored(const BlockSystem& sys) const {
-  if (!ksp_ || versions_.size() != sys.groups.size() || !same_matrix(coupling_, sys.coupling)) return false;
-  for (size_t g = 0; g < sys.groups.size(); ++g)
-    if (versions_[g] != sys.groups[g].version || !same_matrix(C_[g], sys.groups[g].C) ||
-        !same_matrix(C_eq_[g], sys.groups[g].C_eq))
-      return false;
-  return true;
+  key_.clear();
 }
 
 void PetscBordered::assemble(const BlockSystem& sys) {
@@ -128,14 +114,8 @@ void PetscBordered::factorize(const BlockSystem& sys, AnalysisObserver* observer
   ROLLSIM_PETSC(MatMumpsGetRinfog(F, 3, &flops));  // RINFOG(3): the elimination's flops, all ranks together
   stats_.factor_flops_total += flops;
   stats_.factorize_s += t.seconds();
-  versions_.clear();
-  C_.clear();
-  C_eq_.clear();
-  coupling_ = sys.coupling;
+  key_.record(sys);
   for (const Group& g : sys.groups) {
-    versions_.push_back(g.version);
-    C_.push_back(g.C);
-    C_eq_.push_back(g.C_eq);
     ++stats_.factorizations[g.name];
     if (observer) observer->on_factorization(g.name);
   }
@@ -199,7 +179,7 @@ BlockSolution PetscBordered::solve(const BlockSystem& sys, AnalysisObserver* obs
   petsc::start();
   if (!options_checked_ && !options_.petsc_options.empty())
     ROLLSIM_PETSC(PetscOptionsInsertString(nullptr, options_.petsc_options.c_str()));
-  if (!factored(sys)) factorize(sys, observer);
+  if (!ksp_ || !key_.matches(sys)) factorize(sys, observer);
   Stopwatch t;
   const Eigen::VectorXd x = solve_bordered(sys);
   if (!options_checked_) {  // after a whole solve: every option a viewer or monitor reads has been read

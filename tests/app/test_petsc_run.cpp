@@ -168,15 +168,20 @@ TEST(PetscRun, NewtonPlasticCantileverAgreesWithDirectOnOneTwoAndFourRanks) {
   }
 }
 
-// A load beyond the limit of a perfectly plastic body: the tangent loses its stiffness, PETSc's CG fails, the steps
-// are cut back until none is left — `diverged` naming the increment, on every rank (none left hanging), exit 4.
-TEST(PetscRun, NewtonBeyondTheLimitLoadEndsDivergedOnEveryRank) {
-  const std::string dir = make_temp_dir("petsc-newton-diverged");
-  const std::string file = plastic_cantilever(dir, [](json& j) {
+/// The small cantilever perfectly plastic (no hardening) under a pressure beyond its limit load, one cut-back allowed.
+std::string beyond_the_limit(const std::string& dir) {
+  return plastic_cantilever(dir, [](json& j) {
     j["materials"][0]["hardening_modulus"] = 0.0;
     j["boundary_conditions"][1] = {{"type", "pressure"}, {"body", "beam"}, {"surface", "xmax"}, {"value", 2000.0}};
     j["analysis"]["max_cutbacks"] = 1;
   });
+}
+
+// A load beyond the limit of a perfectly plastic body: the tangent loses its stiffness, PETSc's CG fails, the steps
+// are cut back until none is left — `diverged` naming the increment, on every rank (none left hanging), exit 4.
+TEST(PetscRun, NewtonBeyondTheLimitLoadEndsDivergedOnEveryRank) {
+  const std::string dir = make_temp_dir("petsc-newton-diverged");
+  const std::string file = beyond_the_limit(dir);
   const auto r = mpirun(4, {"run", file, "--solver", "petsc", "--partition", "2x2", "--out", dir + "/out"});
   EXPECT_FALSE(r.timed_out);
   EXPECT_EQ(r.exit_code, 4) << r.err;
@@ -193,11 +198,7 @@ TEST(PetscRun, NewtonBeyondTheLimitLoadEndsDivergedOnEveryRank) {
 // back until none is left — `diverged` naming the increment on every rank, no NaN, exit 4.
 TEST(PetscRun, MumpsBeyondTheLimitLoadEndsDivergedOnEveryRank) {
   const std::string dir = make_temp_dir("petsc-mumps-diverged");
-  const std::string file = plastic_cantilever(dir, [](json& j) {
-    j["materials"][0]["hardening_modulus"] = 0.0;
-    j["boundary_conditions"][1] = {{"type", "pressure"}, {"body", "beam"}, {"surface", "xmax"}, {"value", 2000.0}};
-    j["analysis"]["max_cutbacks"] = 1;
-  });
+  const std::string file = beyond_the_limit(dir);
   const auto r = mpirun(3, {"run", file, "--solver", "petsc", "--petsc-method", "mumps", "--out", dir + "/out"});
   EXPECT_FALSE(r.timed_out);
   EXPECT_EQ(r.exit_code, 4) << r.err;
