@@ -7,6 +7,7 @@
 #include "base/Stopwatch.h"
 #include "solve/BorderedMatrix.h"
 #include "solve/ConstraintBasis.h"
+#include "solve/PetscDistribution.h"
 #include "solve/PetscSupport.h"
 #include "solve/SparseCompare.h"
 
@@ -16,7 +17,7 @@ namespace {
 
 class PetscBordered final : public SolverStrategy {
  public:
-  explicit PetscBordered(SolverOptions options) : options_(std::move(options)) {}
+  explicit PetscBordered(SolverOptions options) : options_(std::move(options)), spread_(mpi_group_distribution()) {}
   ~PetscBordered() override { release(); }
   PetscBordered(const PetscBordered&) = delete;
   PetscBordered& operator=(const PetscBordered&) = delete;
@@ -26,10 +27,9 @@ class PetscBordered final : public SolverStrategy {
   bool uses_subdomains() const override { return true; }  // a partition spreads the assembly over more ranks
   const SolverOptions& options() const override { return options_; }
   std::vector<size_t> local_groups(std::vector<size_t> groups) const override {
-    petsc::start();
-    std::vector<size_t> mine;
+    std::vector<size_t> mine;  // as the mixed method spreads them: group g on rank g mod P
     for (size_t g : groups)
-      if (static_cast<int>(g % static_cast<size_t>(petsc::ranks())) == petsc::rank()) mine.push_back(g);
+      if (spread_->holds(g)) mine.push_back(g);
     return mine;
   }
   bool solves_unsymmetric() const override { return true; }  // LU
@@ -47,6 +47,7 @@ class PetscBordered final : public SolverStrategy {
   void release();
 
   SolverOptions options_;
+  std::shared_ptr<const GroupDistribution> spread_;
   SolveStats stats_;
   ConstraintBasis basis_;
   Mat A_ = nullptr;
