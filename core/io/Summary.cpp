@@ -143,9 +143,7 @@ json remeshes_section(const std::vector<RemeshRecord>& remeshes) {
          {"max_plastic_strain", {{"before", m.plastic_strain_max_before}, {"after", m.plastic_strain_max_after}}}});
   return list;
 }
-}  // namespace
 
-namespace {
 /// Groups spread over MPI ranks: each group's rank, and each rank's groups with their factorizations and the seconds
 /// they took — the selective update per rank (a rank whose groups converged keeps its factors).
 json ranks_section(const SolveStats& st) {

@@ -54,7 +54,7 @@ class PetscBordered final : public SolverStrategy {
   KSP ksp_ = nullptr;
   std::vector<PetscInt> rows_, cols_;  // this rank's entries' positions in A_
   BorderedFactorKey key_;  // what the factor was made from: the same on every rank (each runs the driver alike)
-  bool options_checked_ = false;
+  petsc::PassedOptions passed_{options_.petsc_options, "mumps"};
 };
 
 void PetscBordered::release() {
@@ -178,17 +178,11 @@ Eigen::VectorXd PetscBordered::solve_bordered(const BlockSystem& sys) {
 
 BlockSolution PetscBordered::solve(const BlockSystem& sys, AnalysisObserver* observer) {
   petsc::start();
-  if (!options_checked_ && !options_.petsc_options.empty())
-    ROLLSIM_PETSC(PetscOptionsInsertString(nullptr, options_.petsc_options.c_str()));
+  passed_.insert();
   if (!ksp_ || !key_.matches(sys)) factorize(sys, observer);
   Stopwatch t;
   const Eigen::VectorXd x = solve_bordered(sys);
-  if (!options_checked_) {  // after a whole solve: every option a viewer or monitor reads has been read
-    options_checked_ = true;
-    if (const std::string left = petsc::unused_options(); !left.empty())
-      petsc::refuse_together("petsc: --petsc-options: PETSc did not use " + left +
-                             " (misspelt, or not an option of --petsc-method mumps)");
-  }
+  if (const std::string refusal = passed_.unused(); !refusal.empty()) petsc::refuse_together(refusal);
   BlockSolution out;
   long offset = 0;
   for (const Group& g : sys.groups) {

@@ -26,7 +26,6 @@ namespace {
 
 using petsc::on_all_ranks;
 using petsc::refuse_together;
-using petsc::unused_options;
 
 /// The global dof numbers of every group's free dofs (see the file comment) and this rank's owned range.
 struct Numbering {
@@ -212,7 +211,7 @@ class PetscStrategy final : public SolverStrategy {
   Mat A_ = nullptr;
   KSP ksp_ = nullptr, inner_ = nullptr;  // inner_: FETI-DP's CG on the multipliers (bddc: ksp_ itself)
   std::vector<long> versions_;           // every group's K version at the last set-up: the same on every rank
-  bool options_checked_ = false;
+  petsc::PassedOptions passed_{options_.petsc_options, word(options_.petsc_method)};
 };
 
 void PetscStrategy::release() {
@@ -361,8 +360,7 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   refuse_together(check_system(sys));
   const size_t rank = static_cast<size_t>(petsc::rank());
   const Group& own = sys.groups[rank];
-  if (!options_checked_ && !options_.petsc_options.empty())
-    ROLLSIM_PETSC(PetscOptionsInsertString(nullptr, options_.petsc_options.c_str()));
+  passed_.insert();
   // set-up is collective: every rank sets up again when any group's K changed (a Newton iteration of the selective
   // update may re-assemble one subdomain only) — the driver runs on every rank alike, so the versions are the same
   set_tolerance(sys);
@@ -385,15 +383,10 @@ BlockSolution PetscStrategy::solve(const BlockSystem& sys, AnalysisObserver* obs
   PetscInt its = 0;
   ROLLSIM_PETSC(KSPGetConvergedReason(inner_, &reason));
   ROLLSIM_PETSC(KSPGetIterationNumber(inner_, &its));
-  if (!options_checked_) {  // after a whole solve: every option a viewer or monitor reads has been read
-    options_checked_ = true;
-    const std::string left = unused_options();
-    if (!left.empty()) {
-      VecDestroy(&x);
-      VecDestroy(&b);
-      refuse_together("petsc: --petsc-options: PETSc did not use " + left +
-                      " (misspelt, or not an option of --petsc-method " + word(options_.petsc_method) + ")");
-    }
+  if (const std::string refusal = passed_.unused(); !refusal.empty()) {
+    VecDestroy(&x);
+    VecDestroy(&b);
+    refuse_together(refusal);
   }
   // every rank gets the whole solution: the driver recovers every body from the groups' displacements
   const Eigen::VectorXd all = petsc::on_every_rank(x);

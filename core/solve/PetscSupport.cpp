@@ -54,7 +54,13 @@ void refuse_together(const std::string& message) {
                                               : message);
 }
 
-std::string unused_options() {
+void PassedOptions::insert() const {
+  if (!checked_ && !options_.empty()) ROLLSIM_PETSC(PetscOptionsInsertString(nullptr, options_.c_str()));
+}
+
+std::string PassedOptions::unused() {
+  if (checked_) return "";
+  checked_ = true;
   PetscInt n = 0;
   char **names = nullptr, **values = nullptr;
   ROLLSIM_PETSC(PetscOptionsLeftGet(nullptr, &n, &names, &values));
@@ -65,7 +71,9 @@ std::string unused_options() {
     left += (left.empty() ? "-" : ", -") + name;
   }
   ROLLSIM_PETSC(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
-  return left;
+  if (left.empty()) return "";
+  return "petsc: --petsc-options: PETSc did not use " + left + " (misspelt, or not an option of --petsc-method " +
+         method_ + ")";
 }
 
 Eigen::VectorXd on_every_rank(Vec x) {

@@ -29,7 +29,20 @@ bool on_all_ranks(bool ok);
 void refuse_together(const std::string& message);
 /// The whole of a distributed vector on every rank (VecScatterCreateToAll).
 Eigen::VectorXd on_every_rank(Vec x);
-/// The options nobody asked PETSc for (misspelt, or meant for another method): what --petsc-options must not hold.
-std::string unused_options();
+/// --petsc-options (solver.petsc_options) handed to PETSc before a strategy's first solve and checked after it: an
+/// option PETSc did not use (misspelt, or meant for another method) is refused.
+class PassedOptions {
+ public:
+  PassedOptions(std::string options, std::string method) : options_(std::move(options)), method_(std::move(method)) {}
+  /// Before a solve: the options into PETSc's database, the first time.
+  void insert() const;
+  /// After a whole solve (every option a viewer or monitor reads has been read then), the first time: the message
+  /// refusing what PETSc did not use, "" when it used everything (and every later time). The same on every rank.
+  std::string unused();
+
+ private:
+  std::string options_, method_;
+  bool checked_ = false;
+};
 
 }  // namespace rollsim::petsc

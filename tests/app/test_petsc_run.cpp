@@ -230,6 +230,8 @@ void expect_refused_by_every_rank(int ranks, const std::vector<std::string>& ext
 TEST(PetscRun, RefusesAnOptionPetscDoesNotUseOnEveryRank) {
   expect_refused_by_every_rank(4, {"--petsc-options", "-no_such_option 3"}, "no_such_option");
   expect_refused_by_every_rank(4, {"--petsc-options", "-no_such_option 3"}, "no_such_option", true);
+  expect_refused_by_every_rank(2, {"--petsc-method", "mumps", "--petsc-options", "-no_such_option 3"},
+                               "not an option of --petsc-method mumps", true);
 }
 
 TEST(PetscRun, RefusesARankCountThatIsNotThePartitions) {
