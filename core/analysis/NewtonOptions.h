@@ -75,6 +75,7 @@ struct NewtonOptions {
   double tolerance = 1e-8;               // ‖r_k‖ ≤ tolerance × max(‖r_1‖, ‖r_2‖) of the attempt
   double displacement_tolerance = 1e-2;  // and ‖du_k‖ ≤ this × ‖u − u_n‖ (the step's displacement)
   int max_cutbacks = 8;                  // failed attempts in the whole run before it is declared diverged
+  int first_step_halvings = 0;           // the first step is the nominal one halved this often (then grows back)
   bool line_search = true;               // one secant step along du when the residual's work along it did not halve
   FrictionTangent friction_tangent = FrictionTangent::Consistent;
   FirstTangent first_tangent = FirstTangent::Converged;
@@ -110,6 +111,12 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
                          "grows back by doubling after a step that converges at once) before the run is diverged"),
                    0, 50),
            &N::max_cutbacks),
+      bind(bounded(count("first_step_halvings",
+                         "Newton: the first step is the nominal step halved this often, and grows back by doubling "
+                         "after each step that converges at once — a start from a stress-free state that one whole "
+                         "step would take to a distorted one (an ALE rolling pass takes at least 3)"),
+                   0, 20),
+           &N::first_step_halvings),
       bind(str("friction_tangent",
                "Newton with Coulomb friction: consistent — a slipping point's friction force μ λ_n is solved for with "
                "its normal multiplier (an unsymmetric system: UMFPACK under direct, projected GMRES on the interface "

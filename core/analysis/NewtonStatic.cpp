@@ -9,6 +9,7 @@
 #include <map>
 #include <tuple>
 
+#include "analysis/AleStep.h"
 #include "analysis/ConstraintAssembly.h"
 #include "analysis/ContactResults.h"
 #include "analysis/DriverSteps.h"
@@ -66,14 +67,16 @@ std::string tangent_failure(const std::string& what) {
 class NewtonRun {
  public:
   NewtonRun(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy, AnalysisObserver& obs,
-            const NewtonOptions& opt, const IncrementMeasure* measure)
-      : model_(model),
+            const NewtonOptions& opt, const IncrementMeasure* measure, const MeshMotion* motion)
+      : own_(motion ? std::make_shared<Model>(model) : nullptr),
+        model_(own_ ? *own_ : model),
         measure_(measure),
+        motion_(motion),
         solver_(solver),
         policy_(policy),
         obs_(obs),
         opt_(opt),
-        layout_(model, solver.uses_subdomains(), multiplier_choice(solver.options())),
+        layout_(model_, solver.uses_subdomains(), multiplier_choice(solver.options())),
         forcing_(opt.forcing, solver.options().cg_tolerance, kInterfaceTolerancePerNewton * opt.tolerance) {
     for (const Group& g : layout_.system().groups) u_.push_back(Eigen::VectorXd::Zero(g.R.rows()));
     unfactored_.assign(u_.size(), 0);
@@ -91,6 +94,7 @@ class NewtonRun {
       couple_slip_ = couple_slip_ || p.kind == ContactKind::Coulomb;
     }
     if (model.conducts_heat()) heat_ = std::make_unique<HeatConduction>(model);
+    if (motion_) refuse_ale();
     couple_slip_ = couple_slip_ && opt.friction_tangent == FrictionTangent::Consistent && solver.solves_unsymmetric();
     if (opt.contact_tangent == ContactTangent::Full && !solver.assembles_globally())
       throw AnalysisError(
@@ -163,11 +167,19 @@ class NewtonRun {
   /// With NewtonOptions::remesh_quality: the worst element of a finite-strain plastic body when its corner Jacobian
   /// ratio is below it at load factor lf (the run stops there for a remesh); none otherwise.
   std::optional<RemeshDue> distorted(double lf) const;
+  /// Why this run cannot move body motion_->body() under its material (AnalysisError): a mesh that has no single
+  /// group, conducted heat, a prescribed motion of the body.
+  void refuse_ale() const;
+  /// The ALE step after the converged step ending at lf (AleStep): the moving body's nodes put back, its state
+  /// advected, its displacement zero, its contact points found again; a message when its mesh cannot be put back.
+  std::string ale_step(double lf);
   /// After a converged step: the first element whose corner has folded (ratio ≤ 0 while every Gauss point's det J
   /// stayed positive, which is all a step's assembly checks) is remembered for the run's warning.
   void watch_folds(double lf, int increment);
-  const Model& model_;
+  std::shared_ptr<Model> own_;       // an ALE run's model, whose moving body's reference changes after every step
+  const Model& model_;               // own_, or the model as given
   const IncrementMeasure* measure_;  // a process's measures of each increment, told to the observer (may be null)
+  const MeshMotion* motion_;         // where a body's nodes go after each step (an ALE run), or null
   SolverStrategy& solver_;
   const UpdatePolicy& policy_;
   AnalysisObserver& obs_;
@@ -643,7 +655,15 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
 }
 
 bool NewtonRun::extrapolate(double span) {
-  if (opt_.predictor == Predictor::Tangent || last_span_ <= 0) return false;
+  if (last_span_ <= 0) return false;
+  if (opt_.predictor == Predictor::Tangent && motion_) {
+    // an ALE run: the flowing body's step starts on the mesh the last one started on, so the last step's flow is
+    // this one's guess (a steady flow repeats it), scaled to the span
+    for (size_t g = 0; g < u_.size(); ++g)
+      if (layout_.system().groups[g].body == motion_->body()) u_[g] += (span / last_span_) * last_step_[g];
+    return true;
+  }
+  if (opt_.predictor == Predictor::Tangent) return false;
   if (opt_.predictor == Predictor::Extrapolate || span_before_ <= 0) {
     for (size_t g = 0; g < u_.size(); ++g) u_[g] += (span / last_span_) * last_step_[g];
     return true;
@@ -653,6 +673,50 @@ bool NewtonRun::extrapolate(double span) {
   const double l1 = -s * (s + s1 + s0) / (s1 * s0), l2 = s * (s + s1) / ((s1 + s0) * s0);
   for (size_t g = 0; g < u_.size(); ++g) u_[g] += -(l1 + l2) * last_step_[g] - l2 * step_before_[g];
   return true;
+}
+
+void NewtonRun::refuse_ale() const {
+  const int b = motion_->body();
+  const std::string name = "ALE: body '" + model_.bodies[static_cast<size_t>(b)].name + "' ";
+  int groups = 0;
+  for (const Group& g : layout_.system().groups) groups += g.body == b;
+  if (groups != 1)
+    throw AnalysisError(name +
+                        "is split into subdomains: its mesh moves as one group (a partition of it needs "
+                        "solver mode mixed or direct)");
+  if (heat_) throw AnalysisError(name + "cannot carry conducted temperatures yet: remove the heat conduction");
+  for (const DisplacementBC& bc : model_.displacements) {
+    bool moves = bc.body == b && bc.rotation.has_value();
+    for (const std::optional<double>& v : bc.value) moves = moves || (bc.body == b && v.value_or(0.0) != 0.0);
+    if (moves)
+      throw AnalysisError(name +
+                          "has a prescribed motion: its nodes are put back after every step, so only "
+                          "supports (zero displacements) can hold it");
+  }
+}
+
+std::string NewtonRun::ale_step(double lf) {
+  const int b = motion_->body();
+  const std::vector<Eigen::VectorXd> u = body_displacements(lf);
+  std::vector<MeshMotion::Positions> current;
+  for (size_t k = 0; k < model_.bodies.size(); ++k) current.push_back(displaced_nodes(model_.bodies[k].mesh, u[k]));
+  Body& body = own_->bodies[static_cast<size_t>(b)];
+  AleRemap moved;
+  try {
+    moved = ale_remap(body, u[static_cast<size_t>(b)], layout_.assembler().committed_state(b, body.mesh.num_elements()),
+                      current, *motion_);
+  } catch (const AnalysisError& e) {
+    return e.what();
+  }
+  body.mesh.nodes = std::move(moved.nodes);
+  if (!moved.state.empty()) layout_.assembler().set_committed_state(b, moved.state);
+  const std::vector<Group>& groups = layout_.system().groups;
+  for (size_t g = 0; g < groups.size(); ++g)
+    if (groups[g].body == b)
+      u_[g].setZero();  // its last steps stay: the flow they hold predicts the next (extrapolate)
+  refind_contacts(model_, body_displacements(lf), b, pairs_);
+  save();
+  return "";
 }
 
 Results NewtonRun::run() {
@@ -666,10 +730,10 @@ Results NewtonRun::run() {
   res.interface_multipliers = layout_.interface_multipliers();
   res.paper_convention_multipliers = layout_.paper_convention_multipliers();
   const double nominal = 1.0 / opt_.increments;
-  double lf = 0.0, step = nominal;
   // depth: how many times the step is halved below its nominal size. It limits the step, not the run: a long pass
   // may cut back at many node entries, and a step that keeps shrinking across increments still ends
-  int increment = 0, depth = 0, attempt_no = 0;
+  int increment = 0, depth = opt_.first_step_halvings, attempt_no = 0;
+  double lf = 0.0, step = std::ldexp(nominal, -depth);
   while (lf < 1.0) {
     double target = std::min(1.0, lf + step);
     if (1.0 - target < 1e-12) target = 1.0;
@@ -695,7 +759,7 @@ Results NewtonRun::run() {
     if (!a.cause.empty()) {
       restore();
       refresh_all_ = true;
-      if (depth == opt_.max_cutbacks) {
+      if (depth >= opt_.max_cutbacks) {
         res.status = {Status::diverged, Reason::none,
                       "increment " + std::to_string(increment + 1) + " (load factor " + four_digits(lf) + " to " +
                           four_digits(target) + "): " + a.cause + "; " + std::to_string(depth) +
@@ -733,6 +797,7 @@ Results NewtonRun::run() {
       recover_into(fields, lf);
       inc.bodies = std::move(fields.bodies);
       inc.contacts = std::move(fields.contacts);
+      if (own_) inc.model = std::make_shared<const Model>(*own_);  // the reference its fields are on
     }
     res.increments.push_back(std::move(inc));
     watch_folds(lf, increment);
@@ -744,6 +809,15 @@ Results NewtonRun::run() {
       break;
     }
     if (lf < 1.0 && (res.remesh_due = distorted(lf))) break;
+    if (motion_ && lf < 1.0) {
+      if (const std::string failed = ale_step(lf); !failed.empty()) {
+        res.status = {Status::diverged, Reason::none,
+                      "after increment " + std::to_string(increment) + " (load factor " + four_digits(lf) +
+                          "), the ALE step failed: " + failed};
+        break;
+      }
+      ++res.ale_steps;
+    }
     if (attempt_no == 0 && depth > 0) {  // grow back after a cut-back once a step converges at first attempt
       step *= 2;
       --depth;
@@ -770,9 +844,11 @@ Results NewtonRun::run() {
     obs_.on_stage("recover");
     set_constraints(lf);
     recover_into(res, lf);
+    if (own_) res.model = std::make_shared<const Model>(*own_);
     if (res.status.ok() && !res.increments.empty()) {
       res.increments.back().bodies = res.bodies;
       res.increments.back().contacts = res.contacts;
+      res.increments.back().model = res.model;
     }
     for (size_t b = 0; res.remesh_due && b < model_.bodies.size(); ++b)
       res.bodies[b].point_state =
@@ -785,7 +861,8 @@ Results NewtonRun::run() {
 }  // namespace
 
 Results run_newton_static(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy,
-                          AnalysisObserver* observer, const NewtonOptions& options, const IncrementMeasure* measure) {
+                          AnalysisObserver* observer, const NewtonOptions& options, const IncrementMeasure* measure,
+                          const MeshMotion* motion) {
   if (model.conducts_heat() && !(options.duration > 0))
     throw AnalysisError(
         "heat conduction needs the analysis's time: give analysis.duration (a rolling pass: "
@@ -796,7 +873,8 @@ Results run_newton_static(const Model& model, SolverStrategy& solver, const Upda
   AnalysisObserver quiet;
   AnalysisObserver& obs = observer ? *observer : quiet;
   obs.on_stage("assemble");
-  NewtonRun run(model, solver, policy, obs, options, measure);
+  if (motion) obs.on_stage("ALE: " + motion->describe());
+  NewtonRun run(model, solver, policy, obs, options, measure, motion);
   return run.run();
 }
 

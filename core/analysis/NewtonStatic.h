@@ -14,6 +14,7 @@
 
 #include "analysis/AnalysisError.h"
 #include "analysis/IncrementMeasure.h"
+#include "analysis/MeshMotion.h"
 #include "analysis/NewtonOptions.h"
 #include "analysis/Results.h"
 #include "base/Observer.h"
@@ -26,8 +27,11 @@ namespace rollsim {
 /// Runs the Newton analysis; Results::status is converged, cancelled (between iterations: the last converged step
 /// stays the result), not_converged (a linear solve short of its tolerance when no cut-back is left) or diverged.
 /// `measure` (may be null): a process's measures of each completed increment, told to the observer as it goes.
+/// `motion` (may be null): an ALE run — after every converged step its body's nodes are put back and its state
+/// advected (analysis/AleStep); each increment's fields then belong to the model of that step
+/// (IncrementResults::model).
 Results run_newton_static(const Model& model, SolverStrategy& solver, const UpdatePolicy& policy,
                           AnalysisObserver* observer = nullptr, const NewtonOptions& options = {},
-                          const IncrementMeasure* measure = nullptr);
+                          const IncrementMeasure* measure = nullptr, const MeshMotion* motion = nullptr);
 
 }  // namespace rollsim

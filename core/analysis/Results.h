@@ -142,6 +142,8 @@ struct Results {
   // the model of `bodies` when it is not the run's own (null: the run's)
   std::optional<RemeshDue> remesh_due;
   std::vector<RemeshRecord> remeshes;
+  int ale_steps =
+      0;  // an ALE run (analysis/AleStep): the steps after which a body's mesh was put back under its material
   std::shared_ptr<const Model> model;
 };
 

@@ -126,6 +126,31 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
   }
 }
 
+void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, int body,
+                     std::vector<PairState>& pairs) {
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    if (p.slave_body != body) continue;
+    const Mesh& slave = model.bodies[p.slave_body].mesh;
+    const Mesh& master = model.bodies[p.master_body].mesh;
+    std::map<int, size_t> was;
+    for (size_t j = 0; j < pairs[i].points.size(); ++j) was[pairs[i].points[j].slave_node] = j;
+    PairState now;
+    for (ContactPoint& c :
+         find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
+                             displaced(master, u[p.master_body]), master.surfaces.at(p.master_surface),
+                             p.search_distance, p.box_search ? FacetCandidates::Boxes : FacetCandidates::All)) {
+      c.separation = reference_separation(slave, master, c);
+      if (const auto it = was.find(c.slave_node); it != was.end())
+        carry(pairs[i], it->second, c, now);
+      else
+        add_point(now, c, c.gap <= 1e-9 * p.search_distance);
+      now.anchor.back() = relative_position(p, c, u, model.dim);
+    }
+    pairs[i] = std::move(now);
+  }
+}
+
 int projections_moved(const Model& model, const std::vector<Eigen::VectorXd>& u, const std::vector<PairState>& pairs) {
   return projection_drift(model, u, pairs).moved;
 }

@@ -59,6 +59,15 @@ std::vector<PairState> search_contacts(const Model& model);
 void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs,
                      ContactPair::Sliding when);
 
+/// The pairs whose slave body is `body` found again after that body's reference moved under its material (an ALE
+/// step: its nodes put back, u its displacement from there — zero — and the other bodies' as they are): every point's
+/// projection and reference separation anew, its status kept (active — an active point a little off the master is
+/// pulled onto it by its row —, stick or slip, its forces: the multipliers of its rows stay theirs), a sticking point
+/// anchored where it is now; a node new to the pair is active where it touches, one that left the search distance is
+/// dropped.
+void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, int body,
+                     std::vector<PairState>& pairs);
+
 /// How many active points of the pairs that slide per step would move if searched again in the configuration u:
 /// their new projection is off by more than 1e-8 of the search distance along the normal, or off the master surface.
 /// A step that converged on its first projections is not done while this is not zero.

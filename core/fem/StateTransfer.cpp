@@ -153,20 +153,25 @@ std::vector<double> current_state(const Body& body, const Eigen::VectorXd& u, st
   return state;
 }
 
-std::vector<double> transfer_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
-                                    int width, const Mesh& to) {
-  require_quads(to);
+std::vector<Point3> integration_points(const Mesh& mesh) {
+  require_quads(mesh);
   std::vector<Point3> at;
-  std::vector<int> near;
   const auto& N = El::gauss_shape();
-  for (int e = 0; e < to.num_elements(); ++e)
+  for (int e = 0; e < mesh.num_elements(); ++e)
     for (int p = 0; p < El::NGP; ++p) {
       Point3 q{0, 0, 0};
       for (int a = 0; a < 4; ++a)
-        for (int c = 0; c < 2; ++c) q[c] += N(p, a) * to.nodes[to.element(e)[a]][c];
+        for (int c = 0; c < 2; ++c) q[c] += N(p, a) * mesh.nodes[mesh.element(e)[a]][c];
       at.push_back(q);
-      near.push_back(clamp_element(e, from));  // the same numbers: a remesh keeps the elements
     }
+  return at;
+}
+
+std::vector<double> transfer_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
+                                    int width, const Mesh& to) {
+  const std::vector<Point3> at = integration_points(to);
+  std::vector<int> near;  // the same numbers: a remesh keeps the elements
+  for (size_t i = 0; i < at.size(); ++i) near.push_back(clamp_element(static_cast<int>(i) / El::NGP, from));
   const PointLocator locator(from, x);
   std::vector<double> out(at.size() * width);
   for (size_t i = 0; i < at.size(); ++i) {

@@ -49,6 +49,9 @@ std::vector<double> current_state(const Body& body, const Eigen::VectorXd& u, st
 /// Node positions of `mesh` displaced by `u` (node-major, dim per node).
 std::vector<Point3> displaced_nodes(const Mesh& mesh, const Eigen::VectorXd& u);
 
+/// The integration points of a quad mesh at its own node positions (element-major, 4 per element).
+std::vector<Point3> integration_points(const Mesh& mesh);
+
 /// Point values (`width` per integration point, element-major) of `from`, its nodes at `x`, carried to the
 /// integration points of `to` (at its own node positions).
 std::vector<double> transfer_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,

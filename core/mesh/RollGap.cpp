@@ -1,5 +1,6 @@
 #include "mesh/RollGap.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -22,11 +23,12 @@ double RollPolygon::lower_surface(double x) const {
   return best;
 }
 
-void cut_to_roll(Mesh& slab, int thickness_axis, double top, const RollPolygon& roll, const RadiusProfile& profile) {
+void cut_to_roll(Mesh& slab, int thickness_axis, double top, const RollPolygon& roll, const RadiusProfile& profile,
+                 bool flat_exit) {
   for (auto& X : slab.nodes) {
     RollPolygon here = roll;
     if (slab.dim == 3) here.radius += profile.at(X[1]);
-    const double surface = here.lower_surface(X[0]);
+    const double surface = here.lower_surface(flat_exit ? std::min(X[0], roll.cx) : X[0]);
     if (!(surface < top)) continue;
     if (surface <= 1e-6 * top)
       throw std::invalid_argument("the roll cuts the slab through its whole thickness at x = " + std::to_string(X[0]));

@@ -22,8 +22,10 @@ struct RollPolygon {
 /// coordinate t (axis `thickness_axis`, the slab's mid-plane at t = 0, its top at t = top) moves to
 /// t · min(top, lower_surface(x)) / top. In 3D a profiled roll's radius is roll.radius + profile.at(y) at the node's
 /// width coordinate y (axis 1): the polygon of that radius is the roll mesh's surface there when the profile is
-/// sampled at the roll's axial nodes. Throws std::invalid_argument when the cut leaves no thickness.
-void cut_to_roll(Mesh& slab, int thickness_axis, double top, const RollPolygon& roll,
-                 const RadiusProfile& profile = {});
+/// sampled at the roll's axial nodes. `flat_exit`: past the roll's axis (x > cx) the top stays at the gap, the
+/// polygon's height at cx — a slab that has already left the gap there (an ALE window's exit). Throws
+/// std::invalid_argument when the cut leaves no thickness.
+void cut_to_roll(Mesh& slab, int thickness_axis, double top, const RollPolygon& roll, const RadiusProfile& profile = {},
+                 bool flat_exit = false);
 
 }  // namespace rollsim

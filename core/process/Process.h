@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/IncrementMeasure.h"
+#include "analysis/MeshMotion.h"
 #include "analysis/Results.h"
 #include "base/Measures.h"
 #include "base/RunStatus.h"
@@ -37,6 +38,9 @@ class ProcessRun : public IncrementMeasure {
   /// The share of the analysis's load (0…1] the run is expected to reach: a pass ends once its slab has gone
   /// through the roll gap, whatever travel is left (IncrementMeasure::over).
   virtual double expected_share() const { return 1; }
+  /// Where a body's nodes go after each step when its material flows through a mesh held in place (an ALE run,
+  /// analysis/AleRun), or null: the run is Lagrangian.
+  virtual const MeshMotion* mesh_motion() const { return nullptr; }
   /// Its measures of `results` (every completed increment): tables, charts, summary section, report.
   virtual ProcessResults finish(const Results& results) const = 0;
 };

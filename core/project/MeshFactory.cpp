@@ -228,7 +228,7 @@ Mesh make_mesh(const json& m, int dim) {
       cut_to_roll(mesh, t, s.origin[static_cast<size_t>(t)] + s.size[static_cast<size_t>(t)],
                   {c.at("center")[0].get<double>(), c.at("center")[1].get<double>(), num(c, "radius"),
                    c.at("n_around").get<int>()},
-                  radius_profile(c.value("profile", json::array())));
+                  radius_profile(c.value("profile", json::array())), c.value("flat_exit", false));
     }
     return mesh;
   }

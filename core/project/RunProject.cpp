@@ -44,21 +44,20 @@ void refuse_contact(const SolverStrategy& solver, const Model& model) {
 }
 
 Results run_linear(const RunConfig& config, const Model& model, AnalysisObserver* observer,
-                   const IncrementMeasure* /*measure: the linear analysis reports no increment measures*/) {
+                   const ProcessRun* /*process: the linear analysis reports no increment measures*/) {
   set_library_threads(config.solver.threads);
   const auto solver = make_solver(config.solver_mode, config.solver);
   refuse_contact(*solver, model);
   return run_linear_static(model, *solver, observer, config.steps.increments, config.steps.max_active_set_iterations);
 }
 
-Results run_newton(const RunConfig& config, const Model& model, AnalysisObserver* observer,
-                   const IncrementMeasure* measure) {
+Results run_newton(const RunConfig& config, const Model& model, AnalysisObserver* observer, const ProcessRun* process) {
   set_library_threads(config.solver.threads);
   const auto policy = make_update_policy(config.update);
   const SegmentRun segment = [&](const Model& m, const NewtonOptions& options, AnalysisObserver* told) {
     const auto solver = make_solver(config.solver_mode, config.solver);
     refuse_contact(*solver, m);
-    return run_newton_static(m, *solver, *policy, told, options, measure);
+    return run_newton_static(m, *solver, *policy, told, options, process, process ? process->mesh_motion() : nullptr);
   };
   if (config.newton.remesh_quality > 0) return run_with_remeshing(model, config.newton, segment, observer);
   return segment(model, config.newton, observer);

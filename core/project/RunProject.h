@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/IncrementMeasure.h"
 #include "analysis/Results.h"
 #include "base/Observer.h"
 #include "model/Model.h"
+#include "process/Process.h"
 #include "project/Project.h"
 
 namespace rollsim {
@@ -19,7 +19,8 @@ namespace rollsim {
 struct AnalysisInfo {
   std::string name;
   std::string description;
-  std::function<Results(const RunConfig&, const Model&, AnalysisObserver*, const IncrementMeasure*)> run;
+  // a process's run (may be null) measures the increments and may move a body's mesh (ProcessRun::mesh_motion)
+  std::function<Results(const RunConfig&, const Model&, AnalysisObserver*, const ProcessRun*)> run;
 };
 
 /// Every analysis, in the order shown to users, and their names (analysis.type).

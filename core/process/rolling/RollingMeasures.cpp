@@ -207,6 +207,18 @@ Eigen::VectorXd node_volumes_of(const Mesh& mesh) {
   return share;
 }
 
+/// An ALE step's volume out through the exit face over its volume in through the entry face, − 1 (0 once steady):
+/// each face's mean advance in the step times its current height.
+double flux_balance(const Mesh& slab, const Eigen::VectorXd& u) {
+  const auto flux = [&](const std::vector<int>& face) {
+    double height = 0;
+    for (int n : face) height = std::max(height, current(slab, u, n)[slab.dim - 1]);
+    return height * mean_advance(slab, face, u);
+  };
+  const double in = flux(slab.node_sets.at("xmin"));
+  return in > 0 ? flux(slab.node_sets.at("xmax")) / in - 1 : 0.0;
+}
+
 /// The slab's contact nodes at the state `r`, by decreasing angle (entry first).
 std::vector<ArcPoint> arc_profile(const Model& model, const RollingPass& pass, const BodyResults& r) {
   const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
@@ -260,7 +272,7 @@ RollingIncrement roll_load(const RollingPass& pass, const Model& model, const In
   const double symmetry = pass.half_width ? 2.0 : 1.0;
   RollingIncrement r;
   r.travel = inc.load_factor * pass.travel;
-  hub_reaction(model, pass, inc.bodies[static_cast<size_t>(pass.roll)], r);
+  hub_reaction(model_of(inc, model), pass, inc.bodies[static_cast<size_t>(pass.roll)], r);
   r.roll_force *= symmetry;
   r.roll_torque *= symmetry;
   r.roll_power = r.roll_torque * pass.rpm * 2 * M_PI / 60 * 1e-6;  // N·mm · 1/s = 1e-6 kW
@@ -268,16 +280,17 @@ RollingIncrement roll_load(const RollingPass& pass, const Model& model, const In
 }
 
 RollingResults measure_rolling(const RollingPass& pass, const Model& model, const Results& results) {
-  const Mesh& slab = model.bodies[static_cast<size_t>(pass.slab)].mesh;
   const double symmetry = pass.half_width ? 2.0 : 1.0;
   const double contact = rolling_theory(pass).contact_length;  // √(R Δh)
-  const double volume0 = volume(slab, Eigen::VectorXd::Zero(slab.num_nodes() * slab.dim));
-  const Eigen::VectorXd share = node_volumes(slab);
+  const Mesh& slab0 = model.bodies[static_cast<size_t>(pass.slab)].mesh;
+  const double volume0 = volume(slab0, Eigen::VectorXd::Zero(slab0.num_nodes() * slab0.dim));
   RollingResults out;
   double rear_before = 0, travel_before = 0;
   std::vector<std::pair<double, double>> fronts{{0.0, 0.0}};  // (travel, front advance) from the start
   for (const IncrementResults& inc : results.increments) {
     if (inc.bodies.size() != model.bodies.size()) continue;
+    const Model& at = model_of(inc, model);  // an ALE step's: its window as the step began
+    const Mesh& slab = at.bodies[static_cast<size_t>(pass.slab)].mesh;
     RollingIncrement r = roll_load(pass, model, inc);
     for (const ContactResult& c : inc.contacts) r.contact_length += symmetry * c.measure;
     exit_geometry(pass, slab, inc.bodies[static_cast<size_t>(pass.slab)], contact, r);
@@ -287,26 +300,33 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
     const double front = mean_advance(slab, slab.node_sets.at("xmax"), u);
     const double rear = mean_advance(slab, slab.node_sets.at("xmin"), u);
     const double dt = r.travel - travel_before;
-    // over the last tenth of a contact length of travel (from the start before that): a cut-back step's own advance
-    // is mostly the round-off of a tiny travel
-    size_t j = 0;
-    while (j + 1 < fronts.size() && fronts[j + 1].first <= r.travel - 0.1 * contact) ++j;
-    const double span = r.travel - fronts[j].first;
-    r.forward_slip = span > 0 ? (front - fronts[j].second) / span - 1 : 0.0;
-    fronts.emplace_back(r.travel, front);
-    // the roll bites once the rear end follows: it moves in by half of what the roll's travel would draw in
-    if (!out.bite_increment && dt > 0 && rear - rear_before >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
-      out.bite_increment = static_cast<int>(out.increments.size()) + 1;
-    r.volume_change = volume(slab, u) / volume0 - 1;
+    if (pass.ale) {  // the step's own advance of the exit and entry faces (an ALE step starts from its window)
+      r.forward_slip = dt > 0 ? front / dt - 1 : 0.0;
+      if (!out.bite_increment && dt > 0 && rear >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
+        out.bite_increment = static_cast<int>(out.increments.size()) + 1;
+      r.volume_change = flux_balance(slab, u);
+    } else {
+      // over the last tenth of a contact length of travel (from the start before that): a cut-back step's own
+      // advance is mostly the round-off of a tiny travel
+      size_t j = 0;
+      while (j + 1 < fronts.size() && fronts[j + 1].first <= r.travel - 0.1 * contact) ++j;
+      const double span = r.travel - fronts[j].first;
+      r.forward_slip = span > 0 ? (front - fronts[j].second) / span - 1 : 0.0;
+      fronts.emplace_back(r.travel, front);
+      // the roll bites once the rear end follows: it moves in by half of what the roll's travel would draw in
+      if (!out.bite_increment && dt > 0 && rear - rear_before >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
+        out.bite_increment = static_cast<int>(out.increments.size()) + 1;
+      r.volume_change = volume(slab, u) / volume0 - 1;
+    }
     r.mean_pressure = r.contact_length > 0 ? r.roll_force / r.contact_length : 0.0;  // p̄ = F / (L b)
-    out.thermal = temperatures(model, pass, inc, share, contact, r) || out.thermal;
+    out.thermal = temperatures(at, pass, inc, node_volumes(slab), contact, r) || out.thermal;
     rear_before = rear, travel_before = r.travel;
     out.increments.push_back(r);
   }
   if (out.increments.empty()) return out;
   for (auto it = results.increments.rbegin(); it != results.increments.rend(); ++it)
     if (it->bodies.size() == model.bodies.size()) {
-      out.profile = arc_profile(model, pass, it->bodies[static_cast<size_t>(pass.slab)]);
+      out.profile = arc_profile(model_of(*it, model), pass, it->bodies[static_cast<size_t>(pass.slab)]);
       break;
     }
   const double window = kSteadyWindow * contact;

@@ -19,8 +19,13 @@ struct RollingPass {
   double entry_thickness = 0, exit_thickness = 0;  // nominal h0 and h1 of the whole slab [length]
   double width = 0;                                // whole slab width b0 (3D) [length]
   double slab_length = 0;                          // the slab's length before the pass [length]
-  double rpm = 0;                                  // roll speed [1/min] (0: not given)
-  double travel = 0;                               // roll surface travel R θ at load factor 1 [length]
+  // process.formulation ale: the slab's mesh a window held around the roll gap, from x = −ale_entry to ale_exit (the
+  // exit plane at x = 0), its material flowing through (RollingAle); false: Lagrangian, the slab rolled through
+  bool ale = false;
+  double ale_entry = 0, ale_exit = 0;  // [length]
+  bool stop_at_steady = false;         // the run ends once force and torque are steady (steady_state_from)
+  double rpm = 0;                      // roll speed [1/min] (0: not given)
+  double travel = 0;                   // roll surface travel R θ at load factor 1 [length]
   // the slab's σ_0, or with a flow stress law its mean over the pass: over ε from 0 to (2/√3) ln(h0/h1) at the mean
   // rate ε ωR / √(R Δh) (Δh = h0 − h1) and the slab's temperature [stress]
   double flow_stress = 0;

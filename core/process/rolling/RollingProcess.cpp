@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <tuple>
 
 #include "base/SchemaFields.h"
 #include "material/FlowStress.h"
@@ -179,6 +180,27 @@ const ObjectSchema& rolling_process_schema() {
        number("travel", "length", 100, 0, 1e6,
               "distance the roll's surface travels over the analysis (the roll turns travel / R)"),
        number("travel_increment", "length", 2, 0, 1e6, "roll surface travel per increment"),
+       choice("formulation", {"lagrangian", "ale"}, "lagrangian",
+              "how the slab's mesh moves: lagrangian (with the material: the whole slab_length is rolled through the "
+              "gap, its front from the exit plane on) or ale (arbitrary Lagrangian–Eulerian, plane strain, one pass: "
+              "the mesh is a window held around the roll gap, from ale_entry_length before the exit plane to "
+              "ale_exit_length past it, cut to the roll over the arc and flat at the gap past it; the material "
+              "flows through — after each step the nodes go back to their x, the top following the free surface or "
+              "the roll, the state is advected and virgin material flows in at the entry — so the steady state "
+              "comes without rolling a whole slab; slab_length and grading have no effect)"),
+       optional(number("ale_entry_length", "length", 0, 0, 1e6,
+                       "formulation ale: how far before the exit plane the window begins (default: the nominal "
+                       "contact length √(R Δh) plus the entry thickness h0)")),
+       optional(number("ale_exit_length", "length", 0, 0, 1e6,
+                       "formulation ale: how far past the exit plane the window ends (default: about the entry "
+                       "thickness h0, adjusted so that a column of nodes lies a quarter of a spacing before the arc's "
+                       "nominal entry — a column at the entry or just inside it keeps switching in and out of "
+                       "contact and can make the pass diverge)")),
+       def(boolean("stop_at_steady_state",
+                   "end the pass once it is steady — the means of roll force and torque over the last two windows of "
+                   "half a nominal contact length of travel agree within 2 % (results.rolling's steady_state rule) — "
+                   "whatever travel is left, converged, saying so"),
+           false),
        [] {
          Field f = objects("passes", pass_schema(),
                            "a schedule (plane strain): passes one after the other, each receiving the slab the pass "
@@ -228,6 +250,28 @@ MaterialData slab_material_data(const json& p) {
   return m;
 }
 
+bool is_ale(const json& p) { return p.value("formulation", "lagrangian") == "ale"; }
+
+/// The nominal contact length √(R Δh), Δh = h0 − h1.
+double nominal_contact_length(const json& p);
+
+/// Where the ALE window's column nearest the arc's nominal entry lies by default: this share of a column spacing
+/// before it. A column at the entry or just inside the arc keeps switching in and out of contact as material flows
+/// past it, and diverged on 36 × 6 (entry at 0, 0.5, 0.75 and 0.9 of a spacing after the column); 0.1–0.35 ran.
+constexpr double kEntryOffset = 0.25;
+
+/// The ALE window's reach before and past the exit plane: ale_entry_length (default √(R Δh) + h0) and
+/// ale_exit_length (default about h0, so that a column lies kEntryOffset of a spacing before the arc's entry).
+std::pair<double, double> ale_window(const json& p) {
+  const double h0 = p.at("slab_thickness"), arc = nominal_contact_length(p);
+  const double entry = p.value("ale_entry_length", arc + h0);
+  if (p.contains("ale_exit_length")) return {entry, p.at("ale_exit_length").get<double>()};
+  const int nx = p.at("slab_nx");
+  const double before = entry - arc, spacing = (entry + h0) / nx;  // the columns before the arc, at about h0 past
+  const double columns = std::max(1.0, std::round(before / spacing - kEntryOffset)) + kEntryOffset;
+  return {entry, std::max(nx * before / columns - entry, spacing)};
+}
+
 /// ω R [length/s], 0 without a roll speed.
 double surface_speed(const json& p) { return p.value("roll_speed", 0.0) * 2 * M_PI / 60 * roll_radius(p); }
 
@@ -248,6 +292,10 @@ RadiusProfile roll_profile(const json& p) {
 double exit_thickness(const json& p) {
   if (p.contains("exit_thickness")) return p.at("exit_thickness").get<double>();
   return p.at("slab_thickness").get<double>() * (1 - p.value("reduction", kPaperReduction));
+}
+
+double nominal_contact_length(const json& p) {
+  return std::sqrt(roll_radius(p) * (p.at("slab_thickness").get<double>() - exit_thickness(p)));
 }
 
 /// The pass's equivalent strain (2/√3) ln(h0/h1) (plane strain) and its mean rate over the arc √(R Δh) at ωR.
@@ -352,6 +400,39 @@ void check_profile(const json& project, std::vector<Issue>& issues) {
     issues.push_back({"process.roll_profile", "takes the roll's radius down to its hub (process.roll_hub_radius)"});
 }
 
+/// An ALE pass: what it cannot do yet, the keys it would ignore, and a window that holds the arc; the ALE keys of a
+/// Lagrangian pass.
+void check_ale(const json& project, std::vector<Issue>& issues) {
+  const json& p = project.at("process");
+  if (!is_ale(p)) {
+    for (const char* key : {"ale_entry_length", "ale_exit_length"})
+      if (p.contains(key))
+        issues.push_back({std::string("process.") + key,
+                          "has no effect with process.formulation: lagrangian (the "
+                          "window is an ALE pass's): set formulation to ale, or "
+                          "remove it"});
+    return;
+  }
+  const std::string why = "process.formulation";
+  if (project.at("dimension").get<int>() != 2)
+    issues.push_back({why, "ale is plane strain only yet (dimension 2): use lagrangian in 3D"});
+  if (p.contains("heat_transfer"))
+    issues.push_back({why,
+                      "ale does not carry conducted temperatures yet: remove process.heat_transfer, or use "
+                      "lagrangian"});
+  if (p.at("grading").get<double>() != 1)
+    issues.push_back({"process.grading",
+                      "has no effect with process.formulation: ale (the window's elements are "
+                      "uniform along x): remove it"});
+  const auto [entry, exit] = ale_window(p);
+  const double arc = nominal_contact_length(p);
+  if (entry <= arc)
+    issues.push_back({"process.ale_entry_length", mm(entry) + " does not reach before the arc of contact (it starts " +
+                                                      mm(arc) + " before the exit plane): the window must hold it"});
+  if (exit <= 0)
+    issues.push_back({"process.ale_exit_length", "must be positive: the window must reach past the exit plane"});
+}
+
 /// The generated bodies' geometry, checked in the process's terms (never a generated body's path).
 void check_geometry(const json& project, std::vector<Issue>& issues) {
   const json& p = project.at("process");
@@ -384,10 +465,13 @@ void check_slab_law(const json& p, std::vector<Issue>& issues) {
 
 void check_rolling(const json& project, std::vector<Issue>& issues) {
   if (is_schedule(project)) {
+    if (is_ale(project.at("process")))
+      issues.push_back({"process.formulation", "ale rolls one pass: a schedule (process.passes) is lagrangian"});
     check_schedule(project, issues);
     return;
   }
   check_ignored(project, issues);
+  check_ale(project, issues);
   check_slab_law(project.at("process"), issues);
   check_rolling_heat(project.at("process"), issues);
   check_geometry(project, issues);
@@ -464,7 +548,13 @@ json expand_rolling(const json& project) {
                     {"outer_radius", R},
                     {"n_radial", p.at("roll_n_radial")},
                     {"n_around", p.at("roll_n_around")}};
-  if (dim == 2) {
+  if (dim == 2 && is_ale(p)) {  // the window from −entry to exit, flat at the gap past the exit plane
+    const auto [entry, exit] = ale_window(p);
+    slab_mesh.update({{"lx", entry + exit}, {"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-entry, 0.0}}});
+    slab_mesh["roll_cut"]["flat_exit"] = true;
+    if (p.at("thickness_grading").get<double>() != 1) slab_mesh["y_grading"] = p.at("thickness_grading");
+    roll_mesh.update({{"type", "annulus"}, {"center", {0.0, axis}}});
+  } else if (dim == 2) {
     slab_mesh.update({{"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-L, 0.0}}});
     if (p.at("thickness_grading").get<double>() != 1) slab_mesh["y_grading"] = p.at("thickness_grading");
     roll_mesh.update({{"type", "annulus"}, {"center", {0.0, axis}}});
@@ -536,6 +626,9 @@ json expand_rolling(const json& project) {
   bcs.push_back(hub);
   out["analysis"]["increments"] =
       static_cast<int>(std::ceil(p.at("travel").get<double>() / p.at("travel_increment").get<double>() - 1e-9));
+  // an ALE window starts stress-free with its exit zone in place: a whole first step takes it to a distorted state
+  // on fine meshes (64 × 12), an eighth of one does not
+  if (is_ale(p)) out["analysis"]["first_step_halvings"] = std::max(3, out["analysis"].value("first_step_halvings", 0));
   if (pass_duration(p) > 0) out["analysis"]["duration"] = pass_duration(p);
   expand_rolling_heat(p, dim, out);
   return out;
@@ -578,6 +671,9 @@ RollingPass rolling_pass(const json& section, const Model& model) {
   pass.half_width = model.dim == 3 && half_width(p);
   pass.radius = roll_radius(p);
   pass.slab_length = p.at("slab_length");
+  pass.ale = is_ale(p);
+  if (pass.ale) std::tie(pass.ale_entry, pass.ale_exit) = ale_window(p);
+  pass.stop_at_steady = p.value("stop_at_steady_state", false);
   if (p.contains("roll_speed")) pass.rpm = p.at("roll_speed");
   pass.entry_thickness = p.at("slab_thickness");
   pass.exit_thickness = exit_thickness(p);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 
 #include "process/rolling/RollingFacts.h"
 #include "process/rolling/RollingMeasures.h"
@@ -9,6 +10,10 @@
 #include "process/rolling/RollingTheory.h"
 
 namespace rollsim {
+
+RollingRun::RollingRun(RollingPass pass, const Model& model) : pass_(std::move(pass)), model_(model) {
+  if (pass_.ale) ale_.emplace(pass_, model_);
+}
 
 RunStatus RollingRun::refusal() const {
   // a pass the roll cannot bite is an answer, not a solver failure: nothing is solved
@@ -18,7 +23,9 @@ RunStatus RollingRun::refusal() const {
 
 std::vector<ProcessFact> RollingRun::facts() const { return rolling_facts(pass_, model_.dim); }
 
-double RollingRun::expected_share() const { return std::min(1.0, travel_through(pass_) / pass_.travel); }
+double RollingRun::expected_share() const {
+  return pass_.ale ? 1.0 : std::min(1.0, travel_through(pass_) / pass_.travel);  // an ALE slab never runs out
+}
 
 MeasureTable RollingRun::live_table() const {
   MeasureTable t = history_table({}, model_.dim);
@@ -36,13 +43,30 @@ ChartRequest RollingRun::live_chart() const { return history_chart(pass_, model_
 
 MeasureRow RollingRun::measure(const IncrementResults& increment) const {
   const RollingIncrement r = roll_load(pass_, model_, increment);
+  while (!live_.empty() && live_.back().travel >= r.travel) live_.pop_back();  // measured again: a repeated step
+  live_.push_back(r);
   return {r.travel, r.roll_force, r.roll_torque};
+}
+
+std::string RollingRun::steady() const {
+  const double window = kSteadyWindow * rolling_theory(pass_).contact_length;
+  const int from = steady_state_from(live_, window);
+  if (from == 0) return {};
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "the pass is steady at travel %.4g mm (process.stop_at_steady_state): the means of roll force and "
+                "torque over the last two windows of %.3g mm of travel agree within %g %%",
+                live_[static_cast<size_t>(from - 1)].travel, window, 100 * kSteadyTolerance);
+  return text;
 }
 
 std::string RollingRun::over(const IncrementResults& increment) const {
   if (increment.bodies.size() != model_.bodies.size()) return {};
+  if (pass_.stop_at_steady)
+    if (std::string s = steady(); !s.empty()) return s;
+  if (pass_.ale) return {};  // the window's material never runs out
   const size_t slab = static_cast<size_t>(pass_.slab);
-  const double rear = rear_end(model_.bodies[slab].mesh, increment.bodies[slab].displacement);
+  const double rear = rear_end(model_of(increment, model_).bodies[slab].mesh, increment.bodies[slab].displacement);
   const double entry = -rolling_theory(pass_).contact_length;  // the roll axis is at x = 0, the slab moves along +x
   if (rear < entry) return {};
   char text[400];

@@ -1,0 +1,34 @@
+#pragma once
+// One step of an ALE run (arbitrary Lagrangian–Eulerian, split by steps; the Newton driver takes it after every
+// converged step when a process gives a MeshMotion): the body the material flows through gets its nodes put back where
+// the motion says (a rolling pass's slab window: every column at its x, the top following the free surface or the
+// roll) and becomes its new reference, its displacement zero; its state, read on the configuration the step ended in
+// (fem/StateTransfer::current_state: C_p⁻¹ becoming b_e), is advected onto the new points — each from the old element
+// that holds it, a convex combination of that element's points (a constant field is carried exactly, no new extremes),
+// and zero (virgin) where the motion says material flowed in during the step. Plane strain quads.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "analysis/MeshMotion.h"
+#include "fem/StateTransfer.h"
+#include "model/Model.h"
+
+namespace rollsim {
+
+/// The moving body after an ALE step: its new node positions and its state advected onto their points.
+struct AleRemap {
+  std::vector<Point3> nodes;
+  std::vector<double> state;
+};
+
+/// The remap of `body` (displaced by `u`, its committed point state `committed`), every body's current node
+/// positions `current`. Throws AnalysisError when the placed mesh would fold an element.
+AleRemap ale_remap(const Body& body, const Eigen::VectorXd& u, const std::vector<double>& committed,
+                   const std::vector<MeshMotion::Positions>& current, const MeshMotion& motion);
+
+/// Point values (`width` each, element-major) of `from` with its nodes at `x`, advected to the points of `to`:
+/// transfer_points, and zero at every point `motion` calls inflow.
+std::vector<double> advected_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
+                                    int width, const Mesh& to, const MeshMotion& motion);
+
+}  // namespace rollsim

@@ -1,0 +1,92 @@
+#include "process/rolling/RollingAle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "analysis/AnalysisError.h"
+
+namespace rollsim {
+
+namespace {
+/// y of the polyline `points` (sorted by x) at x, held constant beyond its ends.
+double along(const std::vector<std::array<double, 2>>& points, double x) {
+  if (x <= points.front()[0]) return points.front()[1];
+  if (x >= points.back()[0]) return points.back()[1];
+  const auto hi = std::lower_bound(points.begin(), points.end(), x,
+                                   [](const std::array<double, 2>& p, double v) { return p[0] < v; });
+  const auto lo = hi - 1;
+  const double t = ((*hi)[0] - (*lo)[0]) > 0 ? (x - (*lo)[0]) / ((*hi)[0] - (*lo)[0]) : 0.0;
+  return (*lo)[1] + t * ((*hi)[1] - (*lo)[1]);
+}
+}  // namespace
+
+RollingAle::RollingAle(const RollingPass& pass, const Model& model) : slab_(pass.slab), roll_(pass.roll) {
+  const Mesh& slab = model.bodies[static_cast<size_t>(slab_)].mesh;
+  if (slab.dim != 2) throw std::logic_error("ALE rolling: plane strain only");
+  std::map<double, std::vector<int>> by_x;
+  for (int n = 0; n < slab.num_nodes(); ++n) by_x[slab.nodes[static_cast<size_t>(n)][0]].push_back(n);
+  for (auto& [x, nodes] : by_x) {
+    Column c;
+    c.x = x;
+    std::sort(nodes.begin(), nodes.end(), [&](int a, int b) { return slab.nodes[a][1] < slab.nodes[b][1]; });
+    c.nodes = nodes;
+    const double top = slab.nodes[static_cast<size_t>(nodes.back())][1];
+    for (int n : nodes) c.share.push_back(slab.nodes[static_cast<size_t>(n)][1] / top);
+    columns_.push_back(std::move(c));
+  }
+  entry_ = columns_.front().nodes;
+  const Mesh& roll = model.bodies[static_cast<size_t>(roll_)].mesh;
+  for (const Facet& f : roll.surfaces.at("outer")) {
+    const std::vector<int> local = facet_local_nodes(roll.type, f.local);
+    roll_edges_.push_back({roll.element(f.element)[local[0]], roll.element(f.element)[local[1]]});
+  }
+}
+
+double RollingAle::top_at(double x, const Positions& slab, const Positions& roll) const {
+  std::vector<std::array<double, 2>> top;
+  for (const Column& c : columns_) top.push_back({slab[c.nodes.back()][0], slab[c.nodes.back()][1]});
+  if (!std::is_sorted(top.begin(), top.end()))
+    throw AnalysisError("the slab's top surface has folded over itself: it cannot be followed");
+  double y = along(top, x);
+  for (const auto& [a, b] : roll_edges_) {  // the roll's lower side: the lowest of its edges that span x
+    const double x0 = roll[a][0], x1 = roll[b][0];
+    if (x < std::min(x0, x1) || x > std::max(x0, x1) || x0 == x1) continue;
+    y = std::min(y, roll[a][1] + (roll[b][1] - roll[a][1]) * (x - x0) / (x1 - x0));
+  }
+  return y;
+}
+
+MeshMotion::Positions RollingAle::placed(const std::vector<Positions>& current) const {
+  const Positions& slab = current[static_cast<size_t>(slab_)];
+  Positions out = slab;
+  for (const Column& c : columns_) {
+    const double top = top_at(c.x, slab, current[static_cast<size_t>(roll_)]);
+    if (!(top > 0)) {
+      char text[160];
+      std::snprintf(text, sizeof text, "the slab has no thickness left at x = %.4g mm", c.x);
+      throw AnalysisError(text);
+    }
+    for (size_t j = 0; j < c.nodes.size(); ++j) out[static_cast<size_t>(c.nodes[j])] = {c.x, c.share[j] * top, 0.0};
+  }
+  return out;
+}
+
+bool RollingAle::inflow(const std::array<double, 3>& p, const Positions& current) const {
+  std::vector<std::array<double, 2>> face;  // the entry face after the step: x by height
+  for (int n : entry_) face.push_back({current[static_cast<size_t>(n)][1], current[static_cast<size_t>(n)][0]});
+  return p[0] < along(face, p[1]);
+}
+
+std::string RollingAle::describe() const {
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the slab's mesh held from x = %.4g to %.4g mm (%zu columns), its material flowing through",
+                columns_.front().x, columns_.back().x, columns_.size());
+  return text;
+}
+
+}  // namespace rollsim

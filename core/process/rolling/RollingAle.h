@@ -1,0 +1,40 @@
+#pragma once
+// The mesh motion of an ALE rolling pass (process.formulation: ale; analysis/AleRun): the slab's mesh is a window
+// held around the roll gap while its material flows through. After each step every column of the slab's nodes goes
+// back to its x; the column's top follows the free surface the step left (the slab's top, interpolated at that x)
+// or, where that would lie inside the roll, the roll's deformed surface; its other nodes keep their share of the
+// height (the symmetry plane at 0). Before the entry face's new place the top keeps its height, and points there hold
+// material that flowed in during the step: virgin. Plane strain, a structured slab (columns of one x).
+#include <string>
+#include <vector>
+
+#include "analysis/MeshMotion.h"
+#include "model/Model.h"
+#include "process/rolling/RollingPass.h"
+
+namespace rollsim {
+
+class RollingAle final : public MeshMotion {
+ public:
+  /// The motion of `pass`'s slab, its window as meshed in `model` (built from the pass).
+  RollingAle(const RollingPass& pass, const Model& model);
+  int body() const override { return slab_; }
+  Positions placed(const std::vector<Positions>& current) const override;
+  bool inflow(const std::array<double, 3>& p, const Positions& current) const override;
+  std::string describe() const override;
+
+ private:
+  struct Column {
+    double x = 0;
+    std::vector<int> nodes;     // bottom to top
+    std::vector<double> share;  // each node's height over the column's top, as meshed
+  };
+  /// The top's height at x: the slab's current top surface, under the roll's current surface.
+  double top_at(double x, const Positions& slab, const Positions& roll) const;
+  int slab_ = 0, roll_ = 1;
+  std::vector<Column> columns_;                 // by x
+  std::vector<int> entry_;                      // the entry face's nodes, bottom to top
+  std::vector<std::array<int, 2>> roll_edges_;  // the roll's outer surface, node pairs
+};
+
+}  // namespace rollsim

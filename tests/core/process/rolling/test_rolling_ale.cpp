@@ -1,0 +1,118 @@
+// The ALE rolling pass (process.formulation: ale): the slab's window is meshed from its entry to past the exit plane,
+// flat at the gap there; the motion puts a slab moved on along x back onto its own mesh under the roll; the paper's
+// pass rolled that way becomes steady after two windows of travel, with the Lagrangian pass's exit thickness, forward
+// slip and (within the coarse mesh's difference, docs/BENCHMARKS-ROLLING.md) force; what it cannot do is refused at
+// the user's paths; process.stop_at_steady_state ends a pass there.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "../../../common/PassRun.h"
+#include "../../../common/RollingPass.h"
+#include "process/rolling/RollingAle.h"
+
+namespace test_rolling_ale {
+
+using namespace rollsim;
+
+namespace {
+nlohmann::json ale_pass(double travel) {
+  nlohmann::json j = testing_support::paper_pass_2d(travel, 1.0);
+  j["process"].update({{"formulation", "ale"}, {"slab_nx", 32}});
+  return j;
+}
+
+std::string refusal(nlohmann::json process, int dim = 2) {
+  process["type"] = "rolling";
+  try {
+    parse_project(nlohmann::json{{"dimension", dim}, {"process", process}}.dump(), "bad");
+  } catch (const ProjectError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+}  // namespace
+
+TEST(RollingAle, TheWindowSpansTheArcAndASlabMovedOnIsPutBackOntoItsMesh) {
+  const Project p = parse_project(ale_pass(10).dump(), "ale");
+  const Model m = build_model(p);
+  const RollingPass pass = rolling_pass(p.data.at("process"), m);
+  ASSERT_TRUE(pass.ale);
+  const double L = std::sqrt(300 * 13.2);
+  EXPECT_DOUBLE_EQ(pass.ale_entry, L + 100);  // the default: the arc and h0 before it
+  const Mesh& slab = m.bodies[static_cast<size_t>(pass.slab)].mesh;
+  double x_min = 1e9, x_max = -1e9, exit_top = 0;
+  for (const auto& n : slab.nodes) {
+    x_min = std::min(x_min, n[0]), x_max = std::max(x_max, n[0]);
+    if (n[0] > 1) exit_top = std::max(exit_top, n[1]);
+  }
+  EXPECT_DOUBLE_EQ(x_min, -pass.ale_entry);
+  EXPECT_NEAR(x_max, pass.ale_exit, 1e-9);
+  EXPECT_NEAR(exit_top, 86.8 / 2, 1e-9) << "flat at the gap past the exit plane";
+  const RollingAle motion(pass, m);
+  // the slab moved on by 0.5 mm along x, the roll where it is: every node back where it was meshed (the top of the
+  // arc, moved into the roll, projected back onto it)
+  std::vector<MeshMotion::Positions> current;
+  for (const Body& b : m.bodies) current.push_back(b.mesh.nodes);
+  for (auto& x : current[static_cast<size_t>(pass.slab)]) x[0] += 0.5;
+  const MeshMotion::Positions placed = motion.placed(current);
+  const double spacing = (pass.ale_entry + pass.ale_exit) / 32;
+  for (size_t n = 0; n < placed.size(); ++n) {
+    EXPECT_NEAR(placed[n][0], slab.nodes[n][0], 1e-12) << n;
+    const double x = slab.nodes[n][0], share = slab.nodes[n][1] / (86.8 / 2);
+    if (x > 0 && x < spacing)  // the first column past the exit follows the moved top down from the arc's last node
+      EXPECT_GE(placed[n][1], slab.nodes[n][1] - 1e-12) << n;
+    else
+      EXPECT_NEAR(placed[n][1], slab.nodes[n][1], 1e-9 * (1 + share)) << n;
+  }
+  EXPECT_TRUE(motion.inflow({-pass.ale_entry + 0.4, 10, 0}, current[static_cast<size_t>(pass.slab)]));
+  EXPECT_FALSE(motion.inflow({-pass.ale_entry + 0.6, 10, 0}, current[static_cast<size_t>(pass.slab)]));
+}
+
+TEST(RollingAle, ThePaperPassIsSteadyAfterTwoWindowsAndAgreesWithTheLagrangianPass) {
+  nlohmann::json ale = ale_pass(120), lagrangian = testing_support::paper_pass_2d(120, 1.0);
+  for (nlohmann::json* j : {&ale, &lagrangian}) (*j)["process"]["stop_at_steady_state"] = true;
+  const testing_support::PassRun a = testing_support::run_pass(ale), l = testing_support::run_pass(lagrangian);
+  ASSERT_TRUE(a.status.ok() && l.status.ok()) << a.status.message << " / " << l.status.message;
+  EXPECT_NE(a.status.message.find("the pass is steady at travel"), std::string::npos) << a.status.message;
+  ASSERT_TRUE(a.rolling && l.rolling && a.rolling->steady_state_increment > 0);
+  const double window = 0.5 * std::sqrt(300 * 13.2);
+  // steady as soon as the rule can tell (two windows), where the Lagrangian slab first has to leave the gap
+  EXPECT_LT(a.rolling->increments.back().travel, 2 * window + 2);
+  EXPECT_GT(l.rolling->increments.back().travel, a.rolling->increments.back().travel + 10);
+  const RollingIncrement& s = a.rolling->steady;
+  const RollingIncrement& t = l.rolling->steady;
+  std::printf(
+      "steady force %.1f / %.1f N/mm, torque %.0f / %.0f, slip %.4f / %.4f, exit %.3f / %.3f (ALE / Lagrangian)\n",
+      s.roll_force, t.roll_force, s.roll_torque, t.roll_torque, s.forward_slip, t.forward_slip, s.exit_thickness,
+      t.exit_thickness);
+  EXPECT_NEAR(s.roll_force, t.roll_force, 0.025 * t.roll_force);  // measured 1.5 % apart on these coarse meshes
+  for (const RollingIncrement* r : {&s, &t}) {                    // the gap's 86.8 mm and the slab's springback
+    EXPECT_GT(r->exit_thickness, 86.8);
+    EXPECT_LT(r->exit_thickness, 1.005 * 86.8);
+  }
+  EXPECT_NEAR(s.forward_slip, t.forward_slip, 0.1 * t.forward_slip);
+  // the window's flux out over its flux in: the volume the top's placement onto the roll polygon loses per step
+  EXPECT_LT(std::abs(s.volume_change), 0.02);
+  EXPECT_EQ(a.ale_steps, static_cast<int>(a.increments.size()) - 1);  // after every step but the last
+  EXPECT_EQ(l.ale_steps, 0);
+}
+
+TEST(RollingAle, WhatAnAlePassCannotDoIsRefusedAtTheUsersPaths) {
+  const auto has = [](const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+  };
+  EXPECT_TRUE(has(refusal({{"formulation", "ale"}}, 3), "process.formulation: ale is plane strain only yet"));
+  EXPECT_TRUE(has(refusal({{"formulation", "ale"}, {"heat_transfer", nlohmann::json::object()}, {"roll_speed", 30}}),
+                  "process.formulation: ale does not carry conducted temperatures yet"));
+  EXPECT_TRUE(has(refusal({{"formulation", "ale"}, {"grading", 1.05}}), "process.grading: has no effect"));
+  EXPECT_TRUE(has(refusal({{"formulation", "ale"}, {"ale_entry_length", 50}}),
+                  "process.ale_entry_length: 50 mm does not reach before the arc of contact"));
+  EXPECT_TRUE(has(refusal({{"ale_exit_length", 50}}),
+                  "process.ale_exit_length: has no effect with "
+                  "process.formulation: lagrangian"));
+  EXPECT_EQ(refusal({{"formulation", "ale"}}), "accepted");
+}
+
+}  // namespace test_rolling_ale
