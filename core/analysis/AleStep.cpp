@@ -1,28 +1,87 @@
 #include "analysis/AleStep.h"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <stdexcept>
 
 #include "analysis/AnalysisError.h"
+#include "fem/SolidElement.h"
 #include "material/Material.h"
 
 namespace rollsim {
 
+namespace {
+using El = SolidElement<2>;
+
+Eigen::Vector4d bilinear(double xi, double eta) {
+  constexpr int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+  Eigen::Vector4d N;
+  for (int a = 0; a < 4; ++a) N[a] = 0.25 * (1 + sx[a] * xi) * (1 + sy[a] * eta);
+  return N;
+}
+
+/// A continuous field through the point values: each element's point values extrapolated to its corners, averaged at
+/// the nodes (`width` per node).
+std::vector<double> recovered(const Mesh& m, const std::vector<double>& values, int width) {
+  std::vector<double> R(static_cast<size_t>(m.num_nodes()) * width, 0.0), count(m.num_nodes(), 0.0);
+  for (int e = 0; e < m.num_elements(); ++e) {
+    for (int a = 0; a < 4; ++a) count[m.element(e)[a]] += 1;
+    for (int c = 0; c < width; ++c) {
+      std::array<double, El::NGP> gp;
+      for (int p = 0; p < El::NGP; ++p) gp[p] = values[(static_cast<size_t>(e) * El::NGP + p) * width + c];
+      for (int a = 0; a < 4; ++a) R[static_cast<size_t>(m.element(e)[a]) * width + c] += El::extrapolate_to_node(gp, a);
+    }
+  }
+  for (size_t n = 0; n < count.size(); ++n)
+    for (int c = 0; c < width; ++c) R[n * width + c] /= count[n];
+  return R;
+}
+
+/// Component c of the nodal field R at the point of element e whose shape functions are N.
+double at(const Mesh& m, const std::vector<double>& R, int width, int e, const Eigen::Vector4d& N, int c) {
+  double v = 0;
+  for (int a = 0; a < 4; ++a) v += N[a] * R[static_cast<size_t>(m.element(e)[a]) * width + c];
+  return v;
+}
+}  // namespace
+
 std::vector<double> advected_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
                                     int width, const Mesh& to, const MeshMotion& motion) {
-  std::vector<double> out = transfer_points(from, x, values, width, to);
-  const std::vector<Point3> at = integration_points(to);
-  for (size_t i = 0; i < at.size(); ++i)
-    if (motion.inflow(at[i], x))
-      std::fill(out.begin() + static_cast<long>(i * width), out.begin() + static_cast<long>((i + 1) * width), 0.0);
+  const std::vector<double> R = recovered(from, values, width);
+  const std::vector<Point3> points = integration_points(to);
+  const PointLocator locator(from, x);
+  std::vector<double> out(values.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const auto value = out.begin() + static_cast<long>(i * width);
+    if (motion.inflow(points[i], x)) {
+      std::fill(value, value + width, 0.0);
+      continue;
+    }
+    const int e = static_cast<int>(i) / El::NGP;  // the point's own element, whose point i was at `values`' i
+    const MeshPlace place = locator.locate(points[i], e);
+    const Eigen::Vector4d here = bilinear(place.xi, place.eta);
+    const Eigen::Vector4d own = El::gauss_shape().row(static_cast<long>(i) % El::NGP).transpose();
+    for (int c = 0; c < width; ++c) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (int k : {place.element, e})
+        for (int q = 0; q < El::NGP; ++q) {
+          const double v = values[(static_cast<size_t>(k) * El::NGP + q) * width + c];
+          lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+      const double moved = at(from, R, width, place.element, here, c) - at(from, R, width, e, own, c);
+      value[c] = std::clamp(values[i * width + c] + moved, lo, hi);
+    }
+  }
   return out;
 }
 
 AleRemap ale_remap(const Body& body, const Eigen::VectorXd& u, const std::vector<double>& committed,
-                   const std::vector<MeshMotion::Positions>& current, const MeshMotion& motion) {
+                   const std::vector<MeshMotion::Positions>& current, const std::vector<char>& touching,
+                   const MeshMotion& motion) {
   const std::vector<Point3>& x = current[static_cast<size_t>(motion.body())];
   Mesh placed = body.mesh;
-  placed.nodes = motion.placed(current);
+  placed.nodes = motion.placed(current, touching);
   try {
     check_element_orientation(placed);
   } catch (const std::runtime_error& e) {

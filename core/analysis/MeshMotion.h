@@ -15,8 +15,9 @@ class MeshMotion {
   /// The body whose mesh stays in place while its material flows through it.
   virtual int body() const = 0;
   /// Its nodes' new positions, from every body's current node positions after a converged step (`current[body()]`
-  /// its own: its material's). Throws AnalysisError when they cannot be placed (the material has left the mesh).
-  virtual Positions placed(const std::vector<Positions>& current) const = 0;
+  /// its own: its material's) and which of its nodes touch another body there (active contact points: a node put
+  /// back on a touching surface stays on it). Throws AnalysisError when they cannot be placed.
+  virtual Positions placed(const std::vector<Positions>& current, const std::vector<char>& touching) const = 0;
   /// Whether a point at `p` in the new mesh holds material that flowed in during the step, which the moving body's
   /// material at `current` (its nodes' positions after the step) does not cover: it starts virgin.
   virtual bool inflow(const std::array<double, 3>& p, const Positions& current) const = 0;

@@ -701,10 +701,14 @@ std::string NewtonRun::ale_step(double lf) {
   std::vector<MeshMotion::Positions> current;
   for (size_t k = 0; k < model_.bodies.size(); ++k) current.push_back(displaced_nodes(model_.bodies[k].mesh, u[k]));
   Body& body = own_->bodies[static_cast<size_t>(b)];
+  std::vector<char> touching(static_cast<size_t>(body.mesh.num_nodes()), 0);
+  for (size_t i = 0; i < pairs_.size(); ++i)
+    for (size_t j = 0; model_.contacts[i].slave_body == b && j < pairs_[i].points.size(); ++j)
+      if (pairs_[i].active[j]) touching[static_cast<size_t>(pairs_[i].points[j].slave_node)] = 1;
   AleRemap moved;
   try {
     moved = ale_remap(body, u[static_cast<size_t>(b)], layout_.assembler().committed_state(b, body.mesh.num_elements()),
-                      current, *motion_);
+                      current, touching, *motion_);
   } catch (const AnalysisError& e) {
     return e.what();
   }

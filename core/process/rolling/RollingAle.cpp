@@ -46,25 +46,28 @@ RollingAle::RollingAle(const RollingPass& pass, const Model& model) : slab_(pass
   }
 }
 
-double RollingAle::top_at(double x, const Positions& slab, const Positions& roll) const {
+double RollingAle::top_at(double x, const Positions& slab, const Positions& roll, bool touching) const {
   std::vector<std::array<double, 2>> top;
   for (const Column& c : columns_) top.push_back({slab[c.nodes.back()][0], slab[c.nodes.back()][1]});
   if (!std::is_sorted(top.begin(), top.end()))
     throw AnalysisError("the slab's top surface has folded over itself: it cannot be followed");
-  double y = along(top, x);
+  double under = std::numeric_limits<double>::infinity();
   for (const auto& [a, b] : roll_edges_) {  // the roll's lower side: the lowest of its edges that span x
     const double x0 = roll[a][0], x1 = roll[b][0];
     if (x < std::min(x0, x1) || x > std::max(x0, x1) || x0 == x1) continue;
-    y = std::min(y, roll[a][1] + (roll[b][1] - roll[a][1]) * (x - x0) / (x1 - x0));
+    under = std::min(under, roll[a][1] + (roll[b][1] - roll[a][1]) * (x - x0) / (x1 - x0));
   }
-  return y;
+  if (touching && std::isfinite(under)) return under;
+  return std::min(along(top, x), under);
 }
 
-MeshMotion::Positions RollingAle::placed(const std::vector<Positions>& current) const {
+MeshMotion::Positions RollingAle::placed(const std::vector<Positions>& current,
+                                         const std::vector<char>& touching) const {
   const Positions& slab = current[static_cast<size_t>(slab_)];
   Positions out = slab;
   for (const Column& c : columns_) {
-    const double top = top_at(c.x, slab, current[static_cast<size_t>(roll_)]);
+    const double top =
+        top_at(c.x, slab, current[static_cast<size_t>(roll_)], touching[static_cast<size_t>(c.nodes.back())]);
     if (!(top > 0)) {
       char text[160];
       std::snprintf(text, sizeof text, "the slab has no thickness left at x = %.4g mm", c.x);

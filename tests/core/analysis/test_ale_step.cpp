@@ -19,7 +19,7 @@ namespace {
 struct Flow final : MeshMotion {
   explicit Flow(double s) : shift(s) {}
   int body() const override { return 0; }
-  Positions placed(const std::vector<Positions>& current) const override {
+  Positions placed(const std::vector<Positions>& current, const std::vector<char>&) const override {
     Positions back = current[0];
     for (auto& x : back) x[0] -= shift;
     return back;
@@ -83,7 +83,7 @@ TEST(AleStep, APlacementThatFoldsAnElementIsRefusedNamingTheBody) {
   body.mesh = block();
   struct Fold final : MeshMotion {
     int body() const override { return 0; }
-    Positions placed(const std::vector<Positions>& current) const override {
+    Positions placed(const std::vector<Positions>& current, const std::vector<char>&) const override {
       Positions p = current[0];
       std::swap(p[0], p[1]);  // two nodes of the first element change places
       return p;
@@ -92,7 +92,7 @@ TEST(AleStep, APlacementThatFoldsAnElementIsRefusedNamingTheBody) {
     std::string describe() const override { return "a fold"; }
   } fold;
   try {
-    ale_remap(body, Eigen::VectorXd::Zero(2 * body.mesh.num_nodes()), {}, {body.mesh.nodes}, fold);
+    ale_remap(body, Eigen::VectorXd::Zero(2 * body.mesh.num_nodes()), {}, {body.mesh.nodes}, {}, fold);
     FAIL() << "accepted";
   } catch (const AnalysisError& e) {
     EXPECT_NE(std::string(e.what()).find("the mesh of body 'slab' put back in place would fold an element"),

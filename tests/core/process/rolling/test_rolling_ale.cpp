@@ -56,7 +56,8 @@ TEST(RollingAle, TheWindowSpansTheArcAndASlabMovedOnIsPutBackOntoItsMesh) {
   std::vector<MeshMotion::Positions> current;
   for (const Body& b : m.bodies) current.push_back(b.mesh.nodes);
   for (auto& x : current[static_cast<size_t>(pass.slab)]) x[0] += 0.5;
-  const MeshMotion::Positions placed = motion.placed(current);
+  std::vector<char> touching(slab.nodes.size(), 0);
+  const MeshMotion::Positions placed = motion.placed(current, touching);
   const double spacing = (pass.ale_entry + pass.ale_exit) / 32;
   for (size_t n = 0; n < placed.size(); ++n) {
     EXPECT_NEAR(placed[n][0], slab.nodes[n][0], 1e-12) << n;
@@ -66,6 +67,17 @@ TEST(RollingAle, TheWindowSpansTheArcAndASlabMovedOnIsPutBackOntoItsMesh) {
     else
       EXPECT_NEAR(placed[n][1], slab.nodes[n][1], 1e-9 * (1 + share)) << n;
   }
+  // a top node in contact goes onto the roll even where the moved slab's top lies below it: the first column
+  // before the arc, lowered by 0.1 mm and touching, is put back at the roll's height there
+  size_t entry = 0;
+  for (size_t n = 0; n < slab.nodes.size(); ++n)
+    if (slab.nodes[n][1] == 50.0 && slab.nodes[n][0] < -L && slab.nodes[n][0] > slab.nodes[entry][0]) entry = n;
+  for (auto& x : current[static_cast<size_t>(pass.slab)]) x[1] -= 0.1 * x[1] / 50;
+  touching[entry] = 1;
+  const MeshMotion::Positions snapped = motion.placed(current, touching);
+  EXPECT_GT(snapped[entry][1], 50.0) << "the roll's surface before the arc lies above the slab's entry thickness";
+  touching[entry] = 0;
+  EXPECT_LT(motion.placed(current, touching)[entry][1], 50.0);
   EXPECT_TRUE(motion.inflow({-pass.ale_entry + 0.4, 10, 0}, current[static_cast<size_t>(pass.slab)]));
   EXPECT_FALSE(motion.inflow({-pass.ale_entry + 0.6, 10, 0}, current[static_cast<size_t>(pass.slab)]));
 }
@@ -87,14 +99,15 @@ TEST(RollingAle, ThePaperPassIsSteadyAfterTwoWindowsAndAgreesWithTheLagrangianPa
       "steady force %.1f / %.1f N/mm, torque %.0f / %.0f, slip %.4f / %.4f, exit %.3f / %.3f (ALE / Lagrangian)\n",
       s.roll_force, t.roll_force, s.roll_torque, t.roll_torque, s.forward_slip, t.forward_slip, s.exit_thickness,
       t.exit_thickness);
-  EXPECT_NEAR(s.roll_force, t.roll_force, 0.025 * t.roll_force);  // measured 1.5 % apart on these coarse meshes
-  for (const RollingIncrement* r : {&s, &t}) {                    // the gap's 86.8 mm and the slab's springback
+  // measured 2.8 % apart on these coarse meshes (1.3 % on 64 × 12 against 72 × 12: docs/BENCHMARKS-ROLLING.md)
+  EXPECT_NEAR(s.roll_force, t.roll_force, 0.04 * t.roll_force);
+  for (const RollingIncrement* r : {&s, &t}) {  // the gap's 86.8 mm and the slab's springback
     EXPECT_GT(r->exit_thickness, 86.8);
     EXPECT_LT(r->exit_thickness, 1.005 * 86.8);
   }
   EXPECT_NEAR(s.forward_slip, t.forward_slip, 0.1 * t.forward_slip);
-  // the window's flux out over its flux in: the volume the top's placement onto the roll polygon loses per step
-  EXPECT_LT(std::abs(s.volume_change), 0.02);
+  // the window's flux out over its flux in (−0.75 %): the volume the top's placement onto the roll polygon changes
+  EXPECT_LT(std::abs(s.volume_change), 0.015);
   EXPECT_EQ(a.ale_steps, static_cast<int>(a.increments.size()) - 1);  // after every step but the last
   EXPECT_EQ(l.ale_steps, 0);
 }
