@@ -238,6 +238,7 @@ json make_summary(const Model& model, const Results& r, const RunInfo& run) {
   s["config"] = run.config;  // every option as the run resolved it, defaults included
   s["increments"] = increments_section(model, r);
   if (!r.remeshes.empty()) s["remeshes"] = remeshes_section(r.remeshes);
+  if (r.ale_steps > 0) s["ale_steps"] = r.ale_steps;
   if (!r.status.ok()) return s;
   s["results"] = results_section(r.model ? *r.model : model, r);
   if (r.process) s["results"][r.process->process] = r.process->summary;  // its steady values, units, closed forms

@@ -24,7 +24,10 @@ RunStatus RollingRun::refusal() const {
 std::vector<ProcessFact> RollingRun::facts() const { return rolling_facts(pass_, model_.dim); }
 
 double RollingRun::expected_share() const {
-  return pass_.ale ? 1.0 : std::min(1.0, travel_through(pass_) / pass_.travel);  // an ALE slab never runs out
+  if (!pass_.ale) return std::min(1.0, travel_through(pass_) / pass_.travel);
+  // an ALE slab never runs out; steady, its force is flat, so the 2 % rule holds as soon as it can: two windows
+  const double steady = 2 * kSteadyWindow * rolling_theory(pass_).contact_length;
+  return pass_.stop_at_steady ? std::min(1.0, steady / pass_.travel) : 1.0;
 }
 
 MeasureTable RollingRun::live_table() const {

@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""ALE against Lagrangian steady rolling -> docs/ale-bench-output.md (docs/BENCHMARKS-ROLLING.md, "ALE").
+
+The paper's plane-strain pass (samples/rolling-2d-36x6.json: 300 mm roll, 100 -> 86.8 mm, sigma_0 100 MPa, sticking)
+on three meshes refined together (slab elements, roll elements, steps), once Lagrangian (the whole 300 mm slab rolled
+through the gap) and once ALE (process.formulation: ale, the window's default reach, its columns as long as the
+Lagrangian slab's elements), both ending at their steady state (process.stop_at_steady_state). Per run: status, the
+travel where it became steady, the steady force, torque, forward slip and exit thickness, the volume balance (ALE: the
+window's flux out over its flux in - 1), Newton iterations and total_s. Then farm-bench times each pair whole (--runs
+paired runs, medians, peak memory) unless --no-time. Usage:
+  tests/bench/run_ale_benchmarks.py [--rollsim BIN] [--runs N] [--no-time] [--only-last] [--out docs/ale-bench-output.md]
+Builds nothing; it fails only if a run cannot start.
+"""
+import argparse
+import json
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+MESHES = [  # Lagrangian slab, ALE window, roll elements around, travel increment [mm]
+    ((36, 6), (32, 6), 120, 1.0),
+    ((54, 9), (48, 9), 180, 0.75),
+    ((72, 12), (64, 12), 240, 0.5),
+    ((72, 12), (64, 12), 240, 1.0),  # the finest mesh in the steps of the coarsest (samples/rolling-2d-ale.json)
+]
+
+
+def project(formulation, n, around, step):
+    p = json.loads((ROOT / "samples/rolling-2d-36x6.json").read_text())
+    p["name"] = f"{formulation}-{n[0]}x{n[1]}"
+    p["process"].update(slab_nx=n[0], slab_nt=n[1], roll_n_around=around, travel_increment=step, travel=150,
+                        stop_at_steady_state=True)
+    if formulation == "ale":
+        p["process"]["formulation"] = "ale"
+    p["output"] = {"vtu": False}
+    return p
+
+
+def run(rollsim, path, out):
+    subprocess.run([rollsim, "run", str(path), "--out", str(out), "--quiet"], check=False,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    s = json.loads((out / "summary.json").read_text())
+    r = s.get("results", {}).get("rolling", {})
+    inc = s["increments"]
+    steady = r.get("steady_state_increment") or 0
+    return {"status": s["status"], "steady_at": inc[steady - 1]["travel"] if steady else None,
+            "force": r.get("roll_force"), "torque": r.get("roll_torque"), "slip": r.get("forward_slip"),
+            "exit": r.get("exit_thickness"), "volume": r.get("volume_change"),
+            "newton": sum(i.get("newton_iterations", 0) for i in inc), "seconds": s["timing"]["total_s"]}
+
+
+def farm_bench(rollsim, a, b, runs, tmp):
+    def cmd(p):
+        out = tmp / f"fb-{p.stem}"
+        return f"sh -c 'rm -rf {out}; exec {rollsim} run {p} --out {out} --quiet'"
+    text = subprocess.run(["farm-bench", "-n", str(runs), "--warmup", "1", "--timeout", "1800", "--vs", cmd(b),
+                           "--", "sh", "-c", cmd(a)[7:-1]], capture_output=True, text=True).stdout
+    got = {}
+    for key in ("A cpu s", "B cpu s", "A/B cpu", "A/B wall", "A peak MiB", "B peak MiB"):
+        m = re.search(re.escape(key) + r"\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)", text)
+        got[key] = float(m.group(2)) if m else None
+    return got
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--rollsim", default=str(ROOT / "build/app/rollsim"))
+    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--no-time", action="store_true")
+    ap.add_argument("--only-last", action="store_true", help="the last mesh only (its rows to add by hand)")
+    ap.add_argument("--out", default=str(ROOT / "docs/ale-bench-output.md"))
+    a = ap.parse_args()
+    tmp = pathlib.Path(tempfile.mkdtemp(prefix="ale-bench-"))
+    lines = ["| mesh (Lagrangian / ALE) | run | status | steady from [mm] | force [N/mm] | torque [kN·m/m] | "
+             "forward slip | exit [mm] | volume balance | Newton its | run [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    timing = ["| mesh | ALE CPU [s] | Lagrangian CPU [s] | ALE / Lagrangian CPU | wall | peak MiB (ALE / Lag.) |",
+              "|---|---|---|---|---|---|"]
+    meshes = MESHES[-1:] if a.only_last else MESHES
+    for lag_n, ale_n, around, step in meshes:
+        paths = {}
+        rows = {}
+        for formulation, n in (("lagrangian", lag_n), ("ale", ale_n)):
+            p = tmp / f"{formulation}-{n[0]}x{n[1]}.json"
+            p.write_text(json.dumps(project(formulation, n, around, step)))
+            paths[formulation] = p
+            rows[formulation] = run(a.rollsim, p, tmp / p.stem)
+        mesh = f"{lag_n[0]} × {lag_n[1]} / {ale_n[0]} × {ale_n[1]}, roll {around}, {step:g} mm"
+        for formulation, r in rows.items():
+            fmt = lambda v, f: f.format(v) if v is not None else "–"
+            lines.append(f"| {mesh} | {formulation} | {r['status']} | {fmt(r['steady_at'], '{:.1f}')} | "
+                         f"{fmt(r['force'], '{:.1f}')} | {fmt(r['torque'] and r['torque'] / 1e3, '{:.1f}')} | "
+                         f"{fmt(r['slip'] and 100 * r['slip'], '{:.2f} %')} | {fmt(r['exit'], '{:.3f}')} | "
+                         f"{fmt(r['volume'], '{:.1e}')} | {r['newton']} | {r['seconds']:.2f} |")
+        l, e = rows["lagrangian"], rows["ale"]
+        if l["force"] and e["force"]:
+            lines.append(f"| {mesh} | ALE / Lagrangian | | | {e['force'] / l['force']:.4f} | "
+                         f"{e['torque'] / l['torque']:.4f} | {e['slip'] / l['slip']:.3f} | "
+                         f"{e['exit'] / l['exit']:.4f} | | {e['newton'] / l['newton']:.3f} | "
+                         f"{e['seconds'] / l['seconds']:.3f} |")
+        if not a.no_time:
+            t = farm_bench(a.rollsim, paths["ale"], paths["lagrangian"], a.runs, tmp)
+            timing.append(f"| {mesh} | {t['A cpu s']} | {t['B cpu s']} | {t['A/B cpu']} | {t['A/B wall']} | "
+                          f"{t['A peak MiB']} / {t['B peak MiB']} |")
+        print(lines[-1], file=sys.stderr)
+    text = ("# ALE against Lagrangian steady rolling (tests/bench/run_ale_benchmarks.py)\n\n"
+            "Both formulations end where the pass is steady (process.stop_at_steady_state); the values are the means "
+            "over the last window of half a nominal contact length of travel.\n\n" + "\n".join(lines) + "\n")
+    if not a.no_time:
+        text += (f"\nWhole runs timed by farm-bench ({a.runs} paired runs after a warm-up, medians):\n\n"
+                 + "\n".join(timing) + "\n")
+    pathlib.Path(a.out).write_text(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
