@@ -245,6 +245,13 @@ bool GroupLayout::set_compliant(const std::vector<ConstraintRow>& rows, const st
   return true;
 }
 
+void GroupLayout::move_nodes(int b, const std::vector<std::array<double, 3>>& nodes) {
+  std::optional<BodyDecomposition>& dec = bodies_[static_cast<size_t>(b)].dec;
+  if (!dec) return;
+  for (Subdomain& s : dec->subdomains)
+    for (size_t l = 0; l < s.nodes.size(); ++l) s.body.mesh.nodes[l] = nodes[static_cast<size_t>(s.nodes[l])];
+}
+
 std::vector<Eigen::VectorXd> GroupLayout::body_solution(const BlockSolution& sol) const {
   std::vector<Eigen::VectorXd> u;
   for (const BodyGroups& bg : bodies_) {

@@ -48,6 +48,9 @@ class GroupLayout {
   /// prescribed dofs drop, a row left without terms goes); no rows clears them. False, with nothing set, when a row
   /// touches a torn body (its dofs lie in several subdomains).
   bool set_compliant(const std::vector<ConstraintRow>& rows, const std::vector<double>& stiffness);
+  /// Body b's nodes moved under its material (an ALE step) to `nodes`: its subdomains' local meshes take their nodes'
+  /// new positions (the body's own mesh is the model's, moved by the caller).
+  void move_nodes(int b, const std::vector<std::array<double, 3>>& nodes);
   /// Free-dof vector of every body from the groups' solution (interface copies averaged).
   std::vector<Eigen::VectorXd> body_solution(const BlockSolution& sol) const;
 

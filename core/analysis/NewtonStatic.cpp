@@ -167,8 +167,8 @@ class NewtonRun {
   /// With NewtonOptions::remesh_quality: the worst element of a finite-strain plastic body when its corner Jacobian
   /// ratio is below it at load factor lf (the run stops there for a remesh); none otherwise.
   std::optional<RemeshDue> distorted(double lf) const;
-  /// Why this run cannot move body motion_->body() under its material (AnalysisError): a mesh that has no single
-  /// group, conducted heat, a prescribed motion of the body.
+  /// Why this run cannot move body motion_->body() under its material (AnalysisError): conducted heat, a
+  /// prescribed motion of the body.
   void refuse_ale() const;
   /// The ALE step after the converged step ending at lf (AleStep): the moving body's nodes put back, its state
   /// advected, its displacement zero, its contact points found again; a message when its mesh cannot be put back.
@@ -678,12 +678,6 @@ bool NewtonRun::extrapolate(double span) {
 void NewtonRun::refuse_ale() const {
   const int b = motion_->body();
   const std::string name = "ALE: body '" + model_.bodies[static_cast<size_t>(b)].name + "' ";
-  int groups = 0;
-  for (const Group& g : layout_.system().groups) groups += g.body == b;
-  if (groups != 1)
-    throw AnalysisError(name +
-                        "is split into subdomains: its mesh moves as one group (a partition of it needs "
-                        "solver mode mixed or direct)");
   if (heat_) throw AnalysisError(name + "cannot carry conducted temperatures yet: remove the heat conduction");
   for (const DisplacementBC& bc : model_.displacements) {
     bool moves = bc.body == b && bc.rotation.has_value();
@@ -713,6 +707,7 @@ std::string NewtonRun::ale_step(double lf) {
     return e.what();
   }
   body.mesh.nodes = std::move(moved.nodes);
+  layout_.move_nodes(b, body.mesh.nodes);
   if (!moved.state.empty()) layout_.assembler().set_committed_state(b, moved.state);
   const std::vector<Group>& groups = layout_.system().groups;
   for (size_t g = 0; g < groups.size(); ++g)

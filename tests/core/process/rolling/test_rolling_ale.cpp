@@ -2,7 +2,8 @@
 // flat at the gap there; the motion puts a slab moved on along x back onto its own mesh under the roll; the paper's
 // pass rolled that way becomes steady after two windows of travel, with the Lagrangian pass's exit thickness, forward
 // slip and (within the coarse mesh's difference, docs/BENCHMARKS-ROLLING.md) force; what it cannot do is refused at
-// the user's paths; process.stop_at_steady_state ends a pass there.
+// the user's paths; process.stop_at_steady_state ends a pass there; a window torn into FETI subdomains gives the
+// undivided window's force.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -110,6 +111,21 @@ TEST(RollingAle, ThePaperPassIsSteadyAfterTwoWindowsAndAgreesWithTheLagrangianPa
   EXPECT_LT(std::abs(s.volume_change), 0.015);
   EXPECT_EQ(a.ale_steps, static_cast<int>(a.increments.size()) - 1);  // after every step but the last
   EXPECT_EQ(l.ale_steps, 0);
+}
+
+TEST(RollingAle, APartitionedWindowUnderFetiGivesTheUndividedWindowsForce) {
+  // the window's subdomains take their nodes' new places after every step (GroupLayout::move_nodes)
+  nlohmann::json whole = ale_pass(20), torn = ale_pass(20);
+  torn["process"]["slab_partition"] = "metis:4";
+  torn["solver"] = {{"mode", "feti"}, {"cg_tolerance", 1e-10}};
+  const testing_support::PassRun w = testing_support::run_pass(whole), t = testing_support::run_pass(torn);
+  ASSERT_TRUE(w.status.ok() && t.status.ok()) << w.status.message << " / " << t.status.message;
+  EXPECT_EQ(t.subdomains, 5) << "4 slab subdomains and the roll";
+  ASSERT_EQ(t.rolling->increments.size(), w.rolling->increments.size());
+  for (size_t i = 0; i < w.rolling->increments.size(); ++i)
+    EXPECT_NEAR(t.rolling->increments[i].roll_force, w.rolling->increments[i].roll_force,
+                1e-5 * w.rolling->increments[i].roll_force)
+        << i;
 }
 
 TEST(RollingAle, WhatAnAlePassCannotDoIsRefusedAtTheUsersPaths) {
