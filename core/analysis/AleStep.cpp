@@ -12,25 +12,19 @@
 namespace rollsim {
 
 namespace {
-using El = SolidElement<2>;
-
-Eigen::Vector4d bilinear(double xi, double eta) {
-  constexpr int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
-  Eigen::Vector4d N;
-  for (int a = 0; a < 4; ++a) N[a] = 0.25 * (1 + sx[a] * xi) * (1 + sy[a] * eta);
-  return N;
-}
-
 /// A continuous field through the point values: each element's point values extrapolated to its corners, averaged at
 /// the nodes (`width` per node).
+template <int D>
 std::vector<double> recovered(const Mesh& m, const std::vector<double>& values, int width) {
+  using E = SolidElement<D>;
   std::vector<double> R(static_cast<size_t>(m.num_nodes()) * width, 0.0), count(m.num_nodes(), 0.0);
   for (int e = 0; e < m.num_elements(); ++e) {
-    for (int a = 0; a < 4; ++a) count[m.element(e)[a]] += 1;
+    for (int a = 0; a < E::NN; ++a) count[m.element(e)[a]] += 1;
     for (int c = 0; c < width; ++c) {
-      std::array<double, El::NGP> gp;
-      for (int p = 0; p < El::NGP; ++p) gp[p] = values[(static_cast<size_t>(e) * El::NGP + p) * width + c];
-      for (int a = 0; a < 4; ++a) R[static_cast<size_t>(m.element(e)[a]) * width + c] += El::extrapolate_to_node(gp, a);
+      std::array<double, E::NGP> gp;
+      for (int p = 0; p < E::NGP; ++p) gp[p] = values[(static_cast<size_t>(e) * E::NGP + p) * width + c];
+      for (int a = 0; a < E::NN; ++a)
+        R[static_cast<size_t>(m.element(e)[a]) * width + c] += E::extrapolate_to_node(gp, a);
     }
   }
   for (size_t n = 0; n < count.size(); ++n)
@@ -39,16 +33,19 @@ std::vector<double> recovered(const Mesh& m, const std::vector<double>& values, 
 }
 
 /// Component c of the nodal field R at the point of element e whose shape functions are N.
-double at(const Mesh& m, const std::vector<double>& R, int width, int e, const Eigen::Vector4d& N, int c) {
+template <int D>
+double at(const Mesh& m, const std::vector<double>& R, int width, int e,
+          const Eigen::Matrix<double, SolidElement<D>::NN, 1>& N, int c) {
   double v = 0;
-  for (int a = 0; a < 4; ++a) v += N[a] * R[static_cast<size_t>(m.element(e)[a]) * width + c];
+  for (int a = 0; a < SolidElement<D>::NN; ++a) v += N[a] * R[static_cast<size_t>(m.element(e)[a]) * width + c];
   return v;
 }
-}  // namespace
 
-std::vector<double> advected_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
-                                    int width, const Mesh& to, const MeshMotion& motion) {
-  const std::vector<double> R = recovered(from, values, width);
+template <int D>
+std::vector<double> advected(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
+                             int width, const Mesh& to, const MeshMotion& motion) {
+  using E = SolidElement<D>;
+  const std::vector<double> R = recovered<D>(from, values, width);
   const std::vector<Point3> points = integration_points(to);
   const PointLocator locator(from, x);
   std::vector<double> out(values.size());
@@ -58,22 +55,32 @@ std::vector<double> advected_points(const Mesh& from, const std::vector<Point3>&
       std::fill(value, value + width, 0.0);
       continue;
     }
-    const int e = static_cast<int>(i) / El::NGP;  // the point's own element, whose point i was at `values`' i
+    const int e = static_cast<int>(i) / E::NGP;  // the point's own element, whose point i was at `values`' i
     const MeshPlace place = locator.locate(points[i], e);
-    const Eigen::Vector4d here = bilinear(place.xi, place.eta);
-    const Eigen::Vector4d own = El::gauss_shape().row(static_cast<long>(i) % El::NGP).transpose();
+    const double xi[3] = {place.xi, place.eta, place.zeta};
+    Eigen::Matrix<double, E::NN, 1> here;
+    Eigen::Matrix<double, D, E::NN> dN;
+    E::shape_at(xi, here, dN);
+    const Eigen::Matrix<double, E::NN, 1> own = E::gauss_shape().row(static_cast<long>(i) % E::NGP).transpose();
     for (int c = 0; c < width; ++c) {
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for (int k : {place.element, e})
-        for (int q = 0; q < El::NGP; ++q) {
-          const double v = values[(static_cast<size_t>(k) * El::NGP + q) * width + c];
+        for (int q = 0; q < E::NGP; ++q) {
+          const double v = values[(static_cast<size_t>(k) * E::NGP + q) * width + c];
           lo = std::min(lo, v), hi = std::max(hi, v);
         }
-      const double moved = at(from, R, width, place.element, here, c) - at(from, R, width, e, own, c);
+      const double moved = at<D>(from, R, width, place.element, here, c) - at<D>(from, R, width, e, own, c);
       value[c] = std::clamp(values[i * width + c] + moved, lo, hi);
     }
   }
   return out;
+}
+}  // namespace
+
+std::vector<double> advected_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
+                                    int width, const Mesh& to, const MeshMotion& motion) {
+  return from.dim == 2 ? advected<2>(from, x, values, width, to, motion)
+                       : advected<3>(from, x, values, width, to, motion);
 }
 
 AleRemap ale_remap(const Body& body, const Eigen::VectorXd& u, const std::vector<double>& committed,

@@ -10,7 +10,7 @@
 // elements involved (no new extremes); zero (virgin) where the motion says material flowed in. Interpolating the
 // old element's points alone (StateTransfer::transfer_points, a remesh's) carried no change to a point past its
 // element's points and diverged the 64 × 12 pass in 1 mm steps: the elastic strain's error is multiplied by E/σ_y ≈
-// 2000 in the stress. Plane strain quads; the same elements before and after.
+// 2000 in the stress. Quads and hexes; the same elements before and after.
 #include <Eigen/Dense>
 #include <vector>
 

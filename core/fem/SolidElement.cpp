@@ -219,6 +219,11 @@ double SolidElement<D>::extrapolate_to_node(const std::array<double, NGP>& gp, i
   return v;
 }
 
+template <int D>
+void SolidElement<D>::shape_at(const double* xi, Eigen::Matrix<double, NN, 1>& N, Eigen::Matrix<double, D, NN>& dN) {
+  shape<D>(xi, N, dN);
+}
+
 template struct SolidElement<2>;
 template struct SolidElement<3>;
 

@@ -43,6 +43,8 @@ struct SolidElement {
   /// The shape functions at the Gauss points: row p holds N_a(ξ_p) for every node a (a point's value from its
   /// element's nodes, and a point's share spread back onto them).
   static const Eigen::Matrix<double, NGP, NN>& gauss_shape();
+  /// The shape functions and their derivatives with respect to the natural coordinates at `xi` (D of them).
+  static void shape_at(const double* xi, Eigen::Matrix<double, NN, 1>& N, Eigen::Matrix<double, D, NN>& dN);
   /// Corner-node value from Gauss-point values (bilinear/trilinear extrapolation).
   static double extrapolate_to_node(const std::array<double, NGP>& gp, int node);
 };

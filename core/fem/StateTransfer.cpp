@@ -61,13 +61,13 @@ int clamp_element(int e, const Mesh& m) { return std::clamp(e, 0, m.num_elements
 }  // namespace
 
 PointLocator::PointLocator(const Mesh& mesh, const std::vector<Point3>& x) : mesh_(mesh), x_(x) {
-  require_quads(mesh);
+  const int nn = mesh.nodes_per_elem();
   std::vector<std::vector<int>> of_node(mesh.num_nodes());
   for (int e = 0; e < mesh.num_elements(); ++e)
-    for (int a = 0; a < 4; ++a) of_node[mesh.element(e)[a]].push_back(e);
+    for (int a = 0; a < nn; ++a) of_node[mesh.element(e)[a]].push_back(e);
   neighbours_.resize(mesh.num_elements());
   for (int e = 0; e < mesh.num_elements(); ++e) {
-    for (int a = 0; a < 4; ++a)
+    for (int a = 0; a < nn; ++a)
       for (int f : of_node[mesh.element(e)[a]])
         if (f != e) neighbours_[e].push_back(f);
     std::sort(neighbours_[e].begin(), neighbours_[e].end());
@@ -75,26 +75,37 @@ PointLocator::PointLocator(const Mesh& mesh, const std::vector<Point3>& x) : mes
   }
 }
 
-double PointLocator::local(int e, const Point3& p, double& xi, double& eta) const {
-  const El::Coords c = coords(mesh_, x_, e);
-  xi = eta = 0;
+namespace {
+/// Local coordinates of p in element e (nodes at x) by Newton on the isoparametric map, clamped to the element; the
+/// distance left.
+template <int D>
+double local_in(const Mesh& m, const std::vector<Point3>& x, int e, const Point3& p, double* xi) {
+  using E = SolidElement<D>;
+  typename E::Coords c;
+  for (int a = 0; a < E::NN; ++a)
+    for (int k = 0; k < D; ++k) c(k, a) = x[m.element(e)[a]][k];
+  Eigen::Matrix<double, D, 1> target;
+  for (int k = 0; k < D; ++k) target[k] = p[k];
+  Eigen::Matrix<double, E::NN, 1> N;
+  Eigen::Matrix<double, D, E::NN> dN;
+  for (int k = 0; k < 3; ++k) xi[k] = 0;
   for (int it = 0; it < 30; ++it) {
-    const Eigen::Vector4d N = bilinear(xi, eta);
-    Eigen::Matrix<double, 2, 4> dN;
-    for (int a = 0; a < 4; ++a) {
-      dN(0, a) = 0.25 * kSigns[0][a] * (1 + kSigns[1][a] * eta);
-      dN(1, a) = 0.25 * kSigns[1][a] * (1 + kSigns[0][a] * xi);
-    }
-    const Eigen::Vector2d r = c * N - Eigen::Vector2d(p[0], p[1]);
-    const Eigen::Matrix2d J = c * dN.transpose();  // J(k, i) = dx_k / dξ_i
-    const Eigen::Vector2d d = J.fullPivLu().solve(r);
+    E::shape_at(xi, N, dN);
+    const Eigen::Matrix<double, D, 1> r = c * N - target;
+    const Eigen::Matrix<double, D, D> J = c * dN.transpose();  // J(k, i) = dx_k / dξ_i
+    const Eigen::Matrix<double, D, 1> d = J.fullPivLu().solve(r);
     if (!d.allFinite()) break;
-    xi = std::clamp(xi - d[0], -2.0, 2.0), eta = std::clamp(eta - d[1], -2.0, 2.0);
+    for (int k = 0; k < D; ++k) xi[k] = std::clamp(xi[k] - d[k], -2.0, 2.0);
     if (d.norm() < 1e-13) break;
   }
-  xi = std::clamp(xi, -1.0, 1.0), eta = std::clamp(eta, -1.0, 1.0);
-  const Eigen::Vector2d r = c * bilinear(xi, eta) - Eigen::Vector2d(p[0], p[1]);
-  return r.norm();
+  for (int k = 0; k < D; ++k) xi[k] = std::clamp(xi[k], -1.0, 1.0);
+  E::shape_at(xi, N, dN);
+  return (c * N - target).norm();
+}
+}  // namespace
+
+double PointLocator::local(int e, const Point3& p, double* xi) const {
+  return mesh_.dim == 2 ? local_in<2>(mesh_, x_, e, p, xi) : local_in<3>(mesh_, x_, e, p, xi);
 }
 
 MeshPlace PointLocator::locate(const Point3& p, int near) const {
@@ -106,10 +117,12 @@ MeshPlace PointLocator::locate(const Point3& p, int near) const {
   while (!queue.empty()) {
     const int e = queue.front();
     queue.pop_front();
-    double xi, eta;
-    const double d = local(e, p, xi, eta);
-    if (d < best_distance) best_distance = d, best = {e, xi, eta};
-    const double size = (coords(mesh_, x_, e).col(2) - coords(mesh_, x_, e).col(0)).norm();
+    double xi[3];
+    const double d = local(e, p, xi);
+    if (d < best_distance) best_distance = d, best = {e, xi[0], xi[1], xi[2]};
+    const Point3& lo = x_[mesh_.element(e)[0]];
+    const Point3& hi = x_[mesh_.element(e)[mesh_.dim == 2 ? 2 : 6]];
+    const double size = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
     if (d <= 1e-9 * size) return best;
     for (int f : neighbours_[e])
       if (!seen[f]) seen[f] = 1, queue.push_back(f);
@@ -124,51 +137,70 @@ std::vector<Point3> displaced_nodes(const Mesh& mesh, const Eigen::VectorXd& u) 
   return x;
 }
 
-std::vector<double> current_state(const Body& body, const Eigen::VectorXd& u, std::vector<double> state) {
+namespace {
+template <int D>
+std::vector<double> current_state_in(const Body& body, const Eigen::VectorXd& u, std::vector<double> state, int width) {
+  using E = SolidElement<D>;
   const Mesh& m = body.mesh;
-  require_quads(m);
   const auto material = make_material(body.material);
-  const int width = material->state_size();
-  if (width == 0) return state;
   for (int e = 0; e < m.num_elements(); ++e) {
-    std::array<El::Gradients, El::NGP> dN;
-    std::array<double, El::NGP> dv;
-    El::Gradients centre;
-    El::gradients(coords(m, m.nodes, e), dN, dv, centre);
-    auto gradient = [&](const El::Gradients& g) {
+    typename E::Coords x;
+    for (int a = 0; a < E::NN; ++a)
+      for (int k = 0; k < D; ++k) x(k, a) = m.nodes[m.element(e)[a]][k];
+    std::array<typename E::Gradients, E::NGP> dN;
+    std::array<double, E::NGP> dv;
+    typename E::Gradients centre;
+    E::gradients(x, dN, dv, centre);
+    auto gradient = [&](const typename E::Gradients& g) {
       Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
-      for (int a = 0; a < 4; ++a)
-        for (int i = 0; i < 2; ++i)
-          for (int k = 0; k < 2; ++k) F(i, k) += u[static_cast<Eigen::Index>(m.element(e)[a]) * 2 + i] * g(k, a);
+      for (int a = 0; a < E::NN; ++a)
+        for (int i = 0; i < D; ++i)
+          for (int k = 0; k < D; ++k) F(i, k) += u[static_cast<Eigen::Index>(m.element(e)[a]) * D + i] * g(k, a);
       return F;
     };
-    const double Jc = gradient(centre).topLeftCorner<2, 2>().determinant();
-    for (int p = 0; p < El::NGP; ++p) {
+    const double Jc = gradient(centre).determinant();
+    for (int p = 0; p < E::NGP; ++p) {
       Eigen::Matrix3d F = gradient(dN[p]);
-      if (body.formulation == Formulation::BBar)  // F̄ = (J_0 / J)^{1/2} F in plane strain
-        F.topLeftCorner<2, 2>() *= std::sqrt(Jc / F.topLeftCorner<2, 2>().determinant());
-      material->rebase_state(F, state.data() + (static_cast<size_t>(e) * El::NGP + p) * width);
+      if (body.formulation == Formulation::BBar)  // F̄ = (J_0 / J)^{1/D} F: the centre's volume change
+        F.template topLeftCorner<D, D>() *= std::pow(Jc / F.determinant(), 1.0 / D);
+      material->rebase_state(F, state.data() + (static_cast<size_t>(e) * E::NGP + p) * width);
     }
   }
   return state;
 }
+}  // namespace
 
-std::vector<Point3> integration_points(const Mesh& mesh) {
-  require_quads(mesh);
+std::vector<double> current_state(const Body& body, const Eigen::VectorXd& u, std::vector<double> state) {
+  const int width = make_material(body.material)->state_size();
+  if (width == 0) return state;
+  return body.mesh.dim == 2 ? current_state_in<2>(body, u, std::move(state), width)
+                            : current_state_in<3>(body, u, std::move(state), width);
+}
+
+namespace {
+template <int D>
+std::vector<Point3> integration_points_in(const Mesh& mesh) {
+  using E = SolidElement<D>;
   std::vector<Point3> at;
-  const auto& N = El::gauss_shape();
+  const auto& N = E::gauss_shape();
   for (int e = 0; e < mesh.num_elements(); ++e)
-    for (int p = 0; p < El::NGP; ++p) {
+    for (int p = 0; p < E::NGP; ++p) {
       Point3 q{0, 0, 0};
-      for (int a = 0; a < 4; ++a)
-        for (int c = 0; c < 2; ++c) q[c] += N(p, a) * mesh.nodes[mesh.element(e)[a]][c];
+      for (int a = 0; a < E::NN; ++a)
+        for (int c = 0; c < D; ++c) q[c] += N(p, a) * mesh.nodes[mesh.element(e)[a]][c];
       at.push_back(q);
     }
   return at;
 }
+}  // namespace
+
+std::vector<Point3> integration_points(const Mesh& mesh) {
+  return mesh.dim == 2 ? integration_points_in<2>(mesh) : integration_points_in<3>(mesh);
+}
 
 std::vector<double> transfer_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
                                     int width, const Mesh& to) {
+  require_quads(to);
   const std::vector<Point3> at = integration_points(to);
   std::vector<int> near;  // the same numbers: a remesh keeps the elements
   for (size_t i = 0; i < at.size(); ++i) near.push_back(clamp_element(static_cast<int>(i) / El::NGP, from));

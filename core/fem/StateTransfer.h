@@ -7,7 +7,8 @@
 // negative, a tensor that was positive definite stays so), and no averaging across elements (a lumped L2 projection
 // onto the nodes first took 20 % off the peak plastic strain at a punch's corner, and its stresses left the
 // equilibrium so far that Newton could not restore it). Conservation is not built in: summary.json reports the
-// plastic strain's integral before and after each transfer. 2D quad meshes.
+// plastic strain's integral before and after each transfer. transfer_points and transfer_nodes: 2D quad meshes; the
+// locator, current_state and integration_points: quads and hexes.
 #include <Eigen/Dense>
 #include <array>
 #include <vector>
@@ -19,13 +20,13 @@ namespace rollsim {
 
 using Point3 = std::array<double, 3>;
 
-/// Where a point lies in a quad mesh: its element and local coordinates (ξ, η) in [−1, 1]².
+/// Where a point lies in a mesh: its element and local coordinates (ξ, η, ζ) in [−1, 1]^D.
 struct MeshPlace {
   int element = -1;
-  double xi = 0, eta = 0;
+  double xi = 0, eta = 0, zeta = 0;  // ζ: hexes only
 };
 
-/// Finds points in a quad mesh whose nodes are at `x` (the mesh's connectivity, other positions).
+/// Finds points in a quad or hex mesh whose nodes are at `x` (the mesh's connectivity, other positions).
 class PointLocator {
  public:
   PointLocator(const Mesh& mesh, const std::vector<Point3>& x);
@@ -34,8 +35,9 @@ class PointLocator {
   MeshPlace locate(const Point3& p, int near) const;
 
  private:
-  /// Local coordinates of p in element e by Newton on the bilinear map, clamped to the element; the distance left.
-  double local(int e, const Point3& p, double& xi, double& eta) const;
+  /// Local coordinates of p in element e (xi: D of them) by Newton on the isoparametric map, clamped to the element;
+  /// the distance left.
+  double local(int e, const Point3& p, double* xi) const;
   const Mesh& mesh_;
   const std::vector<Point3>& x_;
   std::vector<std::vector<int>> neighbours_;  // per element: the elements sharing a node with it
