@@ -182,7 +182,7 @@ const ObjectSchema& rolling_process_schema() {
        number("travel_increment", "length", 2, 0, 1e6, "roll surface travel per increment"),
        choice("formulation", {"lagrangian", "ale"}, "lagrangian",
               "how the slab's mesh moves: lagrangian (with the material: the whole slab_length is rolled through the "
-              "gap, its front from the exit plane on) or ale (arbitrary Lagrangian–Eulerian, plane strain, one pass: "
+              "gap, its front from the exit plane on) or ale (arbitrary Lagrangian–Eulerian, one pass: "
               "the mesh is a window held around the roll gap, from ale_entry_length before the exit plane to "
               "ale_exit_length past it, cut to the roll over the arc and flat at the gap past it; the material "
               "flows through — after each step the nodes go back to their x, the top following the free surface or "
@@ -414,8 +414,6 @@ void check_ale(const json& project, std::vector<Issue>& issues) {
     return;
   }
   const std::string why = "process.formulation";
-  if (project.at("dimension").get<int>() != 2)
-    issues.push_back({why, "ale is plane strain only yet (dimension 2): use lagrangian in 3D"});
   if (p.contains("heat_transfer"))
     issues.push_back({why,
                       "ale does not carry conducted temperatures yet: remove process.heat_transfer, or use "
@@ -561,11 +559,14 @@ json expand_rolling(const json& project) {
   } else {
     const int halves = half_width(p) ? 1 : 2;  // the modelled width: half (from y = 0) or whole (about y = 0)
     const double barrel = p.at("barrel_width");
+    const auto [entry, exit] = is_ale(p) ? ale_window(p) : std::pair{L, 0.0};  // an ALE window, or the slab
     slab_mesh.update({{"ny", halves * p.at("slab_nw").get<int>()},
+                      {"lx", entry + exit},
                       {"ly", halves * W / 2},
                       {"nz", p.at("slab_nt")},
                       {"lz", h0 / 2},
-                      {"origin", {-L, halves == 1 ? 0.0 : -W / 2, 0.0}}});
+                      {"origin", {-entry, halves == 1 ? 0.0 : -W / 2, 0.0}}});
+    if (is_ale(p)) slab_mesh["roll_cut"]["flat_exit"] = true;
     if (p.at("thickness_grading").get<double>() != 1) slab_mesh["z_grading"] = p.at("thickness_grading");
     roll_mesh.update({{"type", "cylinder"},
                       {"center", {0.0, axis}},
@@ -581,8 +582,8 @@ json expand_rolling(const json& project) {
                {"kinematics", "finite"}, {"mesh", slab_mesh},  {"node_sets", json::array()}};
   if (dim == 3 && !half_width(p))
     slab["node_sets"].push_back({{"name", "centre_line"},
-                                 {"box_min", {-L - 1, -1e-6 * W, -1e-6 * h0}},
-                                 {"box_max", {1.0, 1e-6 * W, 1e-6 * h0}}});
+                                 {"box_min", {-slab_mesh.at("lx").get<double>() - 1, -1e-6 * W, -1e-6 * h0}},
+                                 {"box_max", {slab_mesh.at("lx").get<double>() + 1, 1e-6 * W, 1e-6 * h0}}});
   if (p.contains("slab_partition")) slab["partition"] = p.at("slab_partition");
   if (p.contains("slab_partition_map")) slab["partition_map"] = p.at("slab_partition_map");
   out["bodies"].push_back(slab);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "process/rolling/RollingAle3d.h"
 #include "process/rolling/RollingFacts.h"
 #include "process/rolling/RollingMeasures.h"
 #include "process/rolling/RollingReport.h"
@@ -12,7 +13,8 @@
 namespace rollsim {
 
 RollingRun::RollingRun(RollingPass pass, const Model& model) : pass_(std::move(pass)), model_(model) {
-  if (pass_.ale) ale_.emplace(pass_, model_);
+  if (pass_.ale && model_.dim == 2) ale_ = std::make_unique<RollingAle>(pass_, model_);
+  if (pass_.ale && model_.dim == 3) ale_ = std::make_unique<RollingAle3d>(pass_, model_);
 }
 
 RunStatus RollingRun::refusal() const {

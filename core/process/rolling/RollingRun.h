@@ -3,7 +3,7 @@
 // travel, roll force and torque, ends the analysis once the slab's rear end enters the roll gap (or, asked to, once
 // the pass is steady), holds an ALE pass's slab window in place (RollingAle), and measures the whole pass at the end
 // (RollingMeasures, RollingReport).
-#include <optional>
+#include <memory>
 #include <vector>
 
 #include "process/Process.h"
@@ -24,14 +24,14 @@ class RollingRun final : public ProcessRun {
   MeasureRow measure(const IncrementResults& increment) const override;
   std::string over(const IncrementResults& increment) const override;
   ProcessResults finish(const Results& results) const override;
-  const MeshMotion* mesh_motion() const override { return ale_ ? &*ale_ : nullptr; }
+  const MeshMotion* mesh_motion() const override { return ale_.get(); }
 
  private:
   /// Why the pass is over as steady (stop_at_steady): the increments measured so far are steady.
   std::string steady() const;
   RollingPass pass_;
   const Model& model_;
-  std::optional<RollingAle> ale_;
+  std::unique_ptr<MeshMotion> ale_;             // an ALE pass's window: RollingAle, or RollingAle3d in 3D
   mutable std::vector<RollingIncrement> live_;  // travel, force and torque of every increment measured so far
 };
 

@@ -1,0 +1,145 @@
+#include "process/rolling/RollingAle3d.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "analysis/AnalysisError.h"
+
+namespace rollsim {
+
+namespace {
+/// The bilinear map of a quad's four corners projected on the x-y plane: (s, t) in [−1, 1]² holding (x, y), or false.
+bool inside_xy(const std::array<std::array<double, 3>, 4>& q, double x, double y, double& s, double& t) {
+  constexpr int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+  s = t = 0;
+  for (int it = 0; it < 20; ++it) {
+    Eigen::Vector2d r(-x, -y);
+    Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+    for (int a = 0; a < 4; ++a) {
+      const double N = 0.25 * (1 + sx[a] * s) * (1 + sy[a] * t);
+      const double ds = 0.25 * sx[a] * (1 + sy[a] * t), dt = 0.25 * sy[a] * (1 + sx[a] * s);
+      r += N * Eigen::Vector2d(q[a][0], q[a][1]);
+      J.col(0) += ds * Eigen::Vector2d(q[a][0], q[a][1]);
+      J.col(1) += dt * Eigen::Vector2d(q[a][0], q[a][1]);
+    }
+    if (std::abs(J.determinant()) < 1e-14) return false;
+    const Eigen::Vector2d d = J.inverse() * r;
+    s -= d[0], t -= d[1];
+    if (d.norm() < 1e-12) break;
+  }
+  return std::abs(s) <= 1 + 1e-9 && std::abs(t) <= 1 + 1e-9;
+}
+}  // namespace
+
+RollingAle3d::RollingAle3d(const RollingPass& pass, const Model& model) : slab_(pass.slab), roll_(pass.roll) {
+  const Mesh& slab = model.bodies[static_cast<size_t>(slab_)].mesh;
+  // a column: the nodes of one (x, y), by height; a line: the nodes of one (y, level), by x
+  std::map<std::pair<double, double>, std::vector<int>> columns;
+  for (int n = 0; n < slab.num_nodes(); ++n) {
+    const auto& X = slab.nodes[static_cast<size_t>(n)];
+    columns[{X[0], X[1]}].push_back(n);
+  }
+  std::map<std::pair<double, size_t>, std::vector<int>> lines;
+  size_t levels = 0;
+  for (auto& [xy, nodes] : columns) {
+    std::sort(nodes.begin(), nodes.end(), [&](int a, int b) { return slab.nodes[a][2] < slab.nodes[b][2]; });
+    levels = std::max(levels, nodes.size());
+    for (size_t k = 0; k < nodes.size(); ++k) lines[{xy.second, k}].push_back(nodes[k]);
+    if (x_.empty() || x_.back() != xy.first) x_.push_back(xy.first);
+  }
+  std::sort(x_.begin(), x_.end());
+  x_.erase(std::unique(x_.begin(), x_.end()), x_.end());
+  for (auto& [key, nodes] : lines) {
+    std::sort(nodes.begin(), nodes.end(), [&](int a, int b) { return slab.nodes[a][0] < slab.nodes[b][0]; });
+    if (nodes.size() != x_.size()) throw std::logic_error("ALE rolling: the slab's window is not a structured block");
+    lines_.push_back(nodes);
+    top_.push_back(key.second + 1 == levels);
+  }
+  entry_ = slab.node_sets.at("xmin");
+  const Mesh& roll = model.bodies[static_cast<size_t>(roll_)].mesh;
+  for (const Facet& f : roll.surfaces.at("outer")) {
+    const std::vector<int> local = facet_local_nodes(roll.type, f.local);
+    std::array<int, 4> q{};
+    for (int a = 0; a < 4; ++a) q[static_cast<size_t>(a)] = roll.element(f.element)[local[static_cast<size_t>(a)]];
+    roll_facets_.push_back(q);
+  }
+}
+
+double RollingAle3d::roll_under(double x, double y, const Positions& roll) const {
+  double under = std::numeric_limits<double>::infinity();
+  for (const auto& f : roll_facets_) {
+    std::array<std::array<double, 3>, 4> q;
+    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+    for (size_t a = 0; a < 4; ++a) {
+      q[a] = roll[static_cast<size_t>(f[a])];
+      lo_x = std::min(lo_x, q[a][0]), hi_x = std::max(hi_x, q[a][0]);
+      lo_y = std::min(lo_y, q[a][1]), hi_y = std::max(hi_y, q[a][1]);
+    }
+    double s, t;
+    if (x < lo_x || x > hi_x || y < lo_y || y > hi_y || !inside_xy(q, x, y, s, t)) continue;
+    constexpr int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    double z = 0;
+    for (size_t a = 0; a < 4; ++a) z += 0.25 * (1 + sx[a] * s) * (1 + sy[a] * t) * q[a][2];
+    under = std::min(under, z);
+  }
+  return under;
+}
+
+MeshMotion::Positions RollingAle3d::placed(const std::vector<Positions>& current,
+                                           const std::vector<char>& touching) const {
+  const Positions& slab = current[static_cast<size_t>(slab_)];
+  const Positions& roll = current[static_cast<size_t>(roll_)];
+  Positions out = slab;
+  for (size_t l = 0; l < lines_.size(); ++l) {
+    const std::vector<int>& line = lines_[l];
+    for (size_t i = 1; i < line.size(); ++i)
+      if (!(slab[static_cast<size_t>(line[i])][0] > slab[static_cast<size_t>(line[i - 1])][0]))
+        throw AnalysisError("the slab's lines of nodes along x have folded over themselves: they cannot be followed");
+    size_t seg = 0;
+    for (size_t i = 0; i < line.size(); ++i) {
+      const double X = x_[i];
+      while (seg + 2 < line.size() && slab[static_cast<size_t>(line[seg + 1])][0] < X) ++seg;
+      const auto& a = slab[static_cast<size_t>(line[seg])];
+      const auto& b = slab[static_cast<size_t>(line[seg + 1])];
+      const double t = std::clamp((X - a[0]) / (b[0] - a[0]), 0.0, 1.0);  // held beyond the line's ends
+      std::array<double, 3> p{X, a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+      if (top_[l]) {
+        const double under = roll_under(X, p[1], roll);
+        if (std::isfinite(under) && (touching[static_cast<size_t>(line[i])] || p[2] > under)) p[2] = under;
+      }
+      if (!(p[2] >= 0)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "the slab has no thickness left at x = %.4g mm", X);
+        throw AnalysisError(text);
+      }
+      out[static_cast<size_t>(line[i])] = p;
+    }
+  }
+  return out;
+}
+
+bool RollingAle3d::inflow(const std::array<double, 3>& p, const Positions& current) const {
+  double best = std::numeric_limits<double>::infinity(), x = 0;  // the entry face's node nearest across the section
+  for (int n : entry_) {
+    const auto& c = current[static_cast<size_t>(n)];
+    const double d = std::hypot(c[1] - p[1], c[2] - p[2]);
+    if (d < best) best = d, x = c[0];
+  }
+  return p[0] < x;
+}
+
+std::string RollingAle3d::describe() const {
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the slab's mesh held from x = %.4g to %.4g mm (%zu planes, %zu lines along x), its material flowing "
+                "through",
+                x_.front(), x_.back(), x_.size(), lines_.size());
+  return text;
+}
+
+}  // namespace rollsim
