@@ -300,10 +300,13 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
     const double front = mean_advance(slab, slab.node_sets.at("xmax"), u);
     const double rear = mean_advance(slab, slab.node_sets.at("xmin"), u);
     const double dt = r.travel - travel_before;
+    // the roll bites once the rear end follows: it moves in by half of what the roll's travel would draw in (an ALE
+    // window's entry face: in the step)
+    const bool drawn_in =
+        dt > 0 && (pass.ale ? rear : rear - rear_before) >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness;
+    if (!out.bite_increment && drawn_in) out.bite_increment = static_cast<int>(out.increments.size()) + 1;
     if (pass.ale) {  // the step's own advance of the exit and entry faces (an ALE step starts from its window)
       r.forward_slip = dt > 0 ? front / dt - 1 : 0.0;
-      if (!out.bite_increment && dt > 0 && rear >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
-        out.bite_increment = static_cast<int>(out.increments.size()) + 1;
       r.volume_change = flux_balance(slab, u);
     } else {
       // over the last tenth of a contact length of travel (from the start before that): a cut-back step's own
@@ -313,9 +316,6 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
       const double span = r.travel - fronts[j].first;
       r.forward_slip = span > 0 ? (front - fronts[j].second) / span - 1 : 0.0;
       fronts.emplace_back(r.travel, front);
-      // the roll bites once the rear end follows: it moves in by half of what the roll's travel would draw in
-      if (!out.bite_increment && dt > 0 && rear - rear_before >= 0.5 * dt * pass.exit_thickness / pass.entry_thickness)
-        out.bite_increment = static_cast<int>(out.increments.size()) + 1;
       r.volume_change = volume(slab, u) / volume0 - 1;
     }
     r.mean_pressure = r.contact_length > 0 ? r.roll_force / r.contact_length : 0.0;  // p̄ = F / (L b)
