@@ -256,16 +256,30 @@ Eigen::VectorXd node_temperatures(const Mesh& mesh, const BodyResults& r) {
   return T.cwiseQuotient(count.cwiseMax(1.0));
 }
 
-int steady_state_from(const std::vector<RollingIncrement>& h, double window) {
+int steady_state_from(const std::vector<RollingIncrement>& h, double window, bool shape) {
   const auto near = [](double a, double b) { return std::abs(a - b) <= kSteadyTolerance * std::abs(a); };
+  const auto settled = [&](const RollingIncrement& a, const RollingIncrement& b) {
+    return !shape ||
+           std::abs(a.mean_spread - b.mean_spread) <= kSteadyTolerance * std::abs(a.mean_spread) + kSteadySpread;
+  };
   for (size_t i = 0; i < h.size(); ++i) {
     const double t = h[i].travel;
     if (t < 2 * window) continue;
     const RollingIncrement last = window_mean(h, t - window, t), before = window_mean(h, t - 2 * window, t - window);
-    if (near(last.roll_force, before.roll_force) && near(last.roll_torque, before.roll_torque))
+    if (near(last.roll_force, before.roll_force) && near(last.roll_torque, before.roll_torque) && settled(last, before))
       return static_cast<int>(i) + 1;
   }
   return 0;
+}
+
+RollingIncrement exit_shape(const RollingPass& pass, const Model& model, const IncrementResults& inc) {
+  const Mesh& slab = model_of(inc, model).bodies[static_cast<size_t>(pass.slab)].mesh;
+  const BodyResults& r = inc.bodies[static_cast<size_t>(pass.slab)];
+  const double contact = rolling_theory(pass).contact_length;
+  RollingIncrement out;
+  exit_geometry(pass, slab, r, contact, out);
+  if (pass.width_axis >= 0) out.mean_spread = mean_spread(pass, slab, r, contact);
+  return out;
 }
 
 RollingIncrement roll_load(const RollingPass& pass, const Model& model, const IncrementResults& inc) {
@@ -293,9 +307,8 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
     const Mesh& slab = at.bodies[static_cast<size_t>(pass.slab)].mesh;
     RollingIncrement r = roll_load(pass, model, inc);
     for (const ContactResult& c : inc.contacts) r.contact_length += symmetry * c.measure;
-    exit_geometry(pass, slab, inc.bodies[static_cast<size_t>(pass.slab)], contact, r);
-    if (pass.width_axis >= 0)
-      r.mean_spread = mean_spread(pass, slab, inc.bodies[static_cast<size_t>(pass.slab)], contact);
+    const RollingIncrement shape = exit_shape(pass, model, inc);
+    r.exit_thickness = shape.exit_thickness, r.spread = shape.spread, r.mean_spread = shape.mean_spread;
     const Eigen::VectorXd& u = inc.bodies[static_cast<size_t>(pass.slab)].displacement;
     const double front = mean_advance(slab, slab.node_sets.at("xmax"), u);
     const double rear = mean_advance(slab, slab.node_sets.at("xmin"), u);
@@ -330,7 +343,7 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
       break;
     }
   const double window = kSteadyWindow * contact;
-  out.steady_state_increment = steady_state_from(out.increments, window);
+  out.steady_state_increment = steady_state_from(out.increments, window, pass.ale && pass.width_axis >= 0);
   const double last = out.increments.back().travel;
   const double from = out.steady_state_increment
                           ? out.increments[static_cast<size_t>(out.steady_state_increment - 1)].travel - window

@@ -36,10 +36,18 @@ constexpr double kSteadyWindow = 0.5;  // the window, in nominal contact lengths
 /// increment counts for its short step).
 RollingIncrement window_mean(const std::vector<RollingIncrement>& history, double from, double to);
 
+/// The spread a mean-width window may still change by and count as steady, besides kSteadyTolerance of it [length].
+constexpr double kSteadySpread = 0.01;
+
 /// The first increment (1-based) at which the means of roll force and torque over the `window` of travel before it
-/// and over the window before that agree within kSteadyTolerance; 0 when none does (or the travel is shorter than
-/// two windows).
-int steady_state_from(const std::vector<RollingIncrement>& history, double window);
+/// and over the window before that agree within kSteadyTolerance — with `shape`, the mean spread's too (within
+/// kSteadyTolerance of it plus kSteadySpread: an ALE pass in 3D, whose force settles long before its free side does);
+/// 0 when none does (or the travel is shorter than two windows).
+int steady_state_from(const std::vector<RollingIncrement>& history, double window, bool shape = false);
+
+/// An increment's exit thickness, spread and mean spread (RollingIncrement's; the rest zero), from the slab's nodes
+/// past the exit plane on the increment's model.
+RollingIncrement exit_shape(const RollingPass& pass, const Model& model, const IncrementResults& increment);
 
 /// ∫ N_a dV of every node of the mesh as meshed: its share of the body's volume (the weights of a volume mean).
 Eigen::VectorXd node_volumes(const Mesh& mesh);

@@ -47,7 +47,8 @@ MeasureTable RollingRun::live_table() const {
 ChartRequest RollingRun::live_chart() const { return history_chart(pass_, model_.dim, {}, false); }
 
 MeasureRow RollingRun::measure(const IncrementResults& increment) const {
-  const RollingIncrement r = roll_load(pass_, model_, increment);
+  RollingIncrement r = roll_load(pass_, model_, increment);
+  if (shape_steady()) r.mean_spread = exit_shape(pass_, model_, increment).mean_spread;
   while (!live_.empty() && live_.back().travel >= r.travel) live_.pop_back();  // measured again: a repeated step
   live_.push_back(r);
   return {r.travel, r.roll_force, r.roll_torque};
@@ -55,13 +56,14 @@ MeasureRow RollingRun::measure(const IncrementResults& increment) const {
 
 std::string RollingRun::steady() const {
   const double window = kSteadyWindow * rolling_theory(pass_).contact_length;
-  const int from = steady_state_from(live_, window);
+  const int from = steady_state_from(live_, window, shape_steady());
   if (from == 0) return {};
   char text[300];
   std::snprintf(text, sizeof text,
                 "the pass is steady at travel %.4g mm (process.stop_at_steady_state): the means of roll force and "
-                "torque over the last two windows of %.3g mm of travel agree within %g %%",
-                live_[static_cast<size_t>(from - 1)].travel, window, 100 * kSteadyTolerance);
+                "torque%s over the last two windows of %.3g mm of travel agree within %g %%",
+                live_[static_cast<size_t>(from - 1)].travel, shape_steady() ? " and the mean spread" : "", window,
+                100 * kSteadyTolerance);
   return text;
 }
 

@@ -1,6 +1,7 @@
 // Steady state of a pass from its history: the means of force and torque over the last two windows of travel agree
 // within 2 %. A rise that has not settled, a history shorter than two windows, or torque still moving is not steady;
-// a force that steps up and down as nodes enter the arc (a finite mesh) is steady once its means settle.
+// a force that steps up and down as nodes enter the arc (a finite mesh) is steady once its means settle; with the
+// shape (an ALE pass in 3D) a mean spread still growing is not steady.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,6 +81,17 @@ TEST(RollingMeasures, NotSteadyWhileRisingShorterThanTwoWindowsOrTorqueDrifting)
   EXPECT_EQ(steady_state_from(history(30), 31.45), 0);          // 60 mm of travel, shorter than two windows
   EXPECT_EQ(steady_state_from(history(80, 2000.0), 31.45), 0);  // torque keeps growing by 2000 N·mm per mm
   EXPECT_EQ(steady_state_from({}, 31.45), 0);
+}
+
+TEST(RollingMeasures, WithTheShapeNotSteadyWhileTheMeanSpreadStillGrows) {
+  std::vector<RollingIncrement> growing = history(80), settled = history(80);
+  for (size_t i = 0; i < growing.size(); ++i) {
+    growing[i].mean_spread = 0.01 * growing[i].travel;  // 0.3 mm more per window, as the 3D ALE window's
+    settled[i].mean_spread = 1.2 * (1 - std::exp(-growing[i].travel / 15));
+  }
+  EXPECT_GT(steady_state_from(growing, 31.45), 0) << "force and torque alone are steady";
+  EXPECT_EQ(steady_state_from(growing, 31.45, true), 0);
+  EXPECT_EQ(steady_state_from(settled, 31.45, true), steady_state_from(settled, 31.45));
 }
 
 // Spread, two ways, from the slab's side face past the exit plane: the widest point and the mean width over the
