@@ -93,6 +93,14 @@ std::vector<ProcessFact> rolling_facts(const RollingPass& pass, int dim) {
   speed(pass, t, dim, facts);
   for (size_t k = 0; k < pass.schedule.size(); ++k)  // a schedule: the facts above are its first pass's
     facts.push_back({"pass " + std::to_string(k + 1), pass.schedule[k].first, pass.schedule[k].second});
+  if (pass.ale) {  // the slab never runs out: the window is held while its material flows through
+    facts.push_back({"ALE window", format("x %.4g to %.4g mm", -pass.ale_entry, pass.ale_exit),
+                     "the slab's mesh held around the gap (exit plane at 0), its material flowing through"});
+    if (pass.stop_at_steady)
+      facts.push_back({"end of the pass", format("travel ≈ %.0f mm", t.contact_length),
+                       "steady at the earliest after two windows of half a contact length"});
+    return facts;
+  }
   const double through = travel_through(pass);
   if (through < pass.travel)
     facts.push_back({"end of the pass", format("travel ≈ %.0f of %g mm", through, pass.travel),

@@ -13,6 +13,7 @@
 #include "../../../common/RollingPass.h"
 #include "process/rolling/RollingAle.h"
 #include "process/rolling/RollingAle3d.h"
+#include "process/rolling/RollingRun.h"
 
 namespace test_rolling_ale {
 
@@ -52,6 +53,9 @@ TEST(RollingAle, TheWindowSpansTheArcAndASlabMovedOnIsPutBackOntoItsMesh) {
   EXPECT_DOUBLE_EQ(x_min, -pass.ale_entry);
   EXPECT_NEAR(x_max, pass.ale_exit, 1e-9);
   EXPECT_NEAR(exit_top, 86.8 / 2, 1e-9) << "flat at the gap past the exit plane";
+  bool said = false;  // `rollsim check` and the window's forecast say where the window lies
+  for (const ProcessFact& f : RollingRun(pass, m).facts()) said = said || f.name == "ALE window";
+  EXPECT_TRUE(said);
   const RollingAle motion(pass, m);
   // the slab moved on by 0.5 mm along x, the roll where it is: every node back where it was meshed (the top of the
   // arc, moved into the roll, projected back onto it)
