@@ -1,5 +1,5 @@
 #pragma once
-// Where an ALE run (analysis/AleRun) puts the nodes of a body its material flows through, after each converged step,
+// Where an ALE run (analysis/AleStep) puts the nodes of a body its material flows through, after each converged step,
 // from a process (a rolling pass: its slab's window fixed around the roll gap) the analysis knows only through this
 // interface.
 #include <array>

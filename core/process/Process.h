@@ -39,7 +39,7 @@ class ProcessRun : public IncrementMeasure {
   /// through the roll gap, whatever travel is left (IncrementMeasure::over).
   virtual double expected_share() const { return 1; }
   /// Where a body's nodes go after each step when its material flows through a mesh held in place (an ALE run,
-  /// analysis/AleRun), or null: the run is Lagrangian.
+  /// analysis/AleStep), or null: the run is Lagrangian.
   virtual const MeshMotion* mesh_motion() const { return nullptr; }
   /// Its measures of `results` (every completed increment): tables, charts, summary section, report.
   virtual ProcessResults finish(const Results& results) const = 0;
