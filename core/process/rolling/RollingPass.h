@@ -20,7 +20,8 @@ struct RollingPass {
   double width = 0;                                // whole slab width b0 (3D) [length]
   double slab_length = 0;                          // the slab's length before the pass [length]
   // process.formulation ale: the slab's mesh a window held around the roll gap, from x = −ale_entry to ale_exit (the
-  // exit plane at x = 0), its material flowing through (RollingAle); false: Lagrangian, the slab rolled through
+  // exit plane at x = 0), its material flowing through (RollingAle, RollingAle3d); false: Lagrangian, the slab rolled
+  // through
   bool ale = false;
   double ale_entry = 0, ale_exit = 0;  // [length]
   bool stop_at_steady = false;         // the run ends once force and torque are steady (steady_state_from)
