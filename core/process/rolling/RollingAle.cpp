@@ -46,11 +46,8 @@ RollingAle::RollingAle(const RollingPass& pass, const Model& model) : slab_(pass
   }
 }
 
-double RollingAle::top_at(double x, const Positions& slab, const Positions& roll, bool touching) const {
-  std::vector<std::array<double, 2>> top;
-  for (const Column& c : columns_) top.push_back({slab[c.nodes.back()][0], slab[c.nodes.back()][1]});
-  if (!std::is_sorted(top.begin(), top.end()))
-    throw AnalysisError("the slab's top surface has folded over itself: it cannot be followed");
+double RollingAle::top_at(double x, const std::vector<std::array<double, 2>>& top, const Positions& roll,
+                          bool touching) const {
   double under = std::numeric_limits<double>::infinity();
   for (const auto& [a, b] : roll_edges_) {  // the roll's lower side: the lowest of its edges that span x
     const double x0 = roll[a][0], x1 = roll[b][0];
@@ -64,10 +61,14 @@ double RollingAle::top_at(double x, const Positions& slab, const Positions& roll
 MeshMotion::Positions RollingAle::placed(const std::vector<Positions>& current,
                                          const std::vector<char>& touching) const {
   const Positions& slab = current[static_cast<size_t>(slab_)];
+  std::vector<std::array<double, 2>> surface;  // the slab's top after the step, by x
+  for (const Column& c : columns_) surface.push_back({slab[c.nodes.back()][0], slab[c.nodes.back()][1]});
+  if (!std::is_sorted(surface.begin(), surface.end()))
+    throw AnalysisError("the slab's top surface has folded over itself: it cannot be followed");
   Positions out = slab;
   for (const Column& c : columns_) {
     const double top =
-        top_at(c.x, slab, current[static_cast<size_t>(roll_)], touching[static_cast<size_t>(c.nodes.back())]);
+        top_at(c.x, surface, current[static_cast<size_t>(roll_)], touching[static_cast<size_t>(c.nodes.back())]);
     if (!(top > 0)) {
       char text[160];
       std::snprintf(text, sizeof text, "the slab has no thickness left at x = %.4g mm", c.x);

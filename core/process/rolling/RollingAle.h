@@ -31,9 +31,9 @@ class RollingAle final : public MeshMotion {
     std::vector<int> nodes;     // bottom to top
     std::vector<double> share;  // each node's height over the column's top, as meshed
   };
-  /// The top's height at x: the slab's current top surface, under the roll's current surface — on it where the
-  /// column's top node touches the roll (`touching`: the material there is in contact).
-  double top_at(double x, const Positions& slab, const Positions& roll, bool touching) const;
+  /// The top's height at x: the slab's current top surface (`top`, by x), under the roll's current surface — on it
+  /// where the column's top node touches the roll (`touching`: the material there is in contact).
+  double top_at(double x, const std::vector<std::array<double, 2>>& top, const Positions& roll, bool touching) const;
   int slab_ = 0, roll_ = 1;
   std::vector<Column> columns_;                 // by x
   std::vector<int> entry_;                      // the entry face's nodes, bottom to top
