@@ -156,6 +156,8 @@ class NewtonRun {
   /// the points' temperatures written back into the committed state. `slid_before`: the pairs' slip where it began.
   void heat_step(double span, double lf, const std::vector<std::vector<double>>& slid_before);
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
+  /// How a diverged run says its step's halvings (`depth` below the nominal step): cut-backs, and the first step's own.
+  std::string halvings(int depth) const;
   /// Under `predictor: extrapolate`, u_ moved on by the last converged step's displacement scaled from its load-factor
   /// span to this step's; false when there is none yet (the first step) or the option is `tangent`.
   bool extrapolate(double span);
@@ -654,6 +656,14 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
   }
 }
 
+std::string NewtonRun::halvings(int depth) const {
+  if (opt_.first_step_halvings == 0)
+    return std::to_string(depth) + " cut-backs used (analysis.max_cutbacks: the step halved that often)";
+  return "the step halved " + std::to_string(depth) + " times below its nominal size (analysis.max_cutbacks; the run " +
+         "starts " + std::to_string(opt_.first_step_halvings) + " below it, analysis.first_step_halvings, and grows " +
+         "back)";
+}
+
 bool NewtonRun::extrapolate(double span) {
   if (last_span_ <= 0) return false;
   if (opt_.predictor == Predictor::Tangent && motion_) {
@@ -761,8 +771,7 @@ Results NewtonRun::run() {
       if (depth >= opt_.max_cutbacks) {
         res.status = {Status::diverged, Reason::none,
                       "increment " + std::to_string(increment + 1) + " (load factor " + four_digits(lf) + " to " +
-                          four_digits(target) + "): " + a.cause + "; " + std::to_string(depth) +
-                          " cut-backs used (analysis.max_cutbacks: the step halved that often)" + advice(a.cause)};
+                          four_digits(target) + "): " + a.cause + "; " + halvings(depth) + advice(a.cause)};
         break;
       }
       obs_.on_cutback(increment + 1, a.cause);

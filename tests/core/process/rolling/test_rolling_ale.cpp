@@ -175,6 +175,18 @@ TEST(RollingAle, The3dWindowPutsASlabMovedOnBackAndRolls) {
   EXPECT_GT(last.forward_slip, 0.0);
 }
 
+TEST(RollingAle, ADivergedPassSaysItsStepStartedHalved) {
+  // 4 mm steps on 64 × 12 invert an element in the second step; the step's halvings count the three it started with
+  nlohmann::json j = ale_pass(20);
+  j["process"].update({{"slab_nx", 64}, {"slab_nt", 12}, {"roll_n_around", 240}, {"travel_increment", 4.0}});
+  const testing_support::PassRun r = testing_support::run_pass(j);
+  ASSERT_EQ(r.status.status, Status::diverged) << r.status.message;
+  EXPECT_NE(r.status.message.find("is inverted"), std::string::npos) << r.status.message;
+  EXPECT_NE(r.status.message.find("the run starts 3 below it, analysis.first_step_halvings"), std::string::npos)
+      << r.status.message;
+  EXPECT_NE(r.status.message.find("process.travel_increment (now 4 mm)"), std::string::npos) << r.status.message;
+}
+
 TEST(RollingAle, WhatAnAlePassCannotDoIsRefusedAtTheUsersPaths) {
   const auto has = [](const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
