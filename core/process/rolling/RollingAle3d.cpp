@@ -50,9 +50,8 @@ RollingAle3d::RollingAle3d(const RollingPass& pass, const Model& model) : slab_(
     std::sort(nodes.begin(), nodes.end(), [&](int a, int b) { return slab.nodes[a][2] < slab.nodes[b][2]; });
     levels = std::max(levels, nodes.size());
     for (size_t k = 0; k < nodes.size(); ++k) lines[{xy.second, k}].push_back(nodes[k]);
-    if (x_.empty() || x_.back() != xy.first) x_.push_back(xy.first);
+    x_.push_back(xy.first);  // the map's keys are sorted by x: equal ones run together
   }
-  std::sort(x_.begin(), x_.end());
   x_.erase(std::unique(x_.begin(), x_.end()), x_.end());
   for (auto& [key, nodes] : lines) {
     std::sort(nodes.begin(), nodes.end(), [&](int a, int b) { return slab.nodes[a][0] < slab.nodes[b][0]; });

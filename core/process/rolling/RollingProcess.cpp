@@ -302,7 +302,7 @@ double nominal_contact_length(const json& p) {
 std::pair<double, double> pass_strain_and_rate(const json& p) {
   const double h0 = p.at("slab_thickness"), h1 = exit_thickness(p);
   const double strain = 2 / std::sqrt(3.0) * std::log(h0 / h1);
-  return {strain, strain * surface_speed(p) / std::sqrt(roll_radius(p) * (h0 - h1))};
+  return {strain, strain * surface_speed(p) / nominal_contact_length(p)};
 }
 
 }  // namespace
@@ -537,36 +537,30 @@ json expand_rolling(const json& project) {
   out["materials"].push_back(
       {{"name", "roll"}, {"model", "linear_elastic"}, {"E", p.at("roll_E")}, {"nu", p.at("roll_nu")}});
   const int around = p.at("roll_n_around");
+  // the slab from −L to the exit plane, or an ALE window from −entry to exit, flat at the gap past the exit plane
+  const auto [entry, exit] = is_ale(p) ? ale_window(p) : std::pair{L, 0.0};
   json slab_mesh = {{"type", "block"},
                     {"nx", p.at("slab_nx")},
-                    {"lx", L},
+                    {"lx", entry + exit},
                     {"x_grading", p.at("grading")},
                     {"roll_cut", {{"center", {0.0, axis}}, {"radius", R}, {"n_around", around}}}};
+  if (is_ale(p)) slab_mesh["roll_cut"]["flat_exit"] = true;
   json roll_mesh = {{"inner_radius", p.at("roll_hub_radius")},
                     {"outer_radius", R},
                     {"n_radial", p.at("roll_n_radial")},
                     {"n_around", p.at("roll_n_around")}};
-  if (dim == 2 && is_ale(p)) {  // the window from −entry to exit, flat at the gap past the exit plane
-    const auto [entry, exit] = ale_window(p);
-    slab_mesh.update({{"lx", entry + exit}, {"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-entry, 0.0}}});
-    slab_mesh["roll_cut"]["flat_exit"] = true;
-    if (p.at("thickness_grading").get<double>() != 1) slab_mesh["y_grading"] = p.at("thickness_grading");
-    roll_mesh.update({{"type", "annulus"}, {"center", {0.0, axis}}});
-  } else if (dim == 2) {
-    slab_mesh.update({{"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-L, 0.0}}});
+  if (dim == 2) {
+    slab_mesh.update({{"ny", p.at("slab_nt")}, {"ly", h0 / 2}, {"origin", {-entry, 0.0}}});
     if (p.at("thickness_grading").get<double>() != 1) slab_mesh["y_grading"] = p.at("thickness_grading");
     roll_mesh.update({{"type", "annulus"}, {"center", {0.0, axis}}});
   } else {
     const int halves = half_width(p) ? 1 : 2;  // the modelled width: half (from y = 0) or whole (about y = 0)
     const double barrel = p.at("barrel_width");
-    const auto [entry, exit] = is_ale(p) ? ale_window(p) : std::pair{L, 0.0};  // an ALE window, or the slab
     slab_mesh.update({{"ny", halves * p.at("slab_nw").get<int>()},
-                      {"lx", entry + exit},
                       {"ly", halves * W / 2},
                       {"nz", p.at("slab_nt")},
                       {"lz", h0 / 2},
                       {"origin", {-entry, halves == 1 ? 0.0 : -W / 2, 0.0}}});
-    if (is_ale(p)) slab_mesh["roll_cut"]["flat_exit"] = true;
     if (p.at("thickness_grading").get<double>() != 1) slab_mesh["z_grading"] = p.at("thickness_grading");
     roll_mesh.update({{"type", "cylinder"},
                       {"center", {0.0, axis}},
