@@ -179,7 +179,8 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
                    "by a lumped L2 projection, and the run goes on from there with what is left of the "
                    "prescribed motion (summary.json `remeshes`: when, why, the shape before and after, "
                    "the plastic strain's integral before and after). 0: never. Every body must be "
-                   "finite-strain and plastic, the run driven by prescribed motion (docs/VALIDATION.md "
+                   "finite-strain, the run driven by prescribed motion — a Lagrangian rolling pass is: its "
+                   "slab is remeshed, its roll goes on from where it is (docs/VALIDATION.md "
                    "\"Remeshing\"); 1: after every step that compresses an element at all, a check of the transfer)"),
                0.0, 1.0),
            &N::remesh_quality),

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "analysis/AnalysisError.h"
@@ -41,6 +42,28 @@ class SegmentObserver final : public AnalysisObserver {
  private:
   AnalysisObserver* run_;
   int before_;
+  double base_;
+};
+
+/// A segment's increments measured as the run's (the segment covers the run's load factor [base, 1], its fields are
+/// on `model`): what a process measures — its travel, where its slab is — does not restart at a remesh.
+class SegmentMeasure final : public IncrementMeasure {
+ public:
+  SegmentMeasure(const IncrementMeasure& run, std::shared_ptr<const Model> model, double base)
+      : run_(run), model_(std::move(model)), base_(base) {}
+  MeasureTable live_table() const override { return run_.live_table(); }
+  ChartRequest live_chart() const override { return run_.live_chart(); }
+  MeasureRow measure(const IncrementResults& increment) const override { return run_.measure(as_run(increment)); }
+  std::string over(const IncrementResults& increment) const override { return run_.over(as_run(increment)); }
+
+ private:
+  IncrementResults as_run(IncrementResults increment) const {
+    increment.load_factor = base_ + (1 - base_) * increment.load_factor;
+    if (!increment.model) increment.model = model_;
+    return increment;
+  }
+  const IncrementMeasure& run_;
+  std::shared_ptr<const Model> model_;
   double base_;
 };
 
@@ -243,7 +266,7 @@ Model remeshed_model(const Model& model, const Model& original, const Results& d
 }
 
 Results run_with_remeshing(const Model& model, const NewtonOptions& options, const SegmentRun& run,
-                           AnalysisObserver* observer) {
+                           AnalysisObserver* observer, const IncrementMeasure* measure) {
   AnalysisObserver silent;
   AnalysisObserver* told = observer ? observer : &silent;
   Results out;
@@ -254,7 +277,9 @@ Results run_with_remeshing(const Model& model, const NewtonOptions& options, con
     const Model& m = current ? *current : model;
     opt.remesh_quality = remeshes < options.max_remeshes ? options.remesh_quality : 0.0;
     SegmentObserver segment(told, static_cast<int>(out.increments.size()), base);
-    Results r = run(m, opt, &segment);
+    std::optional<SegmentMeasure> measured;
+    if (measure && current) measured.emplace(*measure, current, base);
+    Results r = run(m, opt, &segment, measured ? &*measured : measure);
     RemeshRecord record;
     const double lf = r.increments.empty() ? 0.0 : r.increments.back().load_factor;
     std::optional<Model> next;

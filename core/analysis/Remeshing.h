@@ -12,9 +12,12 @@
 // Equilibrium is restored by the next segment's first step (its first residual: what the transfer left unbalanced).
 // The segments' results are one run's: increments on the run's load factor, each with the model it was computed on,
 // and every remesh reported (RemeshRecord). The run may be driven by prescribed motion only: a load would have to be
-// carried at its level λ f across the segments (refused by the project's checks).
+// carried at its level λ f across the segments (refused by the project's checks). A process's measures (a rolling
+// pass's, live while it runs) see each segment's increments as the run's: on the run's load factor, with the model
+// their fields are on.
 #include <functional>
 
+#include "analysis/IncrementMeasure.h"
 #include "analysis/NewtonOptions.h"
 #include "analysis/Results.h"
 #include "base/Observer.h"
@@ -22,12 +25,15 @@
 
 namespace rollsim {
 
-/// One segment's run: the Newton analysis of `model` with `options`, reporting to `observer`.
-using SegmentRun = std::function<Results(const Model& model, const NewtonOptions& options, AnalysisObserver* observer)>;
+/// One segment's run: the Newton analysis of `model` with `options`, reporting to `observer`, its increments measured
+/// by `measure` (may be null).
+using SegmentRun = std::function<Results(const Model& model, const NewtonOptions& options, AnalysisObserver* observer,
+                                         const IncrementMeasure* measure)>;
 
-/// The Newton run of `model` with remeshing (options.remesh_quality > 0), each segment run by `run`.
+/// The Newton run of `model` with remeshing (options.remesh_quality > 0), each segment run by `run`; `measure` (a
+/// process's, may be null) measures every increment of the run.
 Results run_with_remeshing(const Model& model, const NewtonOptions& options, const SegmentRun& run,
-                           AnalysisObserver* observer);
+                           AnalysisObserver* observer, const IncrementMeasure* measure = nullptr);
 
 /// The model a segment goes on with after `done` (a segment of `model` that stopped for a remesh, its last increment
 /// at the segment's load factor `lf`): see the header. `original`: the run's first model (the spread to move back

@@ -270,7 +270,7 @@ void check_references(const Project& project, std::vector<Issue>& issues) {
   check_unique(d.at("materials"), "materials", issues);
   check_materials(d, issues);
   check_heat(d, issues);
-  check_remesh(project.data, d, dim, issues);
+  check_remesh(d, dim, issues);
   check_analysis_type(d, issues);
   check_unique(d.at("bodies"), "bodies", issues);
   check_unique(d.at("probes"), "probes", issues);

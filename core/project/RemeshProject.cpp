@@ -8,18 +8,12 @@ namespace {
 std::string at(const char* list, size_t i) { return std::string(list) + "[" + std::to_string(i) + "]"; }
 }  // namespace
 
-void check_remesh(const json& given, const json& expanded, int dim, std::vector<Issue>& issues) {
+void check_remesh(const json& expanded, int dim, std::vector<Issue>& issues) {
   const auto a = expanded.find("analysis");
   if (a == expanded.end() || a->value("remesh_quality", 0.0) <= 0.0) return;
   const std::string why = "analysis.remesh_quality";
   if (dim != 2) {
     issues.push_back({why, "only 2D quad meshes can be remeshed yet: remove it, or model the part in 2D"});
-    return;
-  }
-  if (given.contains("process")) {
-    issues.push_back({why,
-                      "a process generates and drives its own meshes (a rolling pass's steady state by ALE is "
-                      "not built yet): remove analysis.remesh_quality"});
     return;
   }
   const json& bodies = expanded.at("bodies");

@@ -54,13 +54,14 @@ Results run_linear(const RunConfig& config, const Model& model, AnalysisObserver
 Results run_newton(const RunConfig& config, const Model& model, AnalysisObserver* observer, const ProcessRun* process) {
   set_library_threads(config.solver.threads);
   const auto policy = make_update_policy(config.update);
-  const SegmentRun segment = [&](const Model& m, const NewtonOptions& options, AnalysisObserver* told) {
+  const SegmentRun segment = [&](const Model& m, const NewtonOptions& options, AnalysisObserver* told,
+                                 const IncrementMeasure* measure) {
     const auto solver = make_solver(config.solver_mode, config.solver);
     refuse_contact(*solver, m);
-    return run_newton_static(m, *solver, *policy, told, options, process, process ? process->mesh_motion() : nullptr);
+    return run_newton_static(m, *solver, *policy, told, options, measure, process ? process->mesh_motion() : nullptr);
   };
-  if (config.newton.remesh_quality > 0) return run_with_remeshing(model, config.newton, segment, observer);
-  return segment(model, config.newton, observer);
+  if (config.newton.remesh_quality > 0) return run_with_remeshing(model, config.newton, segment, observer, process);
+  return segment(model, config.newton, observer, process);
 }
 }  // namespace
 

@@ -139,6 +139,24 @@ double mean_advance(const Mesh& slab, const std::vector<int>& nodes, const Eigen
   return nodes.empty() ? 0.0 : s / static_cast<double>(nodes.size());
 }
 
+/// A Lagrangian slab's front and rear faces: how far their nodes have moved along x since the start. A remesh's
+/// segment (analysis/Remeshing) starts its displacement anew on the shape it was remeshed at — where the faces' nodes
+/// were spread along them again —, so each segment's advance goes on from where the one before ended.
+class FaceAdvance {
+ public:
+  /// Front and rear of `inc` on its model `at`.
+  std::pair<double, double> operator()(const Model& at, const Mesh& slab, const Eigen::VectorXd& u) {
+    if (&at != segment_) segment_ = &at, front0_ = front_, rear0_ = rear_;
+    front_ = front0_ + mean_advance(slab, slab.node_sets.at("xmax"), u);
+    rear_ = rear0_ + mean_advance(slab, slab.node_sets.at("xmin"), u);
+    return {front_, rear_};
+  }
+
+ private:
+  const Model* segment_ = nullptr;
+  double front0_ = 0, rear0_ = 0, front_ = 0, rear_ = 0;
+};
+
 }  // namespace
 
 double rear_end(const Mesh& slab, const Eigen::VectorXd& u) {
@@ -300,6 +318,7 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
   const double volume0 = volume(slab0, Eigen::VectorXd::Zero(slab0.num_nodes() * slab0.dim));
   RollingResults out;
   double rear_before = 0, travel_before = 0;
+  FaceAdvance advance;
   std::vector<std::pair<double, double>> fronts{{0.0, 0.0}};  // (travel, front advance) from the start
   for (const IncrementResults& inc : results.increments) {
     if (inc.bodies.size() != model.bodies.size()) continue;
@@ -310,8 +329,9 @@ RollingResults measure_rolling(const RollingPass& pass, const Model& model, cons
     const RollingIncrement shape = exit_shape(pass, model, inc);
     r.exit_thickness = shape.exit_thickness, r.spread = shape.spread, r.mean_spread = shape.mean_spread;
     const Eigen::VectorXd& u = inc.bodies[static_cast<size_t>(pass.slab)].displacement;
-    const double front = mean_advance(slab, slab.node_sets.at("xmax"), u);
-    const double rear = mean_advance(slab, slab.node_sets.at("xmin"), u);
+    const auto [front, rear] = pass.ale ? std::pair{mean_advance(slab, slab.node_sets.at("xmax"), u),
+                                                    mean_advance(slab, slab.node_sets.at("xmin"), u)}
+                                        : advance(at, slab, u);
     const double dt = r.travel - travel_before;
     // the roll bites once the rear end follows: it moves in by half of what the roll's travel would draw in (an ALE
     // window's entry face: in the step)

@@ -431,6 +431,22 @@ void check_ale(const json& project, std::vector<Issue>& issues) {
     issues.push_back({"process.ale_exit_length", "must be positive: the window must reach past the exit plane"});
 }
 
+/// analysis.remesh_quality where a pass cannot take it: an ALE window (placed back after every step) and a schedule
+/// (each pass hands on its rolled part by where it lay before the pass, which a remesh moves).
+void check_rolling_remesh(const json& project, std::vector<Issue>& issues) {
+  const auto a = project.find("analysis");
+  if (a == project.end() || a->value("remesh_quality", 0.0) <= 0.0) return;
+  const std::string why = "analysis.remesh_quality";
+  if (is_schedule(project))
+    issues.push_back({why,
+                      "a schedule (process.passes) hands each pass's rolled part on by where it lay before the pass, "
+                      "which a remesh moves: remove it, or roll the passes one at a time"});
+  else if (is_ale(project.at("process")))
+    issues.push_back({why,
+                      "has no effect with process.formulation: ale (the window's nodes are placed back after every "
+                      "step): remove it, or use lagrangian"});
+}
+
 /// The generated bodies' geometry, checked in the process's terms (never a generated body's path).
 void check_geometry(const json& project, std::vector<Issue>& issues) {
   const json& p = project.at("process");
@@ -462,6 +478,7 @@ void check_slab_law(const json& p, std::vector<Issue>& issues) {
 }  // namespace
 
 void check_rolling(const json& project, std::vector<Issue>& issues) {
+  check_rolling_remesh(project, issues);
   if (is_schedule(project)) {
     if (is_ale(project.at("process")))
       issues.push_back({"process.formulation", "ale rolls one pass: a schedule (process.passes) is lagrangian"});
