@@ -137,6 +137,26 @@ CheckField check_field(const Mesh& m, const std::vector<Point3>& x, const std::v
   return c;
 }
 
+/// The volume mean of nodal values over a quad mesh with its nodes at `x`.
+double mean_of_nodal(Mesh m, const std::vector<Point3>& x, const std::vector<double>& nodal) {
+  m.nodes = x;
+  const std::vector<double> at_points = point_values(m, nodal.data());
+  return integral(m, x, at_points, 1, 0) / integral(m, x, std::vector<double>(at_points.size(), 1.0), 1, 0);
+}
+
+/// A conducting body's points hold their nodes' temperature (HeatConduction writes it back each step and counts the
+/// next step's plastic heat from the difference): the carried nodes' values, not the carried points' — for every
+/// body, moved or not (an elastic body's state starts from zero, which would read as its heat taken out: the roll of a
+/// rolling pass cooled 10 K in one step after a remesh).
+void hold_node_temperatures(Body& moved) {
+  if (moved.initial_temperature.empty() || !moved.material.thermal()) return;
+  const auto material = make_material(moved.material);
+  const int rise = material->temperature_rise_index(), width = material->state_size();
+  if (rise < 0) return;
+  const std::vector<double> rises = initial_point_rises(moved);
+  for (size_t p = 0; p < rises.size(); ++p) moved.initial_state[p * static_cast<size_t>(width) + rise] = rises[p];
+}
+
 double worst_shape(const Mesh& m, const std::vector<Point3>& x) {
   double worst = 1;
   for (int e = 0; e < m.num_elements(); ++e) worst = std::min(worst, corner_sine(m, x, e));
@@ -220,18 +240,16 @@ void spread_body(const Model& model, const Model& original, int b, const std::ve
   }
   const auto material = make_material(body.material);
   const int width = material->state_size(), alpha = material->equivalent_plastic_strain_index();
+  const std::vector<double> temperatures = moved.initial_temperature;
   if (record.nodes_kept.empty()) {
     moved.mesh.nodes = spread.nodes;
     moved.initial_state = transfer_points(body.mesh, x, state, width, moved.mesh);
-    if (!moved.initial_temperature.empty()) {
+    if (!moved.initial_temperature.empty())
       moved.initial_temperature = transfer_nodes(body.mesh, x, moved.initial_temperature, moved.mesh);
-      // a conducting body's points hold their nodes' temperature (HeatConduction writes it back each step and
-      // counts the next step's plastic heat from it): the carried nodes' values, not the carried points'
-      if (const int rise = material->temperature_rise_index(); rise >= 0 && moved.material.thermal()) {
-        const std::vector<double> rises = initial_point_rises(moved);
-        for (size_t p = 0; p < rises.size(); ++p) moved.initial_state[p * width + rise] = rises[p];
-      }
-    }
+  }
+  if (!moved.initial_temperature.empty()) {
+    record.mean_temperature_before = mean_of_nodal(body.mesh, x, temperatures);
+    record.mean_temperature_after = mean_of_nodal(moved.mesh, moved.mesh.nodes, moved.initial_temperature);
   }
   const CheckField before = check_field(body.mesh, x, state, width, alpha);
   const CheckField after = check_field(moved.mesh, moved.mesh.nodes, moved.initial_state, width, alpha);
@@ -260,6 +278,7 @@ Model remeshed_model(const Model& model, const Model& original, const Results& d
       spread_body(model, original, static_cast<int>(b), x, state, moved, record);
     else if (const std::string now = folded(moved.mesh); !now.empty())
       throw AnalysisError("body '" + moved.name + "' cannot go on from its current shape: " + now);
+    hold_node_temperatures(moved);
   }
   for (DisplacementBC& bc : next.displacements) bc = rest_of(bc, lf);
   return next;

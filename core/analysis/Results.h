@@ -2,6 +2,7 @@
 // Fields and scalars produced by an analysis, per body; read by the writers.
 #include <Eigen/Dense>
 #include <array>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -85,6 +86,9 @@ struct RemeshRecord {
   // and after the transfer (a conservative, bounded transfer keeps the first and never raises the second)
   double plastic_strain_integral_before = 0, plastic_strain_integral_after = 0;
   double plastic_strain_max_before = 0, plastic_strain_max_after = 0;
+  // the body's volume mean temperature before and after the transfer (a body with temperatures; NaN: none) [°C]
+  double mean_temperature_before = std::numeric_limits<double>::quiet_NaN();
+  double mean_temperature_after = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// One Newton iteration, as convergence.csv lists it.

@@ -125,7 +125,7 @@ json increments_section(const Model& m, const Results& r) {
 /// Every remesh of the run (analysis/Remeshing): where, why, the body's shape and the check field before and after.
 json remeshes_section(const std::vector<RemeshRecord>& remeshes) {
   json list = json::array();
-  for (const RemeshRecord& m : remeshes)
+  for (const RemeshRecord& m : remeshes) {
     list.push_back(
         {{"after_increment", m.increment},
          {"load_factor", m.load_factor},
@@ -141,6 +141,9 @@ json remeshes_section(const std::vector<RemeshRecord>& remeshes) {
                                    ? m.plastic_strain_integral_after / m.plastic_strain_integral_before - 1
                                    : 0.0}}},
          {"max_plastic_strain", {{"before", m.plastic_strain_max_before}, {"after", m.plastic_strain_max_after}}}});
+    if (std::isfinite(m.mean_temperature_before))
+      list.back()["mean_temperature"] = {{"before", m.mean_temperature_before}, {"after", m.mean_temperature_after}};
+  }
   return list;
 }
 

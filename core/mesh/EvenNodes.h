@@ -10,7 +10,8 @@
 // mesh motion" of ALE codes), so they keep the original's spread where the motion is smooth — or, where that would
 // shape an element worse (a corner the boundary has turned around, a sheared layer), by the harmonic extension of the
 // boundary nodes' correction from where they are, or as a harmonic map of the boundary (each inner node the mean of
-// its neighbours): whichever leaves the worst element's sharpest corner widest.
+// its neighbours): the first of the three, in that order, whose worst element's sharpest corner is within 10 % of the
+// widest (the harmonic map evens out a grading too).
 #include <array>
 #include <vector>
 
