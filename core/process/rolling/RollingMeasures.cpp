@@ -225,16 +225,31 @@ Eigen::VectorXd node_volumes_of(const Mesh& mesh) {
   return share;
 }
 
-/// An ALE step's volume out through the exit face over its volume in through the entry face, − 1 (0 once steady):
-/// each face's mean advance in the step times its current height.
+/// The volume a face of the slab (its elements' facets whose nodes all lie in the set) sweeps along x in the step u:
+/// each facet's current measure (length in 2D, area in 3D: the face spreads in width) times its nodes' mean advance.
+double face_flux(const Mesh& slab, const std::vector<int>& face, const Eigen::VectorXd& u) {
+  std::vector<char> in(static_cast<size_t>(slab.num_nodes()), 0);
+  for (int n : face) in[static_cast<size_t>(n)] = 1;
+  const int facets = slab.dim == 2 ? 4 : 6;
+  double flux = 0;
+  for (int e = 0; e < slab.num_elements(); ++e)
+    for (int f = 0; f < facets; ++f) {
+      std::vector<int> nodes;
+      for (int l : facet_local_nodes(slab.type, f)) nodes.push_back(slab.element(e)[l]);
+      if (!std::all_of(nodes.begin(), nodes.end(), [&](int n) { return in[static_cast<size_t>(n)]; })) continue;
+      std::vector<Eigen::Vector3d> x;
+      double advance = 0;
+      for (int n : nodes) x.push_back(current(slab, u, n)), advance += u[n * slab.dim] / nodes.size();
+      const double measure = nodes.size() == 2 ? (x[1] - x[0]).norm() : 0.5 * (x[2] - x[0]).cross(x[3] - x[1]).norm();
+      flux += measure * advance;
+    }
+  return flux;
+}
+
+/// An ALE step's volume out through the exit face over its volume in through the entry face, − 1 (0 once steady).
 double flux_balance(const Mesh& slab, const Eigen::VectorXd& u) {
-  const auto flux = [&](const std::vector<int>& face) {
-    double height = 0;
-    for (int n : face) height = std::max(height, current(slab, u, n)[slab.dim - 1]);
-    return height * mean_advance(slab, face, u);
-  };
-  const double in = flux(slab.node_sets.at("xmin"));
-  return in > 0 ? flux(slab.node_sets.at("xmax")) / in - 1 : 0.0;
+  const double in = face_flux(slab, slab.node_sets.at("xmin"), u);
+  return in > 0 ? face_flux(slab, slab.node_sets.at("xmax"), u) / in - 1 : 0.0;
 }
 
 /// The slab's contact nodes at the state `r`, by decreasing angle (entry first).
