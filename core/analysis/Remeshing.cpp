@@ -89,16 +89,27 @@ std::vector<double> as_stateful(Body& body, std::vector<double> state) {
       static_cast<size_t>(points) * body.mesh.num_elements() * make_material(body.material)->state_size(), 0.0);
 }
 
-/// The nodes of body b's contact surfaces, slave or master: they stay where they are (moved along a chord of their
-/// surface, a node may end up inside the other body — a punch's corner cuts the chord of the surface wrapped around
-/// it — and a master node moved would move the surface under the other body's nodes).
-std::vector<int> contact_nodes(const Model& model, int b) {
+/// The nodes of body b's contact surfaces that stay where they are: a master surface's (moved, it would move the
+/// surface under the other body's nodes), and a slave surface's facets that touch (a node with `pressure` > 0; every
+/// facet when the results hold no pressure) — moved along a chord of their surface, a node there may end up inside
+/// the other body: a punch's corner cuts the chord of the surface wrapped around it. A slave facet clear of the other
+/// body is spread like any boundary (a rolling slab's head, past the exit, folded its top corner again within a step
+/// of each remesh while its whole top stayed).
+std::vector<int> contact_nodes(const Model& model, int b, const Eigen::VectorXd& pressure) {
   std::vector<int> nodes;
   const Mesh& mesh = model.bodies[static_cast<size_t>(b)].mesh;
-  for (const ContactPair& p : model.contacts)
-    for (const auto& [body, surface] : {std::pair{p.slave_body, p.slave_surface}, {p.master_body, p.master_surface}})
-      if (body == b)
-        for (int n : surface_nodes(mesh, mesh.surfaces.at(surface))) nodes.push_back(n);
+  const bool known = pressure.size() == mesh.num_nodes();
+  for (const ContactPair& p : model.contacts) {
+    if (p.master_body == b)
+      for (int n : surface_nodes(mesh, mesh.surfaces.at(p.master_surface))) nodes.push_back(n);
+    if (p.slave_body != b) continue;
+    for (const Facet& f : mesh.surfaces.at(p.slave_surface)) {
+      std::vector<int> facet;
+      for (int l : facet_local_nodes(mesh.type, f.local)) facet.push_back(mesh.element(f.element)[l]);
+      if (!known || std::any_of(facet.begin(), facet.end(), [&](int n) { return pressure[n] > 0; }))
+        nodes.insert(nodes.end(), facet.begin(), facet.end());
+    }
+  }
   return nodes;
 }
 
@@ -224,13 +235,13 @@ void add_segment(Results& run, Results seg, const std::shared_ptr<const Model>& 
 /// state `state` read there) gets the spread nodes and the state and temperatures carried onto them — or keeps its
 /// nodes where moving them would fold an element (throwing when its current shape has a folded element too).
 void spread_body(const Model& model, const Model& original, int b, const std::vector<Point3>& x,
-                 const std::vector<double>& state, Body& moved, RemeshRecord& record) {
+                 const std::vector<double>& state, const Eigen::VectorXd& pressure, Body& moved, RemeshRecord& record) {
   const Body& body = model.bodies[static_cast<size_t>(b)];
   record.body = body.name;
   record.shape_before = worst_shape(body.mesh, x);
   Mesh spread = moved.mesh;
-  spread.nodes =
-      even_nodes(original.bodies[static_cast<size_t>(b)].mesh, x, contact_nodes(model, b), stuck_faces(model, b));
+  spread.nodes = even_nodes(original.bodies[static_cast<size_t>(b)].mesh, x, contact_nodes(model, b, pressure),
+                            stuck_faces(model, b));
   if (const std::string folds = folded(spread); !folds.empty()) {  // the run goes on from where it is
     record.nodes_kept = "moving them back to their spread would fold an element (" + folds + ")";
     if (const std::string now = folded(moved.mesh); !now.empty())
@@ -275,7 +286,7 @@ Model remeshed_model(const Model& model, const Model& original, const Results& d
     moved.mesh.nodes = x;
     moved.initial_state = state;
     if (static_cast<int>(b) == due.body)
-      spread_body(model, original, static_cast<int>(b), x, state, moved, record);
+      spread_body(model, original, static_cast<int>(b), x, state, r.contact_pressure, moved, record);
     else if (const std::string now = folded(moved.mesh); !now.empty())
       throw AnalysisError("body '" + moved.name + "' cannot go on from its current shape: " + now);
     hold_node_temperatures(moved);
