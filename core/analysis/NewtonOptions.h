@@ -114,7 +114,7 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
       bind(bounded(count("first_step_halvings",
                          "Newton: the first step is the nominal step halved this often, and grows back by doubling "
                          "after each step that converges at once — a start from a stress-free state that one whole "
-                         "step would take to a distorted one (an ALE rolling pass takes at least 3, 6 in 3D)"),
+                         "step would take to a distorted one (0: none, or an ALE rolling pass's 3, 6 in 3D)"),
                    0, 20),
            &N::first_step_halvings),
       bind(str("friction_tangent",

@@ -639,10 +639,11 @@ json expand_rolling(const json& project) {
   out["analysis"]["increments"] =
       static_cast<int>(std::ceil(p.at("travel").get<double>() / p.at("travel_increment").get<double>() - 1e-9));
   // an ALE window starts stress-free with its exit zone in place: a whole first step takes it to a distorted state
-  // on fine meshes (64 × 12), an eighth of one does not; in 3D (24 × 12 × 8) an eighth still did, a 64th does not
-  if (is_ale(p))
-    out["analysis"]["first_step_halvings"] =
-        std::max(dim == 2 ? 3 : 6, out["analysis"].value("first_step_halvings", 0));
+  // on fine meshes (64 × 12), an eighth of one does not; in 3D (24 × 12 × 8) an eighth still did, a 64th does not —
+  // the default where the user gave none (the 16 × 8 × 4 window rolls from an eighth and inverts an element at 3.8 mm
+  // from a 64th: a 3D window's start is the user's to choose)
+  if (is_ale(p) && out["analysis"].value("first_step_halvings", 0) == 0)
+    out["analysis"]["first_step_halvings"] = dim == 2 ? 3 : 6;
   if (pass_duration(p) > 0) out["analysis"]["duration"] = pass_duration(p);
   expand_rolling_heat(p, dim, out);
   return out;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "../../../common/PassRun.h"
 #include "../../../common/RollingPass.h"
@@ -185,6 +186,18 @@ TEST(RollingAle, ADivergedPassSaysItsStepStartedHalved) {
   EXPECT_NE(r.status.message.find("the run starts 3 below it, analysis.first_step_halvings"), std::string::npos)
       << r.status.message;
   EXPECT_NE(r.status.message.find("process.travel_increment (now 4 mm)"), std::string::npos) << r.status.message;
+}
+
+TEST(RollingAle, AWindowStartsFromAnEighthOfAStepInPlaneStrainAndA64thIn3DUnlessTheProjectSays) {
+  const auto halvings = [](int dim, std::optional<int> given) {
+    nlohmann::json j = {{"name", "w"}, {"dimension", dim}, {"process", {{"type", "rolling"}, {"formulation", "ale"}}}};
+    if (given) j["analysis"] = {{"first_step_halvings", *given}};
+    return parse_project(j.dump(), "w").config().newton.first_step_halvings;
+  };
+  EXPECT_EQ(halvings(2, std::nullopt), 3);
+  EXPECT_EQ(halvings(3, std::nullopt), 6);
+  EXPECT_EQ(halvings(3, 3), 3);  // the 16 x 8 x 4 window's start (a 64th inverts one of its elements at 3.8 mm)
+  EXPECT_EQ(halvings(2, 5), 5);
 }
 
 TEST(RollingAle, WhatAnAlePassCannotDoIsRefusedAtTheUsersPaths) {
