@@ -69,6 +69,34 @@ RollingAle3d::RollingAle3d(const RollingPass& pass, const Model& model) : slab_(
   }
 }
 
+namespace {
+/// Where a material line (its nodes `line` at `slab`, by x) crosses the plane x = X, X in its segment `seg` (or
+/// beyond the line's ends, held there): across the width (y) the cubic through the segment's nodes and their
+/// neighbours where the line has them, held within the segment's ends' values; in height (z), and at the line's
+/// ends, the segment's chord. A chord across the width smeared the free side's bulge along the line at every step (a
+/// numerical diffusion over a spacing): the 16 × 8 × 4 window's mean spread still grew at 150 mm, with the cubic it
+/// levels off. In height the window's top has kinks (flat, the arc, flat), where a cubic overshoots: the 24 × 12 × 8
+/// window, which rolls 20 mm with chords, diverged within its first millimetre.
+std::array<double, 3> crossing(const MeshMotion::Positions& slab, const std::vector<int>& line, size_t seg, double X) {
+  const auto& a = slab[static_cast<size_t>(line[seg])];
+  const auto& b = slab[static_cast<size_t>(line[seg + 1])];
+  const double t = std::clamp((X - a[0]) / (b[0] - a[0]), 0.0, 1.0);  // held beyond the line's ends
+  std::array<double, 3> p{X, a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+  if (seg < 1 || seg + 2 >= line.size() || X < a[0] || X > b[0]) return p;
+  const std::array<const std::array<double, 3>*, 4> q = {&slab[static_cast<size_t>(line[seg - 1])], &a, &b,
+                                                         &slab[static_cast<size_t>(line[seg + 2])]};
+  double y = 0;
+  for (size_t k = 0; k < 4; ++k) {
+    double L = 1;  // Lagrange's basis on the four nodes' x
+    for (size_t m = 0; m < 4; ++m)
+      if (m != k) L *= (X - (*q[m])[0]) / ((*q[k])[0] - (*q[m])[0]);
+    y += L * (*q[k])[1];
+  }
+  p[1] = std::clamp(y, std::min(a[1], b[1]), std::max(a[1], b[1]));  // no overshoot past the segment's ends
+  return p;
+}
+}  // namespace
+
 double RollingAle3d::roll_under(double x, double y, const Positions& roll) const {
   double under = std::numeric_limits<double>::infinity();
   for (const auto& f : roll_facets_) {
@@ -103,10 +131,7 @@ MeshMotion::Positions RollingAle3d::placed(const std::vector<Positions>& current
     for (size_t i = 0; i < line.size(); ++i) {
       const double X = x_[i];
       while (seg + 2 < line.size() && slab[static_cast<size_t>(line[seg + 1])][0] < X) ++seg;
-      const auto& a = slab[static_cast<size_t>(line[seg])];
-      const auto& b = slab[static_cast<size_t>(line[seg + 1])];
-      const double t = std::clamp((X - a[0]) / (b[0] - a[0]), 0.0, 1.0);  // held beyond the line's ends
-      std::array<double, 3> p{X, a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+      std::array<double, 3> p = crossing(slab, line, seg, X);
       if (top_[l]) {
         const double under = roll_under(X, p[1], roll);
         if (std::isfinite(under) && (touching[static_cast<size_t>(line[i])] || p[2] > under)) p[2] = under;

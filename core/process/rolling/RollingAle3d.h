@@ -2,9 +2,11 @@
 // The mesh motion of a 3D ALE rolling pass (process.formulation: ale, dimension 3; the plane-strain one is
 // RollingAle): the slab's window is held around the roll gap while its material flows through. Its nodes lie on lines
 // along x (one per width position and thickness level, as meshed); after each step every line's node at each x goes
-// to where that material line now crosses the plane of its x — so the side face follows the spread and the top the
-// free surface —, a top node that touches the roll (or would lie inside it) onto the roll's deformed surface there.
-// Points before the entry face's new place hold material that flowed in during the step: virgin.
+// to where that material line now crosses the plane of its x (across the width a cubic through the line's nodes
+// around it, in height their chord) — so the side
+// face follows the spread and the top the free surface —, a top node that touches the roll (or would lie inside it)
+// onto the roll's deformed surface there. Points before the entry face's new place hold material that flowed in during
+// the step: virgin.
 #include <string>
 #include <vector>
 
