@@ -239,14 +239,6 @@ const std::vector<LocalPoint>& quarter_points() {
   return points;
 }
 
-/// det ∂x/∂(ξ, η) of a quad with corners `c` at (ξ, η).
-double jacobian(const El::Coords& c, double xi, double eta) {
-  Eigen::Matrix<double, 2, 4> dN;  // ∂N_a/∂ξ, ∂N_a/∂η
-  for (int a = 0; a < 4; ++a)
-    dN.col(a) << 0.25 * kSigns[0][a] * (1 + kSigns[1][a] * eta), 0.25 * kSigns[1][a] * (1 + kSigns[0][a] * xi);
-  return (c * dN.transpose()).determinant();
-}
-
 /// ∫ N_n (old − new) dV and ∫ N_n dV over `to`'s elements, per node of `to`: the old field (`values` at the nodes of
 /// `from`, placed at `x`) against the new one (`carried` at `to`'s nodes).
 std::pair<std::vector<double>, std::vector<double>> lost_per_node(const Mesh& from, const std::vector<Point3>& x,
@@ -257,8 +249,11 @@ std::pair<std::vector<double>, std::vector<double>> lost_per_node(const Mesh& fr
   for (int e = 0; e < to.num_elements(); ++e) {
     const El::Coords c = coords(to, to.nodes, e);
     for (const LocalPoint& q : quarter_points()) {
-      const Eigen::Vector4d N = bilinear(q.xi, q.eta);
-      const double dv = q.weight * jacobian(c, q.xi, q.eta);
+      const double xi[2] = {q.xi, q.eta};
+      Eigen::Vector4d N;
+      Eigen::Matrix<double, 2, 4> dN;
+      El::shape_at(xi, N, dN);
+      const double dv = q.weight * (c * dN.transpose()).determinant();
       const Eigen::Vector2d p = c * N;
       double old_value = 0, new_value = 0;
       interpolate(from, values, 1, locator.locate({p[0], p[1], 0.0}, clamp_element(e, from)), &old_value);
