@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "Commands.h"
 #include "bench/SuiteReport.h"
 #include "bench/Suites.h"
 #include "io/AtomicFile.h"
@@ -104,7 +105,7 @@ int run(const std::string& suite, const SuiteOptions& o) {
 
 }  // namespace
 
-std::function<std::optional<int>()> add_bench_suites(CLI::App& bench) {
+std::function<std::optional<int>()> add_bench_suites(CLI::App& bench, int argc, char** argv) {
   auto options = std::make_shared<SuiteOptions>();
   std::vector<std::pair<CLI::App*, std::string>> commands;
   for (const std::string& suite : bench::suite_names()) {
@@ -120,9 +121,16 @@ std::function<std::optional<int>()> add_bench_suites(CLI::App& bench) {
     cmd->add_flag("--quiet", options->quiet, "no progress on stderr");
     commands.emplace_back(cmd, suite);
   }
-  return [options, commands]() -> std::optional<int> {
-    for (const auto& [cmd, suite] : commands)
-      if (*cmd) return run(suite, *options);
+  return [options, commands, argc, argv]() -> std::optional<int> {
+    for (const auto& [cmd, suite] : commands) {
+      if (!*cmd) continue;
+#ifdef ROLLSIM_GUI_BESIDE
+      if (suite == "accuracy") return hand_over_to_window(argc, argv);  // its plots are Qt Charts
+#else
+      (void)argc, (void)argv;
+#endif
+      return run(suite, *options);
+    }
     return std::nullopt;
   };
 }

@@ -40,6 +40,9 @@ struct GuiOptions {
 
 int run_command(const RunOptions& options);
 int gui_command(GuiOptions options);
+/// The batch binary of a build with the window: this process becomes rollsim-gui beside it with the same arguments
+/// (the window's commands and `bench accuracy`'s Qt plots live there); returns 2 with a message when it cannot.
+int hand_over_to_window(int argc, char** argv);
 int bench_command(const BenchOptions& options);
 int export_ccx_command(const std::string& project, const std::string& out);
 int check_command(const std::string& project);

@@ -11,13 +11,6 @@
 #include "solve/PetscStrategy.h"
 #include "solve/SolverStrategy.h"
 
-#ifndef ROLLSIM_HAVE_GUI
-int rollsim::app::gui_command(GuiOptions) {
-  std::cerr << "rollsim: error: this build has no window (configured with -DROLLSIM_BUILD_GUI=OFF)\n";
-  return 2;
-}
-#endif
-
 namespace {
 /// `word` as a shell would need it typed again: quoted when it holds anything but plain characters.
 std::string shell_word(const std::string& word) {
@@ -100,7 +93,8 @@ int main(int argc, char** argv) {
   cmd_bench->add_option("--repeat", bench.repeat, "repetitions (the median is reported)")->check(CLI::Range(1, 100));
   cmd_bench->add_option("--threads", bench.threads, "BLAS threads")->check(CLI::Range(1, 256));
   cmd_bench->add_option("--csv", bench.csv, "also write the table as CSV");
-  auto bench_suite = add_bench_suites(*cmd_bench);  // `rollsim bench accuracy | stability` (BenchSuiteCommand.cpp)
+  auto bench_suite =
+      add_bench_suites(*cmd_bench, argc, argv);  // `rollsim bench accuracy | stability` (BenchSuiteCommand.cpp)
 
   std::string export_project, export_out;
   auto* cmd_export = cli.add_subcommand("export-ccx", "write the model as CalculiX input (.inp)");
@@ -119,7 +113,7 @@ int main(int argc, char** argv) {
   cmd_gui->add_option("--color-by", gui.color_by,
                       "after --run: colour the view by this result field (e.g. von_mises, plastic_strain)");
 
-#ifdef ROLLSIM_HAVE_GUI
+#if defined(ROLLSIM_HAVE_GUI) || defined(ROLLSIM_GUI_BESIDE)
   if (argc == 1) return gui_command(gui);  // no arguments: the window
 #endif
   try {
