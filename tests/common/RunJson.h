@@ -1,15 +1,26 @@
 #pragma once
-// Helpers of the analysis tests that build their projects as JSON: run one in process, and read the reaction of a
-// set whose nodes were all moved to the same prescribed y displacement.
+// Helpers of the tests that build their projects as JSON: validate one (its refusal), run one in process, and read the
+// reaction of a set whose nodes were all moved to the same prescribed y displacement.
 #include <Eigen/Dense>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "project/ModelBuilder.h"
 #include "project/Project.h"
 #include "project/RunProject.h"
 
 namespace testing_support {
+
+/// What validating the project `j` says: the ProjectError's message, or "accepted".
+inline std::string refusal_of(const nlohmann::json& j) {
+  try {
+    rollsim::parse_project(j.dump(), "test.json");
+  } catch (const rollsim::ProjectError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
 
 /// The project `j` validated, built and run (run_project: the analysis its `analysis.type` names).
 inline rollsim::Results run_json(const nlohmann::json& j) {

@@ -12,6 +12,7 @@
 
 #include "../../../common/PassRun.h"
 #include "../../../common/RollingPass.h"
+#include "../../../common/RunJson.h"
 #include "process/rolling/RollingAle.h"
 #include "process/rolling/RollingAle3d.h"
 #include "process/rolling/RollingRun.h"
@@ -29,12 +30,22 @@ nlohmann::json ale_pass(double travel) {
 
 std::string refusal(nlohmann::json process, int dim = 2) {
   process["type"] = "rolling";
-  try {
-    parse_project(nlohmann::json{{"dimension", dim}, {"process", process}}.dump(), "bad");
-  } catch (const ProjectError& e) {
-    return e.what();
-  }
-  return "accepted";
+  return testing_support::refusal_of({{"dimension", dim}, {"process", process}});
+}
+
+/// The 3D window of the tests: 14 × 3 × 3, the roll 100 × 3 × 3.
+nlohmann::json window_3d() {
+  return {{"name", "pass"},
+          {"dimension", 3},
+          {"process",
+           {{"type", "rolling"},
+            {"formulation", "ale"},
+            {"slab_nx", 14},
+            {"slab_nw", 3},
+            {"slab_nt", 3},
+            {"roll_n_around", 100},
+            {"roll_n_radial", 3},
+            {"roll_n_axial", 3}}}};
 }
 }  // namespace
 
@@ -135,20 +146,9 @@ TEST(RollingAle, APartitionedWindowUnderFetiGivesTheUndividedWindowsForce) {
 }
 
 TEST(RollingAle, The3dWindowPutsASlabMovedOnBackAndRolls) {
-  nlohmann::json j = {{"name", "pass"},
-                      {"dimension", 3},
-                      {"process",
-                       {{"type", "rolling"},
-                        {"formulation", "ale"},
-                        {"slab_nx", 14},
-                        {"slab_nw", 3},
-                        {"slab_nt", 3},
-                        {"roll_n_around", 100},
-                        {"roll_n_radial", 3},
-                        {"roll_n_axial", 3},
-                        {"travel", 1.0},
-                        {"travel_increment", 0.5}}},
-                      {"solver", {{"mode", "direct"}}}};
+  nlohmann::json j = window_3d();
+  j["process"].update({{"travel", 1.0}, {"travel_increment", 0.5}});
+  j["solver"] = {{"mode", "direct"}};
   const Project p = parse_project(j.dump(), "ale3d");
   const Model m = build_model(p);
   const RollingPass pass = rolling_pass(p.data.at("process"), m);
@@ -180,18 +180,7 @@ TEST(RollingAle, The3dWindowsSideFollowsABulgeWithoutSmearingIt) {
   // the free side bulged by 5 sin(π s) mm along the window (s from 0 to 1), the slab moved on 0.5 mm: every node goes
   // back to its x with the bulge as it was 0.5 mm upstream — a chord between the moved nodes misses it by ~3e-3 mm
   // at every node, every step (the side's shape smeared along the window, the mean spread never levelling)
-  const nlohmann::json j = {{"name", "pass"},
-                            {"dimension", 3},
-                            {"process",
-                             {{"type", "rolling"},
-                              {"formulation", "ale"},
-                              {"slab_nx", 14},
-                              {"slab_nw", 3},
-                              {"slab_nt", 3},
-                              {"roll_n_around", 100},
-                              {"roll_n_radial", 3},
-                              {"roll_n_axial", 3}}}};
-  const Project p = parse_project(j.dump(), "ale3d");
+  const Project p = parse_project(window_3d().dump(), "ale3d");
   const Model m = build_model(p);
   const RollingPass pass = rolling_pass(p.data.at("process"), m);
   const Mesh& slab = m.bodies[static_cast<size_t>(pass.slab)].mesh;

@@ -33,6 +33,18 @@ std::vector<RollingIncrement> history(int n, double torque_drift = 0, double rip
   return h;
 }
 
+/// An increment of model `m` (3D) with every body at rest: its fields for a test to set.
+IncrementResults at_rest(const Model& m) {
+  IncrementResults inc;
+  for (const Body& b : m.bodies) {
+    BodyResults r;
+    r.displacement = Eigen::VectorXd::Zero(b.mesh.num_nodes() * 3);
+    r.nodal_force = Eigen::VectorXd::Zero(b.mesh.num_nodes() * 3);
+    inc.bodies.push_back(r);
+  }
+  return inc;
+}
+
 /// The plain mean of the force of the increments with travel in (a, b] (equal steps: equal weights).
 double force_mean(const std::vector<RollingIncrement>& h, double a, double b) {
   double s = 0;
@@ -111,13 +123,7 @@ TEST(RollingMeasures, SpreadAtTheWidestPointAndOfTheMeanWidth) {
   const Project p = parse_project(project.dump(), "lean");
   const Model m = build_model(p);
   const double c = 0.02;
-  IncrementResults inc;
-  for (const Body& b : m.bodies) {
-    BodyResults r;
-    r.displacement = Eigen::VectorXd::Zero(b.mesh.num_nodes() * 3);
-    r.nodal_force = Eigen::VectorXd::Zero(b.mesh.num_nodes() * 3);
-    inc.bodies.push_back(r);
-  }
+  IncrementResults inc = at_rest(m);
   const Mesh& slab = m.bodies[0].mesh;
   for (int n = 0; n < slab.num_nodes(); ++n) {
     const auto& X = slab.nodes[static_cast<size_t>(n)];
@@ -148,13 +154,7 @@ TEST(RollingMeasures, AnAleWindowsFluxBalanceCountsTheExitFacesSpread) {
   const Project p = parse_project(project.dump(), "window");
   const Model m = build_model(p);
   const RollingPass pass = rolling_pass(p.data.at("process"), m);
-  IncrementResults inc;
-  for (const Body& b : m.bodies) {
-    BodyResults r;
-    r.displacement = Eigen::VectorXd::Zero(b.mesh.num_nodes() * 3);
-    r.nodal_force = Eigen::VectorXd::Zero(b.mesh.num_nodes() * 3);
-    inc.bodies.push_back(r);
-  }
+  IncrementResults inc = at_rest(m);
   const Mesh& slab = m.bodies[static_cast<size_t>(pass.slab)].mesh;
   double entry = 0, exit = 0;  // the faces' heights: the window is cut to the roll's gap at its exit
   for (int n : slab.node_sets.at("xmin")) entry = std::max(entry, slab.nodes[static_cast<size_t>(n)][2]);

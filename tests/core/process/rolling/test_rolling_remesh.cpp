@@ -9,6 +9,7 @@
 
 #include "../../../common/PassRun.h"
 #include "../../../common/RollingPass.h"
+#include "../../../common/RunJson.h"
 #include "base/Observer.h"
 
 namespace test_rolling_remesh {
@@ -22,15 +23,6 @@ class LiveTravel final : public AnalysisObserver {
   void on_measured(int /*increment*/, const MeasureRow& row) override { travel.push_back(row.at(0)); }
   std::vector<double> travel;
 };
-
-std::string refusal(nlohmann::json project) {
-  try {
-    parse_project(project.dump(), "bad");
-  } catch (const ProjectError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
 }  // namespace
 
 TEST(RollingRemesh, APassThatRemeshesIsOnePassWithTheUnremeshedForce) {
@@ -97,18 +89,20 @@ TEST(RollingRemesh, AnAleWindowAndAScheduleRefuseARemesh) {
   nlohmann::json ale = testing_support::paper_pass_2d(10, 1.0);
   ale["process"]["formulation"] = "ale";
   ale["analysis"] = {{"remesh_quality", 0.5}};
-  EXPECT_NE(refusal(ale).find("analysis.remesh_quality: has no effect with process.formulation: ale"),
-            std::string::npos)
-      << refusal(ale);
+  EXPECT_NE(
+      testing_support::refusal_of(ale).find("analysis.remesh_quality: has no effect with process.formulation: ale"),
+      std::string::npos)
+      << testing_support::refusal_of(ale);
   nlohmann::json schedule = testing_support::paper_pass_2d(10, 1.0);
   schedule["process"].erase("travel");
   schedule["process"]["passes"] = {{{"reduction", 0.1}}, {{"reduction", 0.1}}};
   schedule["analysis"] = {{"remesh_quality", 0.5}};
-  EXPECT_NE(refusal(schedule).find("analysis.remesh_quality: a schedule (process.passes)"), std::string::npos)
-      << refusal(schedule);
+  EXPECT_NE(testing_support::refusal_of(schedule).find("analysis.remesh_quality: a schedule (process.passes)"),
+            std::string::npos)
+      << testing_support::refusal_of(schedule);
   nlohmann::json lagrangian = testing_support::paper_pass_2d(10, 1.0);
   lagrangian["analysis"] = {{"remesh_quality", 0.5}};
-  EXPECT_EQ(refusal(lagrangian), "accepted");
+  EXPECT_EQ(testing_support::refusal_of(lagrangian), "accepted");
 }
 
 }  // namespace test_rolling_remesh

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "../../../common/RunJson.h"
 #include "process/rolling/RollingMeasures.h"
 #include "process/rolling/RollingProcess.h"
 #include "process/rolling/RollingSchedule.h"
@@ -35,14 +36,7 @@ json schedule(json passes, int dim = 2) {
           {"solver", {{"mode", "direct"}}}};
 }
 
-std::string refusal(const json& j) {
-  try {
-    parse_project(j.dump(), "schedule");
-  } catch (const ProjectError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
+std::string refusal(const json& j) { return testing_support::refusal_of(j); }
 }  // namespace
 
 TEST(RollingSchedule, BadSchedulesAreRefusedAtTheirPaths) {
