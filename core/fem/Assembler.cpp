@@ -163,6 +163,7 @@ struct NewtonKernel {
   const Eigen::VectorXd* v;
   bool tangent;
   IntegrationState& state;
+  ElementGeometryCache<D>& geometry;
 
   /// Element e's force (predicted along v when its nodes move) and, when asked, its tangent; false: inverted.
   bool operator()(int e, typename El::Stiffness& Ke, typename El::Dofs& fe) const {
@@ -181,10 +182,14 @@ struct NewtonKernel {
     double* t = state.per_element ? state.trial.data() + at : nullptr;
     typename El::Stiffness* K = tangent || moved ? &Ke : nullptr;
     const bool finite = body.kinematics == Kinematics::Finite;
-    const bool ok = finite
-                        ? FiniteStrainElement<D>::tangent_and_force(element_coords<D>(m, e), material, body.formulation,
-                                                                    ue, c, t, K, fe)
-                        : El::tangent_and_force(element_coords<D>(m, e), material, body.formulation, ue, c, t, K, fe);
+    bool ok;
+    if (finite) {
+      const typename El::Geometry* reference = geometry.at(e, element_coords<D>(m, e));
+      ok = reference &&
+           FiniteStrainElement<D>::tangent_and_force(*reference, material, body.formulation, ue, c, t, K, fe);
+    } else {
+      ok = El::tangent_and_force(element_coords<D>(m, e), material, body.formulation, ue, c, t, K, fe);
+    }
     if (!ok) return false;
     if (K && finite) Ke = 0.5 * (Ke + Ke.transpose()).eval();  // CHOLMOD: symmetric
     if (moved) fe.noalias() += Ke * ve;
@@ -236,8 +241,12 @@ int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::Vector
       if (s[k] >= 0) val[s[k]] += Ke[k];
   };
   const auto material = make_material(body_.material, state.dt);
-  if (m.dim == 2) return newton_elements<2>({body_, *material, u, v, K != nullptr, state}, threads_, scatter);
-  return newton_elements<3>({body_, *material, u, v, K != nullptr, state}, threads_, scatter);
+  if (m.dim == 2) {
+    geometry2_.resize(m.num_elements());
+    return newton_elements<2>({body_, *material, u, v, K != nullptr, state, geometry2_}, threads_, scatter);
+  }
+  geometry3_.resize(m.num_elements());
+  return newton_elements<3>({body_, *material, u, v, K != nullptr, state, geometry3_}, threads_, scatter);
 }
 
 void Assembler::add_element_matrix(int e, const Eigen::MatrixXd& Ke, SparseMatrix& K) const {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "base/SparseMatrix.h"
+#include "fem/ElementGeometryCache.h"
 #include "model/DofMap.h"
 #include "model/Model.h"
 
@@ -53,6 +54,9 @@ class Assembler {
   SparseMatrix pattern_;
   std::vector<int> slot_;  // per element, per (i, j) of the element matrix: value index or -1
   int threads_ = 1;
+  // the finite-strain kernel's reference gradients, kept between assemblies (one of the two, by the mesh's dim)
+  mutable ElementGeometryCache<2> geometry2_;
+  mutable ElementGeometryCache<3> geometry3_;
 };
 
 /// A nodal field at every integration point, Σ N_a v_a, element-major (`nodal`: one value per node of `mesh`).

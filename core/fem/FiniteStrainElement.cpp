@@ -34,13 +34,26 @@ bool FiniteStrainElement<D>::tangent_and_force(const typename El::Coords& X, con
                                                const typename El::Dofs& ue, const double* committed, double* trial,
                                                typename El::Stiffness* Ke, typename El::Dofs& fe,
                                                std::array<Stress6, El::NGP>* stresses) {
+  typename El::Geometry reference;
+  if (!El::gradients(X, reference)) {
+    fe.setZero();
+    if (Ke) Ke->setZero();
+    return false;
+  }
+  return tangent_and_force(reference, mat, f, ue, committed, trial, Ke, fe, stresses);
+}
+
+template <int D>
+bool FiniteStrainElement<D>::tangent_and_force(const typename El::Geometry& reference, const Material& mat,
+                                               Formulation f, const typename El::Dofs& ue, const double* committed,
+                                               double* trial, typename El::Stiffness* Ke, typename El::Dofs& fe,
+                                               std::array<Stress6, El::NGP>* stresses) {
   constexpr int NN = El::NN, NGP = El::NGP;
-  std::array<typename El::Gradients, NGP> dN0;
-  std::array<double, NGP> dv0;
-  typename El::Gradients centre0;
+  const std::array<typename El::Gradients, NGP>& dN0 = reference.dN;
+  const std::array<double, NGP>& dv0 = reference.dv;
+  const typename El::Gradients& centre0 = reference.centre;
   fe.setZero();
   if (Ke) Ke->setZero();
-  if (!El::gradients(X, dN0, dv0, centre0)) return false;
   const bool fbar = f == Formulation::BBar;
   const Matrix3 Fc = deformation_gradient<D>(centre0, ue);
   const double Jc = Fc.topLeftCorner<D, D>().determinant();

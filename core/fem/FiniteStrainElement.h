@@ -21,6 +21,11 @@ struct FiniteStrainElement {
                                 const typename El::Dofs& ue, const double* committed, double* trial,
                                 typename El::Stiffness* Ke, typename El::Dofs& fe,
                                 std::array<Stress6, El::NGP>* stresses = nullptr);
+  /// The same from the reference geometry of the element (its gradients computed once: ElementGeometryCache).
+  static bool tangent_and_force(const typename El::Geometry& reference, const Material& mat, Formulation f,
+                                const typename El::Dofs& ue, const double* committed, double* trial,
+                                typename El::Stiffness* Ke, typename El::Dofs& fe,
+                                std::array<Stress6, El::NGP>* stresses = nullptr);
 };
 
 extern template struct FiniteStrainElement<2>;

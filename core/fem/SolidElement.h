@@ -24,6 +24,13 @@ struct SolidElement {
   /// det J × weight per Gauss point; false if det J ≤ 0 at a Gauss point (an inverted element).
   static bool gradients(const Coords& x, std::array<Gradients, NGP>& dN, std::array<double, NGP>& dv,
                         Gradients& centre);
+  /// The same, kept together: what an element's Newton kernel needs of its reference coordinates.
+  struct Geometry {
+    std::array<Gradients, NGP> dN;  // ∂N/∂X at the Gauss points
+    std::array<double, NGP> dv;     // det J × weight at the Gauss points
+    Gradients centre;               // ∂N/∂X at the centre
+  };
+  static bool gradients(const Coords& x, Geometry& g) { return gradients(x, g.dN, g.dv, g.centre); }
 
   /// Element stiffness K_e = sum_gp B^T C B det J w, C the material's initial tangent.
   static void stiffness(const Coords& x, const Material& mat, Formulation f, Stiffness& Ke);

@@ -13,9 +13,11 @@ double log_divided_difference(double a, double b) {
 Eigen::Matrix<double, 9, 9> kirchhoff_modulus(const FiniteTangent& t, int dim) {
   const Eigen::Vector3d& lambda = t.b.values;
   const Eigen::Matrix3d& Q = t.b.vectors;
-  Eigen::Matrix3d G;  // divided differences of ln over the eigenvalues
-  for (int a = 0; a < 3; ++a)
-    for (int c = 0; c < 3; ++c) G(a, c) = log_divided_difference(lambda(a), lambda(c));
+  Eigen::Matrix3d G;  // divided differences of ln over the eigenvalues: symmetric, 1 / λ on the diagonal
+  for (int a = 0; a < 3; ++a) {
+    G(a, a) = log_divided_difference(lambda(a), lambda(a));
+    for (int c = a + 1; c < 3; ++c) G(a, c) = G(c, a) = log_divided_difference(lambda(a), lambda(c));
+  }
   Eigen::Matrix<double, 9, 9> A = Eigen::Matrix<double, 9, 9>::Zero();
   for (int m = 0; m < dim; ++m)
     for (int l = 0; l < dim; ++l) {

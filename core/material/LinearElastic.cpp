@@ -2,9 +2,8 @@
 
 namespace rollsim {
 
-Tangent6 LinearElastic::tangent3d() const {
+Tangent6 LinearElastic::hooke(double l, double m) {
   Tangent6 D = Tangent6::Zero();
-  const double l = lambda(), m = mu();
   D.topLeftCorner<3, 3>().setConstant(l);
   for (int i = 0; i < 3; ++i) {
     D(i, i) = l + 2.0 * m;
@@ -15,8 +14,8 @@ Tangent6 LinearElastic::tangent3d() const {
 
 void LinearElastic::update(const Deformation& d, const double* /*committed*/, double* /*trial*/, Voigt6& stress,
                            Tangent6& tangent) const {
-  tangent = tangent3d();
-  stress = tangent * d.strain;
+  tangent = C_;
+  stress.noalias() = C_ * d.strain;
 }
 
 }  // namespace rollsim
