@@ -12,6 +12,7 @@ namespace rollsim {
 void GroupAssembler::add(GroupSource source) {
   states_.push_back(IntegrationState::initial(*source.body));
   evaluations_.push_back(0);
+  memo_ready_.push_back(0);
   sources_.push_back(std::move(source));
 }
 
@@ -50,9 +51,14 @@ InvertedElement GroupAssembler::assemble_newton(const std::vector<size_t>& which
     }
     Group& group = sys.groups[g];
     Eigen::VectorXd f_int;
-    const int bad =
-        assembler(g).assemble(u, assembled_here(g) ? &group.K : nullptr, f_int, states_[g], v.size() ? &v : nullptr);
+    // a tangent after this group's residual at the same iterate (the selective update's second pass) takes the
+    // points' updates the residual kept
+    const PointMemo memo = with_tangent[g] && memo_ready_[g] ? PointMemo::reuse : PointMemo::keep;
+    memo_ready_[g] = 0;
+    const int bad = assembler(g).assemble(u, assembled_here(g) ? &group.K : nullptr, f_int, states_[g],
+                                          v.size() ? &v : nullptr, memo);
     if (bad >= 0) return InvertedElement{static_cast<int>(g), bad};
+    memo_ready_[g] = 1;
     group.f = src.dofs->restrict_to_free(at.load * src.nodal_load) - f_int;
     add_follower_pressures(g, u, at.load, group.f, assembled_here(g) ? &group.K : nullptr);
     if (with_tangent[g] && group.R.cols() && src.body->kinematics == Kinematics::Finite)
@@ -96,6 +102,7 @@ void GroupAssembler::follow_kernel(Group& group, const GroupSource& src, const E
 
 void GroupAssembler::commit() {
   for (IntegrationState& s : states_) s.commit();
+  forget_point_updates();
 }
 
 std::vector<double> GroupAssembler::committed_state(int body, int elements) const {
@@ -119,6 +126,7 @@ void GroupAssembler::set_committed_state(int body, const std::vector<double>& al
     const GroupSource& src = sources_[g];
     IntegrationState& st = states_[g];
     if (src.model_body != body || st.per_element == 0) continue;
+    memo_ready_[g] = 0;
     if (src.body_elements.empty()) {
       st.committed = all;
     } else {

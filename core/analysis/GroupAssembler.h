@@ -60,6 +60,7 @@ class GroupAssembler {
   /// The time of the step the next assemblies are for [s] (a rate-dependent material's Δt; 0: no time).
   void set_step_time(double dt) {
     for (IntegrationState& s : states_) s.dt = dt;
+    forget_point_updates();
   }
   /// Threads for each group's element kernels (fem/Assembler: the result does not depend on the count).
   void set_threads(int threads) { threads_ = threads; }
@@ -101,7 +102,11 @@ class GroupAssembler {
 
   std::vector<GroupSource> sources_;
   std::vector<IntegrationState> states_;
+  void forget_point_updates() { std::fill(memo_ready_.begin(), memo_ready_.end(), 0); }
+
   std::vector<char> local_;  // per group: its tangent is assembled here (empty: every group's)
+  // per group: its assembler's kept point updates (PointMemo) are those of its last assembly, under its state as it is
+  std::vector<char> memo_ready_;
   int threads_ = 1;
   mutable std::vector<long> evaluations_;
   mutable std::vector<std::unique_ptr<Assembler>> assemblers_;  // per group, built by assembler(g)

@@ -164,6 +164,8 @@ struct NewtonKernel {
   bool tangent;
   IntegrationState& state;
   ElementGeometryCache<D>& geometry;
+  std::vector<typename FiniteStrainElement<D>::PointUpdates>* memo;  // null: PointMemo::off
+  typename FiniteStrainElement<D>::Memo memo_mode;
 
   /// Element e's force (predicted along v when its nodes move) and, when asked, its tangent; false: inverted.
   bool operator()(int e, typename El::Stiffness& Ke, typename El::Dofs& fe) const {
@@ -185,8 +187,9 @@ struct NewtonKernel {
     bool ok;
     if (finite) {
       const typename El::Geometry* reference = geometry.at(e, element_coords<D>(m, e));
-      ok = reference &&
-           FiniteStrainElement<D>::tangent_and_force(*reference, material, body.formulation, ue, c, t, K, fe);
+      auto* kept = memo ? &(*memo)[static_cast<size_t>(e)] : nullptr;
+      ok = reference && FiniteStrainElement<D>::tangent_and_force(*reference, material, body.formulation, ue, c, t, K,
+                                                                  fe, nullptr, kept, memo_mode);
     } else {
       ok = El::tangent_and_force(element_coords<D>(m, e), material, body.formulation, ue, c, t, K, fe);
     }
@@ -223,8 +226,26 @@ int newton_elements(const NewtonKernel<D>& kernel, int threads,
 }
 }  // namespace
 
+namespace {
+/// The element records a PointMemo uses (sized to the body's elements; null when off).
+template <class Records>
+Records* memo_of(Records& records, PointMemo memo, int elements) {
+  if (memo == PointMemo::off) return nullptr;
+  if (records.size() != static_cast<size_t>(elements)) {
+    records.clear();
+    records.resize(static_cast<size_t>(elements));  // none valid
+  }
+  return &records;
+}
+
+template <int D>
+typename FiniteStrainElement<D>::Memo memo_mode(PointMemo memo) {
+  return memo == PointMemo::reuse ? FiniteStrainElement<D>::Memo::reuse : FiniteStrainElement<D>::Memo::keep;
+}
+}  // namespace
+
 int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::VectorXd& f_int, IntegrationState& state,
-                        const Eigen::VectorXd* v) const {
+                        const Eigen::VectorXd* v, PointMemo memo) const {
   const Mesh& m = body_.mesh;
   const int nd = m.nodes_per_elem() * m.dim;
   if (K) *K = pattern_;
@@ -243,10 +264,14 @@ int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::Vector
   const auto material = make_material(body_.material, state.dt);
   if (m.dim == 2) {
     geometry2_.resize(m.num_elements());
-    return newton_elements<2>({body_, *material, u, v, K != nullptr, state, geometry2_}, threads_, scatter);
+    return newton_elements<2>({body_, *material, u, v, K != nullptr, state, geometry2_,
+                               memo_of(memo2_, memo, m.num_elements()), memo_mode<2>(memo)},
+                              threads_, scatter);
   }
   geometry3_.resize(m.num_elements());
-  return newton_elements<3>({body_, *material, u, v, K != nullptr, state, geometry3_}, threads_, scatter);
+  return newton_elements<3>({body_, *material, u, v, K != nullptr, state, geometry3_,
+                             memo_of(memo3_, memo, m.num_elements()), memo_mode<3>(memo)},
+                            threads_, scatter);
 }
 
 void Assembler::add_element_matrix(int e, const Eigen::MatrixXd& Ke, SparseMatrix& K) const {

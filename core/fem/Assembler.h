@@ -6,10 +6,16 @@
 
 #include "base/SparseMatrix.h"
 #include "fem/ElementGeometryCache.h"
+#include "fem/FiniteStrainElement.h"
 #include "model/DofMap.h"
 #include "model/Model.h"
 
 namespace rollsim {
+
+/// What a Newton assembly does with its finite-strain points' material updates: nothing; keeps them (a residual that
+/// a tangent at the same iterate may follow); or takes them from the kept ones wherever an element's displacement is
+/// the one they were kept for — the caller vouches that the state has not changed since they were kept.
+enum class PointMemo { off, keep, reuse };
 
 /// The integration-point state of a group's elements (element-major, Gauss point by Gauss point, state_size()
 /// values each): the state committed at the last converged increment and the trial state of the current iterate.
@@ -37,8 +43,10 @@ class Assembler {
   /// writing `state.trial`) and, when K is not null, the consistent tangent K_ff. With `v` (every node's dofs),
   /// f_int is predicted at u + v by the tangent at u: f_int(u) + K(u) v — the step's prescribed-displacement
   /// increment enters the first Newton iteration this way. Returns the first inverted element, or -1.
+  /// `memo`: what a finite-strain body's assembly does with its points' material updates
+  /// (FiniteStrainElement::PointUpdates).
   int assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::VectorXd& f_int, IntegrationState& state,
-               const Eigen::VectorXd* v = nullptr) const;
+               const Eigen::VectorXd* v = nullptr, PointMemo memo = PointMemo::off) const;
   /// K_ff and the load of the prescribed dofs at u_f = 0, f_D = −K_fp u_p: the linear system K_ff u_f = f + f_D.
   void assemble(SparseMatrix& K, Eigen::VectorXd& f_dirichlet) const;
   /// Adds a matrix in element e's dofs (node-major, column-major storage) to K_ff, which has this pattern: a load's
@@ -57,6 +65,8 @@ class Assembler {
   // the finite-strain kernel's reference gradients, kept between assemblies (one of the two, by the mesh's dim)
   mutable ElementGeometryCache<2> geometry2_;
   mutable ElementGeometryCache<3> geometry3_;
+  mutable std::vector<FiniteStrainElement<2>::PointUpdates> memo2_;  // per element, once a PointMemo::keep asked
+  mutable std::vector<FiniteStrainElement<3>::PointUpdates> memo3_;
 };
 
 /// A nodal field at every integration point, Σ N_a v_a, element-major (`nodal`: one value per node of `mesh`).

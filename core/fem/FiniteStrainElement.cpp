@@ -47,8 +47,13 @@ template <int D>
 bool FiniteStrainElement<D>::tangent_and_force(const typename El::Geometry& reference, const Material& mat,
                                                Formulation f, const typename El::Dofs& ue, const double* committed,
                                                double* trial, typename El::Stiffness* Ke, typename El::Dofs& fe,
-                                               std::array<Stress6, El::NGP>* stresses) {
+                                               std::array<Stress6, El::NGP>* stresses, PointUpdates* memo, Memo mode) {
   constexpr int NN = El::NN, NGP = El::NGP;
+  const bool reuse = memo && mode == Memo::reuse && memo->valid && memo->ue == ue;
+  if (memo && !reuse) {
+    memo->valid = false;  // until every point is in
+    memo->ue = ue;
+  }
   const std::array<typename El::Gradients, NGP>& dN0 = reference.dN;
   const std::array<double, NGP>& dv0 = reference.dv;
   const typename El::Gradients& centre0 = reference.centre;
@@ -68,7 +73,13 @@ bool FiniteStrainElement<D>::tangent_and_force(const typename El::Geometry& refe
     const double* c = ns ? committed + p * ns : nullptr;
     Voigt6 tau_v;
     FiniteTangent ft;
-    mat.update_finite(Fb, c, ns ? trial + p * ns : nullptr, tau_v, Ke ? &ft : nullptr);
+    if (reuse) {
+      tau_v = memo->tau[p];
+      ft = memo->with[p];
+    } else {
+      mat.update_finite(Fb, c, ns ? trial + p * ns : nullptr, tau_v, Ke || memo ? &ft : nullptr);
+    }
+    if (memo && !reuse) memo->tau[p] = tau_v, memo->with[p] = ft;
     const Matrix3 tau = stress_tensor(tau_v);
     // f = ∫ σ(F̄) ∇_x N dv over the current volume (dv = J dV0): the reference-volume stress is (J / J̄) τ(F̄)
     const double ratio = fbar ? J / Jc : 1.0;
@@ -106,6 +117,7 @@ bool FiniteStrainElement<D>::tangent_and_force(const typename El::Geometry& refe
         for (int b = 0; b < NN; ++b)
           for (int m = 0; m < D; ++m) (*Ke)(a * D + i, b * D + m) -= w * g(m, a) * tau_g(i, b);
   }
+  if (memo && !reuse) memo->valid = true;
   return true;
 }
 

@@ -15,6 +15,18 @@ struct FiniteStrainElement {
   using El = SolidElement<D>;
   using Stress6 = typename El::Stress6;
 
+  /// What the material's update gave at an element's points for one displacement: kept by a force-only evaluation,
+  /// so that the tangent asked for next at the same displacement and state (a selective Newton iteration takes every
+  /// group's residual, then the tangents of those it refactors) skips the update and writes no trial state.
+  struct PointUpdates {
+    typename El::Dofs ue;                     // the displacement they are for
+    std::array<Voigt6, El::NGP> tau;          // the Kirchhoff stress of F̄
+    std::array<FiniteTangent, El::NGP> with;  // what the modulus is built from
+    bool valid = false;
+  };
+  /// How an evaluation uses a PointUpdates: fills it, or takes its points from it where it holds `ue`.
+  enum class Memo { keep, reuse };
+
   /// f_e (and, when Ke is not null, the full tangent) at element displacements ue; stresses (if not null): the
   /// Cauchy stress σ = τ / J at every Gauss point. State as in SolidElement::tangent_and_force. False if inverted.
   static bool tangent_and_force(const typename El::Coords& X, const Material& mat, Formulation f,
@@ -22,10 +34,13 @@ struct FiniteStrainElement {
                                 typename El::Stiffness* Ke, typename El::Dofs& fe,
                                 std::array<Stress6, El::NGP>* stresses = nullptr);
   /// The same from the reference geometry of the element (its gradients computed once: ElementGeometryCache).
+  /// With `memo`: its points kept (Memo::keep) or taken from it (Memo::reuse, where it holds ue; the trial state is
+  /// then the one written when it was kept).
   static bool tangent_and_force(const typename El::Geometry& reference, const Material& mat, Formulation f,
                                 const typename El::Dofs& ue, const double* committed, double* trial,
                                 typename El::Stiffness* Ke, typename El::Dofs& fe,
-                                std::array<Stress6, El::NGP>* stresses = nullptr);
+                                std::array<Stress6, El::NGP>* stresses = nullptr, PointUpdates* memo = nullptr,
+                                Memo mode = Memo::keep);
 };
 
 extern template struct FiniteStrainElement<2>;

@@ -3,7 +3,8 @@
 // set (petsc) a Newton assembly gives every group its residual and only the local ones their tangent. The layout's
 // dof geometry gives a subdomain's dofs the body's rigid-mode rows (the same on both sides of the interface). The
 // Newton kernel's elements on 2 or 3 threads give bit for bit the tangent, residual and trial state of 1 thread, and
-// name the same inverted element.
+// name the same inverted element. A tangent that follows the residual at the same iterate (taking the points the
+// residual kept) is the tangent assembled alone, bit for bit, and not once the state was committed in between.
 #include <gtest/gtest.h>
 
 #include "../../common/SaturatingSteel.h"
@@ -173,6 +174,50 @@ TEST(GroupAssembler, NewtonElementsOnThreadsGiveTheOneThreadResultBitForBit) {
         std::equal(one.group.K.valuePtr(), one.group.K.valuePtr() + one.group.K.nonZeros(), many.group.K.valuePtr()));
     EXPECT_EQ(many.trial, one.trial);
   }
+}
+
+// The selective update's two passes: every group's residual, then the tangent of those it refactors at the same
+// iterate (the second taking the first's point updates: FiniteStrainElement::PointUpdates).
+TEST(GroupAssembler, ATangentAfterTheResidualAtTheSameIterateIsTheTangentAloneBitForBit) {
+  const Plastic block;
+  const Plastic::Out alone = block.assemble(1);
+  GroupLayout layout(block.m, false, Multipliers::NonRedundant);
+  BlockSystem& sys = layout.system();
+  const std::vector<size_t> all = all_groups(sys);
+  const std::vector<Eigen::VectorXd> u = block.displacement(layout, false);
+  ASSERT_FALSE(layout.assembler().assemble_newton(all, {}, u, {1.0, 1.0, 0.0}, sys));
+  ASSERT_FALSE(layout.assembler().assemble_newton(all, all, u, {1.0, 1.0, 0.0}, sys));
+  EXPECT_TRUE(same_bits(sys.groups[0].f, alone.group.f));
+  ASSERT_EQ(sys.groups[0].K.nonZeros(), alone.group.K.nonZeros());
+  EXPECT_TRUE(std::equal(alone.group.K.valuePtr(), alone.group.K.valuePtr() + alone.group.K.nonZeros(),
+                         sys.groups[0].K.valuePtr()));
+  layout.assembler().commit();
+  EXPECT_EQ(layout.assembler().committed_state(0, block.m.bodies[0].mesh.num_elements()), alone.trial);
+}
+
+// A commit between the residual and the tangent at the same iterate: the tangent is that of the new state, not of
+// the points kept before it (the flow committed, the same strain is an elastic step: its modulus is the elastic one).
+TEST(GroupAssembler, ATangentAfterACommitIsThatOfTheCommittedState) {
+  const Plastic block;
+  const int elements = block.m.bodies[0].mesh.num_elements();
+  GroupLayout layout(block.m, false, Multipliers::NonRedundant);
+  BlockSystem& sys = layout.system();
+  const std::vector<size_t> all = all_groups(sys);
+  const std::vector<Eigen::VectorXd> u = block.displacement(layout, false);
+  ASSERT_FALSE(layout.assembler().assemble_newton(all, all, u, {1.0, 1.0, 0.0}, sys));
+  const SparseMatrix before = sys.groups[0].K;
+  ASSERT_FALSE(layout.assembler().assemble_newton(all, {}, u, {1.0, 1.0, 0.0}, sys));
+  layout.assembler().commit();
+  ASSERT_FALSE(layout.assembler().assemble_newton(all, all, u, {1.0, 1.0, 0.0}, sys));
+  // the same from a layout given that committed state
+  GroupLayout fresh(block.m, false, Multipliers::NonRedundant);
+  fresh.assembler().set_committed_state(0, layout.assembler().committed_state(0, elements));
+  ASSERT_FALSE(fresh.assembler().assemble_newton(all, all, u, {1.0, 1.0, 0.0}, fresh.system()));
+  const SparseMatrix& expected = fresh.system().groups[0].K;
+  EXPECT_GT((expected - before).norm(), 1e-3 * before.norm()) << "the committed flow changes the tangent";
+  ASSERT_EQ(sys.groups[0].K.nonZeros(), expected.nonZeros());
+  EXPECT_TRUE(std::equal(expected.valuePtr(), expected.valuePtr() + expected.nonZeros(), sys.groups[0].K.valuePtr()));
+  EXPECT_TRUE(same_bits(sys.groups[0].f, fresh.system().groups[0].f));
 }
 
 TEST(GroupAssembler, NewtonElementsOnThreadsNameTheSameInvertedElement) {
