@@ -24,7 +24,8 @@ MixedStrategy::MixedStrategy(SolverOptions options, bool subdomains, std::string
                   (preconditioner_ && options_.projector == ProjectorMetric::Preconditioner)))
     throw std::invalid_argument(
         "the mixed method over MPI (petsc_method: mixed) solves its interface by projected CG / GMRES with the "
-        "identity projector: solver.interface_solver must be krylov and solver.projector identity");
+        "identity projector: solver.interface_solver must be krylov and solver.projector identity (on the command "
+        "line: --interface-solver krylov --projector identity)");
 }
 
 std::vector<size_t> MixedStrategy::local_groups(std::vector<size_t> groups) const {
