@@ -4,6 +4,7 @@
 
 #include "BenchSuiteCommand.h"
 #include "Commands.h"
+#include "VtkThreads.h"
 #include "base/Blas.h"
 #include "base/Memory.h"
 #include "base/Schema.h"
@@ -57,6 +58,9 @@ void add_project_flags(CLI::App& cmd, rollsim::Overrides& overrides) {
 int main(int argc, char** argv) {
   using namespace rollsim::app;
   rollsim::keep_freed_memory_for_reuse();
+#ifndef ROLLSIM_HAVE_GUI
+  rollsim::run_vtk_sequentially();  // the batch binary only writes with VTK (VtkThreads.h)
+#endif
   struct EndProcesses {  // PETSc and MPI end after the command, whichever return it took (solver `petsc`)
     ~EndProcesses() { rollsim::finish_processes(); }
   } end_processes;

@@ -22,7 +22,16 @@ bool set_blas_call_threads(int threads) {
   allowed_threads = threads < 1 ? 1 : threads;
   const SetThreads set = openblas_setter();
   if (!set) return false;
-  set(1);
+  // OpenBLAS starts its workers when it is loaded, and an idle worker spins ~2^28 cycles (sched_yield) before it
+  // sleeps: 3 % of the main job's CPU time on a second core that one BLAS thread never uses. Stopped here; OpenBLAS
+  // starts them again itself when it is set to more than one thread (a large call, BlasCallThreads). Setting it to
+  // the one thread it already has would start them again too (its set_num_threads re-creates a stopped pool).
+  using Get = int (*)();
+  using Shutdown = int (*)();
+  static const auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  static const auto shutdown = reinterpret_cast<Shutdown>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"));
+  if (!get || get() != 1) set(1);
+  if (allowed_threads == 1 && shutdown) shutdown();
   return true;
 }
 

@@ -1,11 +1,13 @@
 // Tests of the per-call BLAS thread choice: the level-3 routines CHOLMOD calls resolve to rollsim's interposers, a
 // call below kThreadedBlasFlops runs on one OpenBLAS thread whatever --threads allows and a large one on the allowed
-// count, and a factorization on 2 threads gives the 1-thread solution to round-off.
+// count, and a factorization on 2 threads gives the 1-thread solution to round-off. One allowed thread stops
+// OpenBLAS's idle workers (they spin before they sleep), and setting it again does not start them again.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
+#include <thread>
 
 #include "../solve/grid_matrix.h"
 #include "base/Blas.h"
@@ -72,6 +74,27 @@ TEST(BlasCallThreads, TwoThreadsSolveLikeOne) {
   set_library_threads(1);
   EXPECT_LE((x[1] - x[0]).norm(), 1e-12 * x[0].norm());
   EXPECT_LE((A * x[1] - b).norm(), 1e-10 * b.norm());
+}
+
+/// This process's threads.
+long threads_now() {
+  long n = 0;
+  for ([[maybe_unused]] const auto& task : std::filesystem::directory_iterator("/proc/self/task")) ++n;
+  return n;
+}
+
+TEST(BlasCallThreads, OneAllowedThreadStopsTheIdleWorkersForGood) {
+  if (openblas_threads() == 0) GTEST_SKIP() << "not OpenBLAS";
+  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "OpenBLAS has no worker on one core";
+  set_blas_call_threads(2);
+  { const BlasCallThreads large(1e9); }  // a large call's threads: OpenBLAS's workers running
+  const long with_workers = threads_now();
+  set_blas_call_threads(1);
+  const long stopped = threads_now();
+  EXPECT_LT(stopped, with_workers);
+  for (int i = 0; i < 3; ++i) set_blas_call_threads(1);  // every mixed solve sets it again
+  EXPECT_EQ(threads_now(), stopped);
+  EXPECT_EQ(openblas_threads(), 1);
 }
 
 }  // namespace
