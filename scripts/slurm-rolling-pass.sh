@@ -31,4 +31,4 @@ extra=()
 if [[ -z ${SLURM_JOB_ID:-} ]]; then extra=(--oversubscribe); fi
 if [[ $(id -u) == 0 ]]; then extra+=(--allow-run-as-root); fi
 exec mpirun -n "$ranks" "${extra[@]}" "$rollsim" run "$project" "${partition[@]}" --solver petsc \
-  --petsc-method "$method" --out "$out" --quiet
+  --petsc-method "$method" --interface-solver krylov --out "$out" --quiet

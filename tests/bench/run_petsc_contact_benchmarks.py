@@ -61,6 +61,7 @@ class Runner:
         self.count += 1
         out = os.path.join(self.work, "run%d" % self.count)
         solver = ["--solver", mode] if ranks == 0 else ["--solver", "petsc", "--petsc-method", mode]
+        solver += ["--interface-solver", "krylov"]  # the main job's sample forms its interface; over MPI: CG only
         cmd = ["/usr/bin/time", "-v", self.rollsim, "run", os.path.join(ROOT, "samples", sample), *solver, *extra,
                "--out", out, "--quiet"]
         if ranks:
