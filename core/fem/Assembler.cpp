@@ -224,9 +224,7 @@ int newton_elements(const NewtonKernel<D>& kernel, int threads,
   }
   return -1;
 }
-}  // namespace
 
-namespace {
 /// The element records a PointMemo uses (sized to the body's elements; null when off).
 template <class Records>
 Records* memo_of(Records& records, PointMemo memo, int elements) {
