@@ -204,6 +204,7 @@ class NewtonRun {
   std::vector<char> unfactored_;    // per group: K was assembled after its last factorization
   std::vector<std::array<int, 3>> row_keys_;      // (pair, slave node, component) of the kept contact rows
   std::vector<Eigen::VectorXd> step_start_;       // every dof of every body where the current step began
+  std::vector<Eigen::VectorXd> step_end_guess_;   // and where it may end: the last step's motion repeated
   std::vector<Eigen::VectorXd> previous_, step_;  // the iterate before the last solve, and its correction
   double slope_ = 0;                              // the line search's s(0)
   double assembly_s_ = 0;                         // residual and tangent assembly, over the run
@@ -219,7 +220,9 @@ class NewtonRun {
 };
 
 void NewtonRun::set_constraints(double lf, bool step_begins) {
-  if (step_sliding_ && step_begins) follow_contacts(model_, step_start_, pairs_, ContactPair::Sliding::Step);
+  if (step_sliding_ && step_begins)
+    follow_contacts(model_, step_start_, pairs_, ContactPair::Sliding::Step,
+                    step_end_guess_.empty() ? nullptr : &step_end_guess_);
   if (step_sliding_ && search_again_)
     follow_contacts(model_, body_displacements(lf), pairs_, ContactPair::Sliding::Step);
   search_again_ = false;
@@ -530,6 +533,16 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
   BlockSystem& sys = layout_.system();
   const std::vector<Eigen::VectorXd> u_start = u_;
   step_start_ = body_displacements(from);
+  // under contact_frames: predicted, the stuck contact points' frames are written where the step is expected to end
+  // (NewtonOptions.h): frames written where it begins turn with the roll over the step, and the step, converged on
+  // them, is searched again and converged again
+  step_end_guess_.clear();
+  if (opt_.contact_frames == ContactFrames::Predicted && last_span_ > 0) {
+    BlockSolution guess;
+    guess.u = u_;
+    for (size_t g = 0; g < u_.size(); ++g) guess.u[g] += ((lf - from) / last_span_) * last_step_[g];
+    step_end_guess_ = full_displacements(layout_.body_dofs(), layout_.body_solution(guess), lf);
+  }
   forcing_.restart();
   const bool extrapolated = extrapolate(lf - from);
   new_step(pairs_);

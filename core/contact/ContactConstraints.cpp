@@ -88,7 +88,7 @@ void carry(const PairState& from, size_t j, ContactPoint c, PairState& to) {
 }  // namespace
 
 void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs,
-                     ContactPair::Sliding when) {
+                     ContactPair::Sliding when, const std::vector<Eigen::VectorXd>* frames_at) {
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
     if (p.sliding != when) continue;
@@ -113,7 +113,8 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
       const bool stuck = frictional(p.kind) && pairs[i].active[j] && !pairs[i].slip[j];
       if (stuck) {  // keeps its master point; the facet's frame turns
         ContactPoint kept = pairs[i].points[j];
-        facet_frame(master_now, kept.master_nodes, kept.N, kept);
+        facet_frame(frames_at ? displaced(master, (*frames_at)[p.master_body]) : master_now, kept.master_nodes, kept.N,
+                    kept);
         kept.gap = kept.normal.dot(relative_position(p, kept, u, model.dim));
         carry(pairs[i], j, std::move(kept), now);
         continue;

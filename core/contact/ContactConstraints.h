@@ -55,9 +55,10 @@ std::vector<PairState> search_contacts(const Model& model);
 /// Large sliding: the pairs that slide `when` (ContactPair::sliding) searched again in the configuration u (every
 /// dof of every body, node-major), so that a slave node travels from master facet to master facet. A slave node keeps
 /// its active flag and friction state; a node new to the pair is active where it touches or penetrates. A point that
-/// sticks keeps its master point, its normal and tangents turned with the master facet.
+/// sticks keeps its master point, its normal and tangents turned with the master facet — as it is in u, or in
+/// `frames_at` when given (where the step is expected to end: analysis.contact_frames).
 void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs,
-                     ContactPair::Sliding when);
+                     ContactPair::Sliding when, const std::vector<Eigen::VectorXd>* frames_at = nullptr);
 
 /// The pairs whose slave body is `body` found again after that body's reference moved under its material (an ALE
 /// step: its nodes put back, u its displacement from there — zero — and the other bodies' as they are): every point's
