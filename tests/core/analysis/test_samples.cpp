@@ -91,7 +91,10 @@ TEST_P(SampleTest, SolversAgreeAndMatchGolden) {
   if (direct.results.rigid_modes > 0) {
     EXPECT_THROW(solve(model, "skyline"), AnalysisError);
   } else {
-    expect_same_displacements(model, direct.results, solve(model, "skyline").results, 1e-10, "skyline vs direct");
+    // two direct factorizations of one matrix agree to about κ ε: the Cook's membrane's ν = 0.4999 rubber is the
+    // worst conditioned sample (its tip's difference 3e-11 of the tip's displacement, 1.5e-10 since the element
+    // matrices are computed from coordinates relative to the element: the same matrix to round-off)
+    expect_same_displacements(model, direct.results, solve(model, "skyline").results, 1e-9, "skyline vs direct");
   }
   const json got = golden_view(make_summary(model, direct.results, {project.name(), "direct", to_json(RunConfig{})}));
   const fs::path golden = fs::path(ROLLSIM_SOURCE_DIR) / "tests" / "golden" / (project.name() + ".json");
