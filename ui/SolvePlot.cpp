@@ -35,6 +35,7 @@ SolvePlot::SolvePlot(QWidget* parent)
 }
 
 void SolvePlot::clear() {
+  chart()->setTitle(tr("CG iterations per solve"));
   line_->clear();
   markers_->clear();
   drawn_ = 0;
@@ -48,10 +49,14 @@ void SolvePlot::refresh(const RunSeries& series) {
   QVector<QPointF> points;
   points.reserve(s.size());
   int ymax = 1;
+  bool any = false;
   for (const SolveRecord& r : s) {
     points.append(QPointF(r.solve, r.cg_iterations));
     ymax = std::max(ymax, r.cg_iterations);
+    any = any || r.cg_iterations > 0;
   }
+  // a flat line at 0 says nothing on its own: the interface (or the whole system) was solved directly
+  chart()->setTitle(s.isEmpty() || any ? tr("CG iterations per solve") : tr("no CG: direct solves"));
   line_->replace(points);  // one layout for the batch (append() lays the series out once per point)
   markers_->replace(points);
   markers_->setVisible(points.size() <= kMaxMarkers);

@@ -1,7 +1,8 @@
 #pragma once
 // CG iterations of every linear solve of a run (Qt Charts): one marker per solve, joined, so that a growing number
 // of solves (active-set iterations today, Newton iterations of every increment later) stays readable. Direct
-// strategies show 0 per solve. It draws a RunSeries when RunPlots says so.
+// strategies and a dense interface show 0 per solve, and the title says so. It draws a RunSeries when RunPlots says
+// so.
 #include <QChartView>
 
 #include "RunSeries.h"

@@ -98,9 +98,14 @@ class TestResidualPlot : public QObject {
     QCOMPARE(bars[1].group, QStringLiteral("block"));
     QCOMPARE(bars[1].count, 1);
     QCOMPARE(plots.factorization_plot()->body_labels(), (QStringList{"base", "block"}));
+    QCOMPARE(plots.solve_plot()->chart()->title(), QStringLiteral("CG iterations per solve"));
     plots.clear();
     QCOMPARE(plots.solve_plot()->solves(), 0);
     QVERIFY(plots.factorization_plot()->bars().isEmpty());
+    plots.end_solve(1, 0);  // solved directly (direct, or mixed with a dense interface): the title says why it is flat
+    plots.end_solve(2, 0);
+    plots.flush();
+    QCOMPARE(plots.solve_plot()->chart()->title(), QStringLiteral("no CG: direct solves"));
   }
 
   void csv_lists_every_series() {
