@@ -95,6 +95,7 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
     const Mesh& slave = model.bodies[p.slave_body].mesh;
     const Mesh& master = model.bodies[p.master_body].mesh;
     const Mesh master_now = displaced(master, u[p.master_body]);
+    const Mesh master_frames = frames_at ? displaced(master, (*frames_at)[p.master_body]) : Mesh{};
     std::map<int, size_t> was;
     for (size_t j = 0; j < pairs[i].points.size(); ++j) was[pairs[i].points[j].slave_node] = j;
     PairState now;
@@ -113,8 +114,7 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
       const bool stuck = frictional(p.kind) && pairs[i].active[j] && !pairs[i].slip[j];
       if (stuck) {  // keeps its master point; the facet's frame turns
         ContactPoint kept = pairs[i].points[j];
-        facet_frame(frames_at ? displaced(master, (*frames_at)[p.master_body]) : master_now, kept.master_nodes, kept.N,
-                    kept);
+        facet_frame(frames_at ? master_frames : master_now, kept.master_nodes, kept.N, kept);
         kept.gap = kept.normal.dot(relative_position(p, kept, u, model.dim));
         carry(pairs[i], j, std::move(kept), now);
         continue;
