@@ -57,20 +57,30 @@ Assembler::Assembler(const Body& body, const DofMap& dofs) : body_(body), dofs_(
   // scatter map: slot of each element-matrix entry in the value array
   std::vector<int> eq(static_cast<size_t>(nd));
   slot_.resize(static_cast<size_t>(m.num_elements()) * nd * nd);
+  // a node's free dofs are consecutive equations, so consecutive in every column holding them: one search per node
+  // of the element and column, the node's other dofs following it (checked; searched where they do not)
+  const int* rows = pattern_.innerIndexPtr();
   for (int e = 0; e < m.num_elements(); ++e) {
     element_equations(m, dofs, e, eq.data());
     int* s = slot_.data() + static_cast<size_t>(e) * nd * nd;
-    for (int jj = 0; jj < nd; ++jj)
+    for (int jj = 0; jj < nd; ++jj) {
+      const int j = eq[jj];
+      const int *begin = rows + (j < 0 ? 0 : outer[j]), *end = rows + (j < 0 ? 0 : outer[j + 1]);
+      const int* at = begin;  // where the last node's dofs were found
       for (int ii = 0; ii < nd; ++ii) {
-        const int i = eq[ii], j = eq[jj];
+        const int i = eq[ii];
         if (i < 0 || j < 0) {
           s[jj * nd + ii] = -1;
           continue;
         }
-        const int* begin = pattern_.innerIndexPtr() + outer[j];
-        const int* end = pattern_.innerIndexPtr() + outer[j + 1];
-        s[jj * nd + ii] = static_cast<int>(std::lower_bound(begin, end, i) - pattern_.innerIndexPtr());
+        if (ii % d == 0 || at + 1 >= end || at[1] != i) {
+          at = std::lower_bound(begin, end, i);
+        } else {
+          ++at;
+        }
+        s[jj * nd + ii] = static_cast<int>(at - rows);
       }
+    }
   }
 }
 
