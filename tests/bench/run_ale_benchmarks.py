@@ -6,7 +6,7 @@ on three meshes refined together (slab elements, roll elements, steps), once Lag
 through the gap) and once ALE (process.formulation: ale, the window's default reach, its columns as long as the
 Lagrangian slab's elements), both ending at their steady state (process.stop_at_steady_state). Per run: status, the
 travel where it became steady, the steady force, torque, forward slip and exit thickness, the volume balance (ALE: the
-window's flux out over its flux in - 1), Newton iterations and total_s. Then farm-bench times each pair whole (--runs
+window's flux out over its flux in - 1), Newton iterations and total_s. Then tests/bench/paired_timing.py times each pair whole (--runs
 paired runs, medians, peak memory) unless --no-time. Usage:
   tests/bench/run_ale_benchmarks.py [--rollsim BIN] [--runs N] [--no-time] [--only-last] [--out docs/ale-bench-output.md]
 Builds nothing; it fails only if a run cannot start.
@@ -52,12 +52,12 @@ def run(rollsim, path, out):
             "newton": sum(i.get("newton_iterations", 0) for i in inc), "seconds": s["timing"]["total_s"]}
 
 
-def farm_bench(rollsim, a, b, runs, tmp):
+def paired(rollsim, a, b, runs, tmp):
     def cmd(p):
         out = tmp / f"fb-{p.stem}"
         return f"sh -c 'rm -rf {out}; exec {rollsim} run {p} --out {out} --quiet'"
-    text = subprocess.run(["farm-bench", "-n", str(runs), "--warmup", "1", "--timeout", "1800", "--vs", cmd(b),
-                           "--", "sh", "-c", cmd(a)[7:-1]], capture_output=True, text=True).stdout
+    text = subprocess.run([sys.executable, str(ROOT / "tests/bench/paired_timing.py"), "-n", str(runs), "--warmup", "1",
+                           "--vs", cmd(b), "--", "sh", "-c", cmd(a)[7:-1]], capture_output=True, text=True).stdout
     got = {}
     for key in ("A cpu s", "B cpu s", "A/B cpu", "A/B wall", "A peak MiB", "B peak MiB"):
         m = re.search(re.escape(key) + r"\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)", text)
@@ -102,7 +102,7 @@ def main():
                          f"{e['exit'] / l['exit']:.4f} | | {e['newton'] / l['newton']:.3f} | "
                          f"{e['seconds'] / l['seconds']:.3f} |")
         if not a.no_time:
-            t = farm_bench(a.rollsim, paths["ale"], paths["lagrangian"], a.runs, tmp)
+            t = paired(a.rollsim, paths["ale"], paths["lagrangian"], a.runs, tmp)
             timing.append(f"| {mesh} | {t['A cpu s']} | {t['B cpu s']} | {t['A/B cpu']} | {t['A/B wall']} | "
                           f"{t['A peak MiB']} / {t['B peak MiB']} |")
         print(lines[-1], file=sys.stderr)
@@ -110,7 +110,7 @@ def main():
             "Both formulations end where the pass is steady (process.stop_at_steady_state); the values are the means "
             "over the last window of half a nominal contact length of travel.\n\n" + "\n".join(lines) + "\n")
     if not a.no_time:
-        text += (f"\nWhole runs timed by farm-bench ({a.runs} paired runs after a warm-up, medians):\n\n"
+        text += (f"\nWhole runs timed in pairs (tests/bench/paired_timing.py, {a.runs} paired runs after a warm-up, medians):\n\n"
                  + "\n".join(timing) + "\n")
     pathlib.Path(a.out).write_text(text)
     print(text)

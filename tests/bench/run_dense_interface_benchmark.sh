@@ -2,7 +2,7 @@
 # The dense interface solver on the 3D pass -> docs/BENCHMARKS-ROLLING.md ("The interface formed and factored").
 # samples/rolling-3d-24x12x8.json over its first TRAVEL mm (1 mm steps, cg_tolerance 1e-10) as `direct` + `always`
 # (the paper's direct), Mixed II with the paper's interface CG (`krylov`) and Mixed II with `interface_solver: dense`;
-# farm-bench times dense against each of the other two (A and B in turn, REPEAT pairs, one thread, CPU = user +
+# tests/bench/paired_timing.py times dense against each of the other two (A and B in turn, REPEAT pairs, one thread, CPU = user +
 # system, medians and the pairs' ratios), then the runs' Newton iterations, factorizations, interface work, roll
 # force and torque from their summary.json.
 # --slab NXxNWxNT refines the slab (48x24x8: the issue's mesh 4x finer, the same roll); --skip-krylov times dense
@@ -58,8 +58,8 @@ echo "## slab $SLAB, first $TRAVEL mm, $THREADS thread(s)"
 run() { echo "$ROLLSIM run $WORK/$1.json --out $WORK/out-$1 --threads $THREADS"; }
 for base in $BASES; do
   echo "## dense (A) against $base (B)"
-  farm-bench -n "$REPEAT" --warmup 0 --timeout 3600 --vs "$(run "$base")" -- $(run dense) |
-    grep -E "farm-bench|cpu s|wall s|peak MiB|A/B cpu|A/B wall"
+  python3 "$ROOT/tests/bench/paired_timing.py" -n "$REPEAT" --warmup 0 --vs "$(run "$base")" -- $(run dense) |
+    grep -E "cpu s|wall s|peak MiB|A/B cpu|A/B wall"
 done
 
 echo "## counts (the last run of each)"

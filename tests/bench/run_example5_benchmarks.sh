@@ -3,7 +3,7 @@
 # every iteration, `mixed` (one group per body) and `feti` with the base partitioned as in Table XII, each with the
 # `always` (DD-I / Mixed I) and `selective` (DD-II / Mixed II) update: steps, Newton iterations, factorizations and
 # tangents of the base's groups and the block, CG iterations, contact force, in-process times, peak memory. Then the
-# whole-process ratio of the fastest variant against `direct` + `always`, paired, from farm-bench.
+# whole-process ratio of the fastest variant against `direct` + `always`, paired, by hand with tests/bench/paired_timing.py.
 #
 # Usage: tests/bench/run_example5_benchmarks.sh [--rollsim BIN] [--repeat N] [--partitions "1x1x2 1x2x1 ..."]
 #        [--feti-only] (skip the direct and mixed rows)

@@ -2,7 +2,7 @@
 # Newton benchmark of issue 12 -> the tables of docs/BENCHMARKS-NONLINEAR.md: the paper's Example 2 (sample
 # cylinder-plastic-2d) in every solver mode and update policy — steps, cut-backs, Newton iterations, factorizations
 # and tangent evaluations per group, interface CG iterations, contact force, in-process time, peak memory — and then
-# the time ratios against `direct` + `always`, paired, from farm-bench (when it is on the PATH).
+# the time ratios against `direct` + `always`, paired, from tests/bench/paired_timing.py.
 #
 # Usage: tests/bench/run_nonlinear_benchmarks.sh [--rollsim BIN] [--repeat N] [--sample FILE]
 # (--sample samples/cylinder-plastic-3d.json: Example 2 in 3D, Table V)
@@ -46,13 +46,12 @@ print(f"| {mode} | {update} | {len(inc)} | {sum(i['cutbacks'] for i in inc)} | {
 PY
 done
 
-command -v farm-bench >/dev/null || { echo "(farm-bench not found: no paired time ratios)"; exit 0; }
 echo
 for v in "${VARIANTS[@]}"; do
   read -r mode update <<<"$v"
   [[ $mode == direct && $update == always ]] && continue
   echo "### $mode + $update vs direct + always"
-  farm-bench -n "$REPEAT" --timeout 900 \
+  python3 "$ROOT/tests/bench/paired_timing.py" -n "$REPEAT" \
     --vs "$ROLLSIM run $SAMPLE --quiet --out $WORK/b --solver direct --update always" \
-    -- "$ROLLSIM" run "$SAMPLE" --quiet --out "$WORK/a" --solver "$mode" --update "$update" | grep -E "ratio|wall|peak"
+    -- "$ROLLSIM" run "$SAMPLE" --quiet --out "$WORK/a" --solver "$mode" --update "$update" | grep -E "A/B|wall|peak"
 done

@@ -4,7 +4,7 @@
 Every case runs twice, once each (the counts do not depend on the machine; the seconds are one run's): on its own mesh,
 and with analysis.remesh_quality (0.5 unless --quality). Reported per run: status, the load factor reached, Newton
 iterations, remeshes (and how many moved their nodes), the platen force at the end where the case has one, and the run's
-total_s from summary.json. For ratios of CPU time use farm-bench on the projects this script leaves in --keep.
+total_s from summary.json. For ratios of CPU time use tests/bench/paired_timing.py on the projects this script leaves in --keep.
 Usage: tests/bench/run_remesh_benchmarks.py [--rollsim BIN] [--quality Q] [--only SUBSTRING] [--keep DIR]
 Builds nothing; it fails only if a run cannot start.
 """
