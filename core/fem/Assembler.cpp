@@ -196,7 +196,8 @@ struct NewtonKernel {
     const bool finite = body.kinematics == Kinematics::Finite;
     bool ok;
     if (finite) {
-      const typename El::Geometry* reference = geometry.at(e, element_coords<D>(m, e));
+      typename El::Geometry scratch;
+      const typename El::Geometry* reference = geometry.at(e, element_coords<D>(m, e), scratch);
       auto* kept = memo ? &(*memo)[static_cast<size_t>(e)] : nullptr;
       ok = reference && FiniteStrainElement<D>::tangent_and_force(*reference, material, body.formulation, ue, c, t, K,
                                                                   fe, nullptr, kept, memo_mode);
@@ -238,7 +239,7 @@ int newton_elements(const NewtonKernel<D>& kernel, int threads,
 /// The element records a PointMemo uses (sized to the body's elements; null when off).
 template <class Records>
 Records* memo_of(Records& records, PointMemo memo, int elements) {
-  if (memo == PointMemo::off) return nullptr;
+  if (memo == PointMemo::off || static_cast<size_t>(elements) * sizeof(records[0]) > kElementCacheBytes) return nullptr;
   if (records.size() != static_cast<size_t>(elements)) {
     records.clear();
     records.resize(static_cast<size_t>(elements));  // none valid

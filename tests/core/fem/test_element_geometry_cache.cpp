@@ -1,7 +1,10 @@
 // ElementGeometryCache: the finite-strain kernel's reference gradients kept between assemblies. An entry is the
 // gradients of the coordinates it is asked at, bit for bit, even after the element's nodes moved (an ALE step or a
-// remesh moves a reference mesh under the same Assembler), and an inverted element has none.
+// remesh moves a reference mesh under the same Assembler), an inverted element has none, and a body beyond the cache's
+// memory budget is computed element by element as before.
 #include <gtest/gtest.h>
+
+#include <limits>
 
 #include "fem/Assembler.h"
 #include "mesh/StructuredBlock.h"
@@ -33,16 +36,30 @@ TEST(ElementGeometryCache, GivesTheGradientsOfTheCoordinatesItIsAskedAt) {
   SolidElement<2>::Coords x = unit_square();
   SolidElement<2>::Geometry fresh;
   ASSERT_TRUE(SolidElement<2>::gradients(x, fresh));
-  const SolidElement<2>::Geometry* kept = cache.at(1, x);
+  SolidElement<2>::Geometry scratch;
+  const SolidElement<2>::Geometry* kept = cache.at(1, x, scratch);
   ASSERT_NE(kept, nullptr);
   expect_same(*kept, fresh);
   x(0, 2) += 0.25;  // a node moved: the entry is computed again
   ASSERT_TRUE(SolidElement<2>::gradients(x, fresh));
-  kept = cache.at(1, x);
+  kept = cache.at(1, x, scratch);
   ASSERT_NE(kept, nullptr);
   expect_same(*kept, fresh);
-  x.col(2).swap(x.col(3));  // folded: no geometry
-  EXPECT_EQ(cache.at(1, x), nullptr);
+  EXPECT_NE(kept, &scratch);  // the cache's own entry
+  x.col(2).swap(x.col(3));    // folded: no geometry
+  EXPECT_EQ(cache.at(1, x, scratch), nullptr);
+}
+
+// A body too large for the cache's budget keeps nothing: each element's geometry is computed where it is asked.
+TEST(ElementGeometryCache, ABodyBeyondItsBudgetIsComputedEachTime) {
+  ElementGeometryCache<2> cache;
+  cache.resize(std::numeric_limits<int>::max());  // ~2e9 entries: far beyond kElementCacheBytes, and allocates none
+  const SolidElement<2>::Coords x = unit_square();
+  SolidElement<2>::Geometry fresh, scratch;
+  ASSERT_TRUE(SolidElement<2>::gradients(x, fresh));
+  const SolidElement<2>::Geometry* got = cache.at(123456789, x, scratch);
+  ASSERT_EQ(got, &scratch);
+  expect_same(*got, fresh);
 }
 
 // An Assembler whose body's reference nodes move between assemblies (as ALE moves them) assembles what a fresh
