@@ -60,7 +60,11 @@ class Assembler {
   const Body& body_;
   const DofMap& dofs_;
   SparseMatrix pattern_;
-  std::vector<int> slot_;  // per element, per (i, j) of the element matrix: value index or -1
+  /// Element e's equations into eq and the value index of each (i, j) of its matrix (or -1) into s.
+  void element_slots(int e, int* eq, int* s) const;
+  /// Element e's row of the scatter map, the map built on first use (a Newton run assembles many times).
+  const int* slots(int e) const;
+  mutable std::vector<int> slot_;  // per element, per (i, j) of the element matrix: value index or -1
   int threads_ = 1;
   // the finite-strain kernel's reference gradients, kept between assemblies (one of the two, by the mesh's dim)
   mutable ElementGeometryCache<2> geometry2_;
