@@ -106,13 +106,8 @@ void Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix& K, Eigen::Vecto
   std::vector<double> ue(static_cast<size_t>(nd));
   for_each_element_stiffness(body_, [&](int e, const double* Ke) {
     // a linear system is assembled once: its element's slots found here, not kept (9 MB for a 32 x 16 x 8 block)
+    element_slots(e, eq.data(), own.data());
     const int* s = own.data();
-    if (slot_.empty()) {
-      element_slots(e, eq.data(), own.data());
-    } else {
-      element_equations(m, dofs_, e, eq.data());
-      s = slot_.data() + static_cast<size_t>(e) * nd * nd;
-    }
     const int* conn = m.element(e);
     for (int jj = 0; jj < nd; ++jj) ue[jj] = u[static_cast<Eigen::Index>(conn[jj / m.dim]) * m.dim + jj % m.dim];
     for (int jj = 0; jj < nd; ++jj) {
@@ -193,7 +188,7 @@ struct NewtonKernel {
   IntegrationState& state;
   ElementGeometryCache<D>& geometry;
   std::vector<typename FiniteStrainElement<D>::PointUpdates>* memo;  // null: PointMemo::off
-  typename FiniteStrainElement<D>::Memo memo_mode;
+  PointMemo memo_mode;
 
   /// Element e's force (predicted along v when its nodes move) and, when asked, its tangent; false: inverted.
   bool operator()(int e, typename El::Stiffness& Ke, typename El::Dofs& fe) const {
@@ -264,11 +259,6 @@ Records* memo_of(Records& records, PointMemo memo, int elements) {
   }
   return &records;
 }
-
-template <int D>
-typename FiniteStrainElement<D>::Memo memo_mode(PointMemo memo) {
-  return memo == PointMemo::reuse ? FiniteStrainElement<D>::Memo::reuse : FiniteStrainElement<D>::Memo::keep;
-}
 }  // namespace
 
 int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::VectorXd& f_int, IntegrationState& state,
@@ -291,14 +281,14 @@ int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::Vector
   const auto material = make_material(body_.material, state.dt);
   if (m.dim == 2) {
     geometry2_.resize(m.num_elements());
-    return newton_elements<2>({body_, *material, u, v, K != nullptr, state, geometry2_,
-                               memo_of(memo2_, memo, m.num_elements()), memo_mode<2>(memo)},
-                              threads_, scatter);
+    return newton_elements<2>(
+        {body_, *material, u, v, K != nullptr, state, geometry2_, memo_of(memo2_, memo, m.num_elements()), memo},
+        threads_, scatter);
   }
   geometry3_.resize(m.num_elements());
-  return newton_elements<3>({body_, *material, u, v, K != nullptr, state, geometry3_,
-                             memo_of(memo3_, memo, m.num_elements()), memo_mode<3>(memo)},
-                            threads_, scatter);
+  return newton_elements<3>(
+      {body_, *material, u, v, K != nullptr, state, geometry3_, memo_of(memo3_, memo, m.num_elements()), memo},
+      threads_, scatter);
 }
 
 void Assembler::add_element_matrix(int e, const Eigen::MatrixXd& Ke, SparseMatrix& K) const {

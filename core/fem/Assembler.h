@@ -12,11 +12,6 @@
 
 namespace rollsim {
 
-/// What a Newton assembly does with its finite-strain points' material updates: nothing; keeps them (a residual that
-/// a tangent at the same iterate may follow); or takes them from the kept ones wherever an element's displacement is
-/// the one they were kept for — the caller vouches that the state has not changed since they were kept.
-enum class PointMemo { off, keep, reuse };
-
 /// The integration-point state of a group's elements (element-major, Gauss point by Gauss point, state_size()
 /// values each): the state committed at the last converged increment and the trial state of the current iterate.
 struct IntegrationState {

@@ -47,9 +47,10 @@ template <int D>
 bool FiniteStrainElement<D>::tangent_and_force(const typename El::Geometry& reference, const Material& mat,
                                                Formulation f, const typename El::Dofs& ue, const double* committed,
                                                double* trial, typename El::Stiffness* Ke, typename El::Dofs& fe,
-                                               std::array<Stress6, El::NGP>* stresses, PointUpdates* memo, Memo mode) {
+                                               std::array<Stress6, El::NGP>* stresses, PointUpdates* memo,
+                                               PointMemo mode) {
   constexpr int NN = El::NN, NGP = El::NGP;
-  const bool reuse = memo && mode == Memo::reuse && memo->valid && memo->ue == ue;
+  const bool reuse = memo && mode == PointMemo::reuse && memo->valid && memo->ue == ue;
   if (memo && !reuse) {
     memo->valid = false;  // until every point is in
     memo->ue = ue;

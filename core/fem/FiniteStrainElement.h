@@ -10,6 +10,11 @@
 
 namespace rollsim {
 
+/// What a Newton assembly does with its finite-strain points' material updates: nothing; keeps them (a residual that
+/// a tangent at the same iterate may follow); or takes them from the kept ones wherever an element's displacement is
+/// the one they were kept for — the caller vouches that the state has not changed since they were kept.
+enum class PointMemo { off, keep, reuse };
+
 template <int D>
 struct FiniteStrainElement {
   using El = SolidElement<D>;
@@ -24,8 +29,6 @@ struct FiniteStrainElement {
     std::array<FiniteTangent, El::NGP> with;  // what the modulus is built from
     bool valid = false;
   };
-  /// How an evaluation uses a PointUpdates: fills it, or takes its points from it where it holds `ue`.
-  enum class Memo { keep, reuse };
 
   /// f_e (and, when Ke is not null, the full tangent) at element displacements ue; stresses (if not null): the
   /// Cauchy stress σ = τ / J at every Gauss point. State as in SolidElement::tangent_and_force. False if inverted.
@@ -34,13 +37,13 @@ struct FiniteStrainElement {
                                 typename El::Stiffness* Ke, typename El::Dofs& fe,
                                 std::array<Stress6, El::NGP>* stresses = nullptr);
   /// The same from the reference geometry of the element (its gradients computed once: ElementGeometryCache).
-  /// With `memo`: its points kept (Memo::keep) or taken from it (Memo::reuse, where it holds ue; the trial state is
-  /// then the one written when it was kept).
+  /// With `memo`: its points kept (PointMemo::keep) or taken from it (PointMemo::reuse, where it holds ue; the trial
+  /// state is then the one written when it was kept).
   static bool tangent_and_force(const typename El::Geometry& reference, const Material& mat, Formulation f,
                                 const typename El::Dofs& ue, const double* committed, double* trial,
                                 typename El::Stiffness* Ke, typename El::Dofs& fe,
                                 std::array<Stress6, El::NGP>* stresses = nullptr, PointUpdates* memo = nullptr,
-                                Memo mode = Memo::keep);
+                                PointMemo mode = PointMemo::keep);
 };
 
 extern template struct FiniteStrainElement<2>;
