@@ -39,33 +39,46 @@ Assembler::Assembler(const Body& body, const DofMap& dofs) : body_(body), dofs_(
   const int d = m.dim, n = dofs.num_free();
   // pattern from the node graph: equations are node-major, so rows come out sorted
   const auto adj = node_adjacency(m);
-  std::vector<int> outer(static_cast<size_t>(n) + 1, 0), inner;
+  outer_.assign(static_cast<size_t>(n) + 1, 0);
   for (int node = 0; node < m.num_nodes(); ++node)
     for (int c = 0; c < d; ++c) {
       const int j = dofs.equation(node, c);
       if (j < 0) continue;
       for (int other : adj[node])
         for (int k = 0; k < d; ++k)
-          if (dofs.equation(other, k) >= 0) inner.push_back(dofs.equation(other, k));
-      outer[j + 1] = static_cast<int>(inner.size());
+          if (dofs.equation(other, k) >= 0) inner_.push_back(dofs.equation(other, k));
+      outer_[static_cast<size_t>(j) + 1] = static_cast<int>(inner_.size());
     }
-  pattern_.resize(n, n);
-  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
-  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + inner.size(), 0.0);
+}
+
+void Assembler::zero_matrix(SparseMatrix& K) const {
+  const auto n = static_cast<Eigen::Index>(outer_.size() - 1);
+  K.resize(n, n);
+  K.resizeNonZeros(static_cast<Eigen::Index>(inner_.size()));
+  std::copy(outer_.begin(), outer_.end(), K.outerIndexPtr());
+  std::copy(inner_.begin(), inner_.end(), K.innerIndexPtr());
+  std::fill(K.valuePtr(), K.valuePtr() + inner_.size(), 0.0);
 }
 
 void Assembler::element_slots(int e, int* eq, int* s) const {
   const Mesh& m = body_.mesh;
   const int d = m.dim, nd = m.nodes_per_elem() * d;
-  const int* outer = pattern_.outerIndexPtr();
-  const int* rows = pattern_.innerIndexPtr();
+  const int* outer = outer_.data();
+  const int* rows = inner_.data();
   element_equations(m, dofs_, e, eq);
   // a node's free dofs are consecutive equations, so consecutive in every column holding them: one search per node
-  // of the element and column, the node's other dofs following it (checked; searched where they do not)
+  // of the element and column, the node's other dofs following it (checked; searched where they do not). A node's
+  // columns share one pattern: a column after the node's first free one takes that column's slots, shifted.
   for (int jj = 0; jj < nd; ++jj) {
     const int j = eq[jj];
+    if (j > 0 && jj % d != 0 && eq[jj - 1] == j - 1) {
+      const int shift = outer[j] - outer[j - 1];
+      for (int ii = 0; ii < nd; ++ii) {
+        const int prev = s[(jj - 1) * nd + ii];
+        s[jj * nd + ii] = prev < 0 ? -1 : prev + shift;
+      }
+      continue;
+    }
     const int *begin = rows + (j < 0 ? 0 : outer[j]), *end = rows + (j < 0 ? 0 : outer[j + 1]);
     const int* at = begin;  // where the last node's dofs were found
     for (int ii = 0; ii < nd; ++ii) {
@@ -99,7 +112,7 @@ const int* Assembler::slots(int e) const {
 void Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix& K, Eigen::VectorXd& f_int) const {
   const Mesh& m = body_.mesh;
   const int nd = m.nodes_per_elem() * m.dim;
-  K = pattern_;
+  zero_matrix(K);
   f_int = Eigen::VectorXd::Zero(dofs_.num_free());
   double* val = K.valuePtr();
   std::vector<int> eq(static_cast<size_t>(nd)), own(static_cast<size_t>(nd) * nd);
@@ -265,7 +278,7 @@ int Assembler::assemble(const Eigen::VectorXd& u, SparseMatrix* K, Eigen::Vector
                         const Eigen::VectorXd* v, PointMemo memo) const {
   const Mesh& m = body_.mesh;
   const int nd = m.nodes_per_elem() * m.dim;
-  if (K) *K = pattern_;
+  if (K) zero_matrix(*K);
   f_int = Eigen::VectorXd::Zero(dofs_.num_free());
   double* val = K ? K->valuePtr() : nullptr;
   std::vector<int> eq(static_cast<size_t>(nd));

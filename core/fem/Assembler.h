@@ -54,7 +54,10 @@ class Assembler {
  private:
   const Body& body_;
   const DofMap& dofs_;
-  SparseMatrix pattern_;
+  std::vector<int> outer_, inner_;  // K_ff's pattern, compressed columns (values are not kept: a zero matrix is
+                                    // written where it is assembled, 9 MB fewer for a 32 x 16 x 8 block)
+  /// K := K_ff's pattern, all values zero.
+  void zero_matrix(SparseMatrix& K) const;
   /// Element e's equations into eq and the value index of each (i, j) of its matrix (or -1) into s.
   void element_slots(int e, int* eq, int* s) const;
   /// Element e's row of the scatter map, the map built on first use (a Newton run assembles many times).
