@@ -41,11 +41,24 @@ double at(const Mesh& m, const std::vector<double>& R, int width, int e,
   return v;
 }
 
+/// Per element: whether a node of it lies on the inflow face (its range of values then includes the virgin state).
+std::vector<char> at_inflow(const Mesh& m, const std::vector<int>& face) {
+  std::vector<char> on(static_cast<size_t>(m.num_nodes()), 0), out(static_cast<size_t>(m.num_elements()), 0);
+  for (int n : face) on[static_cast<size_t>(n)] = 1;
+  for (int e = 0; e < m.num_elements(); ++e)
+    for (int a = 0; a < m.nodes_per_elem(); ++a) out[static_cast<size_t>(e)] |= on[m.element(e)[a]];
+  return out;
+}
+
 template <int D>
 std::vector<double> advected(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,
                              int width, const Mesh& to, const MeshMotion& motion) {
   using E = SolidElement<D>;
-  const std::vector<double> R = recovered<D>(from, values, width);
+  std::vector<double> R = recovered<D>(from, values, width);
+  const std::vector<int> face = motion.inflow_face();
+  for (int n : face)  // the inflow boundary holds the virgin state, not the first elements' values extrapolated
+    std::fill_n(R.begin() + static_cast<long>(n) * width, width, 0.0);
+  const std::vector<char> inflow_element = at_inflow(from, face);
   const std::vector<Point3> points = integration_points(to);
   const PointLocator locator(from, x);
   std::vector<double> out(values.size());
@@ -64,11 +77,13 @@ std::vector<double> advected(const Mesh& from, const std::vector<Point3>& x, con
     const Eigen::Matrix<double, E::NN, 1> own = E::gauss_shape().row(static_cast<long>(i) % E::NGP).transpose();
     for (int c = 0; c < width; ++c) {
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for (int k : {place.element, e})
+      for (int k : {place.element, e}) {
         for (int q = 0; q < E::NGP; ++q) {
           const double v = values[(static_cast<size_t>(k) * E::NGP + q) * width + c];
           lo = std::min(lo, v), hi = std::max(hi, v);
         }
+        if (inflow_element[static_cast<size_t>(k)]) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
+      }
       const double moved = at<D>(from, R, width, place.element, here, c) - at<D>(from, R, width, e, own, c);
       value[c] = std::clamp(values[i * width + c] + moved, lo, hi);
     }

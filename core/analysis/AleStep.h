@@ -7,7 +7,8 @@
 // value its own point had and adds the change a continuous field through the old points (their values extrapolated
 // to the corners and averaged at the nodes) makes between where that point went and where the new point lies — a
 // point that did not move keeps its value, a constant field is carried exactly — clamped to the values of the two
-// elements involved (no new extremes); zero (virgin) where the motion says material flowed in. Interpolating the
+// elements involved (no new extremes); zero (virgin) where the motion says material flowed in, and the continuous
+// field zero on its inflow face (an inflow boundary: what stood at the entry is washed out). Interpolating the
 // old element's points alone (StateTransfer::transfer_points, a remesh's) carried no change to a point past its
 // element's points and diverged the 64 × 12 pass in 1 mm steps: the elastic strain's error is multiplied by E/σ_y ≈
 // 2000 in the stress. Quads and hexes; the same elements before and after.

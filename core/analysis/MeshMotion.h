@@ -21,6 +21,9 @@ class MeshMotion {
   /// Whether a point at `p` in the new mesh holds material that flowed in during the step, which the moving body's
   /// material at `current` (its nodes' positions after the step) does not cover: it starts virgin.
   virtual bool inflow(const std::array<double, 3>& p, const Positions& current) const = 0;
+  /// The nodes of the face its material flows in through: the advected state is the virgin one there (an inflow
+  /// boundary), so that what flows in washes the window's first elements (none: no such face).
+  virtual std::vector<int> inflow_face() const { return {}; }
   /// What the motion is, for the run's progress line ("the slab's mesh held from x = -189 to 126 mm").
   virtual std::string describe() const = 0;
 };

@@ -22,6 +22,7 @@ class RollingAle3d final : public MeshMotion {
   int body() const override { return slab_; }
   Positions placed(const std::vector<Positions>& current, const std::vector<char>& touching) const override;
   bool inflow(const std::array<double, 3>& p, const Positions& current) const override;
+  std::vector<int> inflow_face() const override { return entry_; }
   std::string describe() const override;
 
  private:

@@ -1,6 +1,7 @@
 // One ALE step's advection (analysis/AleStep): the state of a mesh whose material moved on is carried back onto the
-// mesh held in place — a constant field exactly, a step without a new extreme, virgin (zero) where material flowed in
-// — and a placement that would fold an element is refused with the body's name.
+// mesh held in place — a constant field exactly, a step without a new extreme, virgin (zero) where material flowed in,
+// and the inflow face holding the virgin state, which washes what stood at the entry out — and a placement that would
+// fold an element is refused with the body's name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -59,6 +60,40 @@ TEST(AleStep, AConstantFieldIsCarriedExactlyAndInflowIsVirgin) {
   }
   // the first column's points nearer the entry than the shift: x = 0.5 ∓ 0.5/√3 → only 0.211 < 0.3
   EXPECT_EQ(virgin, 3 * 2 * width);
+}
+
+TEST(AleStep, TheInflowFaceWashesTheFirstElementsOutToVirgin) {
+  const Mesh m = block();
+  struct Entry final : MeshMotion {  // Flow, with its entry face at x = 0 an inflow boundary
+    explicit Entry(const Mesh& mesh) : flow(0.3) {
+      for (int n = 0; n < mesh.num_nodes(); ++n)
+        if (mesh.nodes[static_cast<size_t>(n)][0] == 0.0) face.push_back(n);
+    }
+    int body() const override { return 0; }
+    Positions placed(const std::vector<Positions>& c, const std::vector<char>& t) const override {
+      return flow.placed(c, t);
+    }
+    bool inflow(const std::array<double, 3>& p, const Positions& c) const override { return flow.inflow(p, c); }
+    std::vector<int> inflow_face() const override { return face; }
+    std::string describe() const override { return "a block flowing in at x = 0"; }
+    Flow flow;
+    std::vector<int> face;
+  } entry(m);
+  std::vector<double> values(static_cast<size_t>(m.num_elements()) * kPoints, 0.7);
+  values = advected_points(m, moved(m, 0.3), values, 1, m, entry);
+  for (int e = 0; e < m.num_elements(); ++e)
+    for (int p = 0; p < kPoints; ++p) {
+      const double v = values[static_cast<size_t>(e * kPoints + p)];
+      EXPECT_GE(v, 0.0);
+      EXPECT_LE(v, 0.7);
+      if (e / 3 >= 2) EXPECT_EQ(v, 0.7) << "element " << e;  // beyond the face's reach (column e / 3): exactly
+    }
+  // the first column's points past the inflow take in virgin material: no longer the 0.7 that stood there
+  EXPECT_LT(values[1], 0.7);
+  for (int step = 1; step < 20; ++step) values = advected_points(m, moved(m, 0.3), values, 1, m, entry);
+  // 6 units of travel, the block's length: what stood in it has flowed out, what is left near the entry is virgin
+  for (int e = 0; e < 3; ++e)
+    for (int p = 0; p < kPoints; ++p) EXPECT_LT(values[static_cast<size_t>(e * kPoints + p)], 0.05) << e;
 }
 
 TEST(AleStep, AStepIsCarriedWithoutANewExtreme) {
