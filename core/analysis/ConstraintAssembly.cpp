@@ -9,20 +9,21 @@ BodyConstraints body_constraints(const std::vector<ConstraintRow>& rows,
   BodyConstraints out;
   for (size_t r = 0; r < rows.size(); ++r) {
     double rhs = rows[r].rhs;
-    bool free = false;
+    int first = -1;  // the body of the first free term
     for (const ConstraintTerm& term : rows[r].terms) {
       const DofMap& map = *dofs[term.body];
       const int eq = map.equation(term.node, term.comp);
       if (eq < 0) {
         rhs -= term.coef * map.prescribed(term.node, term.comp, load_factor);
       } else {
-        free = true;
+        if (first < 0) first = term.body;
         t[term.body].emplace_back(static_cast<int>(d.size()), eq, term.coef);
       }
     }
-    if (!free) continue;  // only prescribed dofs: nothing entered the blocks
+    if (first < 0) continue;  // only prescribed dofs: nothing entered the blocks
     d.push_back(rhs);
     out.kept.push_back(static_cast<int>(r));
+    out.slave_body.push_back(first);
   }
   const int m = static_cast<int>(d.size());
   out.d = Eigen::Map<Eigen::VectorXd>(d.data(), m);

@@ -15,6 +15,9 @@ struct BodyConstraints {
   std::vector<SparseMatrix> C;  // per body: rows × its free dofs
   Eigen::VectorXd d;
   std::vector<int> kept;  // kept[r]: the input row of constraint r (rows on prescribed dofs only are dropped)
+  // slave_body[r]: the body of its first free term — a contact row's slave (ContactConstraints writes the slave node
+  // first), or its master where every slave term is prescribed (a slave node on a symmetry plane, along its normal)
+  std::vector<int> slave_body;
   // per body, when set: what the multipliers add to the bodies' equations beyond Cᵀ (slipping Coulomb friction,
   // contact/Friction slip_coupling), rows × free dofs; empty: nothing (a symmetric system)
   std::vector<SparseMatrix> coupling;

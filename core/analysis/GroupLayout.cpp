@@ -214,9 +214,10 @@ void GroupLayout::set_contact(const BodyConstraints& contact) {
   }
   sys_.d = Eigen::VectorXd::Zero(mc + interface_rows_);
   sys_.d.head(mc) = contact.d;
-  ConstraintBlock glue{ConstraintKind::Glue, mc, mc + interface_rows_, Eigen::VectorXd(interface_rows_), redundant_};
+  ConstraintBlock glue{ConstraintKind::Glue, mc, mc + interface_rows_, Eigen::VectorXd(interface_rows_),
+                       redundant_,           {}};
   for (long r = 0; r < interface_rows_; ++r) glue.scaling[r] = interface_scaling_[r];
-  sys_.blocks = {ConstraintBlock{ConstraintKind::Contact, 0, mc, {}, false}, std::move(glue)};
+  sys_.blocks = {ConstraintBlock{ConstraintKind::Contact, 0, mc, {}, false, contact.slave_body}, std::move(glue)};
 }
 
 bool GroupLayout::set_compliant(const std::vector<ConstraintRow>& rows, const std::vector<double>& stiffness) {

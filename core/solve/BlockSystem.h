@@ -61,6 +61,9 @@ struct ConstraintBlock {
   long begin = 0, end = 0;  // rows [begin, end) of every group's C and of d
   Eigen::VectorXd scaling;  // per row, for preconditioners: 1/multiplicity on glue (empty: ones)
   bool redundant = false;   // glue: fully redundant (diagonal scaling) or not ((B Bᵀ)⁻¹)
+  // contact: per row, the body whose groups precondition it (the slave's, whose node the multiplier acts on; empty:
+  // every group the row touches) — see InterfacePreconditioner
+  std::vector<int> preconditioned_by;
 
   long size() const { return end - begin; }
 };

@@ -54,11 +54,13 @@ class BlockPreconditioner final : public InterfacePreconditioner {
       const Group& g = sys.groups[i];
       GroupBlocks& b = blocks_[i];
       if (spread_ && !spread_->holds(i)) return;  // its holder's (another process's K_g is not assembled here)
-      b.boundary = touched_dofs(g.C);
+      SparseMatrix WC = weights(sys, w, g.body).asDiagonal() * g.C;
+      WC.prune(0.0);
+      b.boundary = touched_dofs(WC);
       if (!b.boundary.empty()) {
         std::vector<int> all(static_cast<size_t>(g.C.rows()));
         for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-        b.WCb = w.asDiagonal() * select(g.C, all, b.boundary);
+        b.WCb = select(WC, all, b.boundary);
         b.WCbT = b.WCb.transpose();
         b.Kbb = select(g.K, b.boundary, b.boundary);
         if (dirichlet_) factor_interior(g, b);
@@ -109,6 +111,22 @@ class BlockPreconditioner final : public InterfacePreconditioner {
   }
 
  private:
+  /// The rows' weights for the groups of `body`: W, and a tenth of it (kOtherSideWeight) on the contact rows another
+  /// body preconditions. A node-to-segment row's multiplier acts on its slave node: the slave side's Schur complement
+  /// is what preconditions it, as a mortar method's non-mortar side does. With the master's added in full, the roll's
+  /// swamped the slab's in the gap and the rolling pass's interface iterations grew with the slab's subdomains
+  /// (docs/BENCHMARKS-PETSC.md, "Where the growth comes from"); left out entirely, the preconditioner lost the rank a
+  /// floating slave subdomain's singular Schur complement does not give, and CG broke down on the 3D pass.
+  static Eigen::VectorXd weights(const BlockSystem& sys, const Eigen::VectorXd& w, int body) {
+    Eigen::VectorXd out = w;
+    for (const ConstraintBlock& c : sys.blocks)
+      if (c.kind == ConstraintKind::Contact && static_cast<long>(c.preconditioned_by.size()) == c.size())
+        for (long r = 0; r < c.size(); ++r)
+          if (c.preconditioned_by[static_cast<size_t>(r)] != body) out[c.begin + r] *= kOtherSideWeight;
+    return out;
+  }
+  static constexpr double kOtherSideWeight = 0.1;
+
   /// S v = K_bb v − K_bi K_ii⁻¹ K_ib v (dirichlet), K_bb v (lumped)
   static Eigen::VectorXd schur(const GroupBlocks& b, const Eigen::VectorXd& v) {
     Eigen::VectorXd s = b.Kbb * v;

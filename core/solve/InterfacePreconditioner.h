@@ -1,6 +1,7 @@
 #pragma once
 // FETI preconditioners of the interface operator F = Σ_g C_g K_g⁺ C_gᵀ (beyond the paper, which ran
-// unpreconditioned): with W the multiplier scaling (1/multiplicity on subdomain glue rows, 1 on contact rows),
+// unpreconditioned): with W the multiplier scaling (1/multiplicity on subdomain glue rows; on a contact row 1 for
+// the groups of its slave body and 0.1 for the other side's — ConstraintBlock::preconditioned_by),
 //   lumped:    M⁻¹ = Σ_g W C_g K_g C_gᵀ W            (the group stiffness on its interface dofs)
 //   dirichlet: M⁻¹ = Σ_g W C_g S_g C_gᵀ W,  S_g = K_bb − K_bi K_ii⁻¹ K_ib   (Schur complement on the interface)
 // (Farhat, Mandel, Roux 1994; Rixen, Farhat 1999 for the scaling).
