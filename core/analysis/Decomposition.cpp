@@ -122,14 +122,16 @@ Eigen::VectorXd gather_free(const BodyDecomposition& dec, const std::vector<Eige
 
 std::vector<SparseMatrix> split_constraint_columns(const SparseMatrix& C_body, const BodyDecomposition& dec) {
   using Triplet = Eigen::Triplet<double, int>;
-  std::vector<std::pair<int, int>> owner(static_cast<size_t>(dec.body_free_dofs), {-1, -1});  // (subdomain, local)
-  for (size_t s = dec.subdomains.size(); s-- > 0;)  // the lowest subdomain writes last and wins
+  std::vector<std::vector<std::pair<int, int>>> copies(static_cast<size_t>(dec.body_free_dofs));  // (subdomain, local)
+  for (size_t s = 0; s < dec.subdomains.size(); ++s)
     for (size_t l = 0; l < dec.subdomains[s].free_dofs.size(); ++l)
-      owner[dec.subdomains[s].free_dofs[l]] = {static_cast<int>(s), static_cast<int>(l)};
+      copies[dec.subdomains[s].free_dofs[l]].push_back({static_cast<int>(s), static_cast<int>(l)});
   std::vector<std::vector<Triplet>> entries(dec.subdomains.size());
-  for (int j = 0; j < C_body.outerSize(); ++j)
+  for (int j = 0; j < C_body.outerSize(); ++j) {
+    const double share = 1.0 / static_cast<double>(copies[j].size());
     for (SparseMatrix::InnerIterator it(C_body, j); it; ++it)
-      entries[owner[j].first].emplace_back(it.row(), owner[j].second, it.value());
+      for (const auto& [s, l] : copies[j]) entries[s].emplace_back(it.row(), l, it.value() * share);
+  }
   std::vector<SparseMatrix> C(dec.subdomains.size());
   for (size_t s = 0; s < C.size(); ++s) {
     C[s].resize(C_body.rows(), dec.subdomains[s].dofs->num_free());

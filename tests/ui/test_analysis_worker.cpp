@@ -129,7 +129,7 @@ class TestAnalysisWorker : public QObject {
     // iteration
     connect(
         &worker, &AnalysisWorker::cgIterations, this, [&worker] { worker.cancel(); }, Qt::DirectConnection);
-    Project p = sample("block-indent-dd-2d-50x30.json");  // feti without preconditioner: hundreds of iterations
+    Project p = sample("block-indent-dd-2d-50x30.json");  // feti without preconditioner: about a hundred iterations
     p.data["solver"]["preconditioner"] = "none";
     p.data["solver"]["cg_tolerance"] = 1e-12;
     QVERIFY(worker.start(p));
@@ -156,7 +156,7 @@ class TestAnalysisWorker : public QObject {
     QVERIFY(worker.start(p));
     QVERIFY(finished.wait(60000));
     QCOMPARE(finished.at(1).at(0).value<RunOutcome>().status, QStringLiteral("converged"));
-    QVERIFY(iterations(cg).size() > 100);
+    QVERIFY(iterations(cg).size() > 50);  // far past the cancelled run's one
   }
 
   void cancel_mid_run_leaves_a_consistent_state() {

@@ -174,7 +174,12 @@ TEST(SubdomainDecomposition, AppendsToASystemWithOtherConstraints) {
   for (size_t s = 0; s < C.size(); ++s)
     Cu += C[s] * SparseMatrix(test::local_to_body(dec.subdomains[s], dofs.num_free()).transpose()) * probe;
   EXPECT_EQ(Cu, C_body * probe);
-  EXPECT_EQ(C[1].nonZeros(), 0);  // the cut's dofs go to the lowest subdomain's copy
+  // the cut's dofs are in both subdomains: each copy takes half of every coefficient
+  EXPECT_EQ(C[0].nonZeros(), rows);
+  EXPECT_EQ(C[1].nonZeros(), rows);
+  for (const SparseMatrix& part : C)
+    for (int j = 0; j < part.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(part, j); it; ++it) EXPECT_EQ(it.value(), 1.0);
 
   BlockSystem sys;
   Group other;
