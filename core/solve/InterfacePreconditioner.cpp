@@ -1,5 +1,6 @@
 #include "solve/InterfacePreconditioner.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "base/Parallel.h"
@@ -48,13 +49,14 @@ class BlockPreconditioner final : public InterfacePreconditioner {
       factor_glue(sys);
       w.segment(glue_.first, glue_.second).setOnes();  // (B Bᵀ)⁻¹ replaces the multiplicity weights
     }
+    const RowCopies copies = row_copies(sys);
     // independent per group: concurrently on the solver's threads, like the groups' own factorizations
     blocks_.resize(sys.groups.size());
     for_each_group(sys.groups.size(), threads_, [&](size_t i) {
       const Group& g = sys.groups[i];
       GroupBlocks& b = blocks_[i];
       if (spread_ && !spread_->holds(i)) return;  // its holder's (another process's K_g is not assembled here)
-      SparseMatrix WC = weights(sys, w, g.body).asDiagonal() * g.C;
+      SparseMatrix WC = weights(sys, w, copies, g.body).asDiagonal() * g.C;
       WC.prune(0.0);
       b.boundary = touched_dofs(WC);
       if (!b.boundary.empty()) {
@@ -111,18 +113,42 @@ class BlockPreconditioner final : public InterfacePreconditioner {
   }
 
  private:
-  /// The rows' weights for the groups of `body`: W, and a tenth of it (kOtherSideWeight) on the contact rows another
-  /// body preconditions. A node-to-segment row's multiplier acts on its slave node: the slave side's Schur complement
-  /// is what preconditions it, as a mortar method's non-mortar side does. With the master's added in full, the roll's
-  /// swamped the slab's in the gap and the rolling pass's interface iterations grew with the slab's subdomains
-  /// (docs/BENCHMARKS-PETSC.md, "Where the growth comes from"); left out entirely, the preconditioner lost the rank a
-  /// floating slave subdomain's singular Schur complement does not give, and CG broke down on the 3D pass.
-  static Eigen::VectorXd weights(const BlockSystem& sys, const Eigen::VectorXd& w, int body) {
+  /// Per contact row: how many groups of the body that preconditions it touch it, and how many of the others — the
+  /// copies of a node that subdomains share, each holding 1/k of the row's coefficient (split_constraint_columns).
+  struct RowCopies {
+    Eigen::VectorXd own, other;
+  };
+  static RowCopies row_copies(const BlockSystem& sys) {
+    RowCopies k{Eigen::VectorXd::Zero(sys.num_multipliers()), Eigen::VectorXd::Zero(sys.num_multipliers())};
+    for (const Group& g : sys.groups) {
+      std::vector<char> touched(static_cast<size_t>(g.C.rows()), 0);
+      for (int j = 0; j < g.C.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(g.C, j); it; ++it) touched[static_cast<size_t>(it.row())] = 1;
+      for (const ConstraintBlock& c : sys.blocks)
+        if (c.kind == ConstraintKind::Contact && static_cast<long>(c.preconditioned_by.size()) == c.size())
+          for (long r = 0; r < c.size(); ++r)
+            if (touched[static_cast<size_t>(c.begin + r)])
+              (c.preconditioned_by[static_cast<size_t>(r)] == g.body ? k.own : k.other)[c.begin + r] += 1;
+    }
+    return k;
+  }
+
+  /// The rows' weights for the groups of `body`. On a contact row: its slave side's groups in full, the other side's
+  /// at a tenth (kOtherSideWeight), each times the number of its groups the row touches. A node-to-segment row's
+  /// multiplier acts on its slave node: the slave side's Schur complement is what preconditions it, as a mortar
+  /// method's non-mortar side does. With the master's added in full, the roll's swamped the slab's in the gap and
+  /// the rolling pass's interface iterations grew with the slab's subdomains (docs/BENCHMARKS-PETSC.md, "Where the
+  /// growth comes from"); left out entirely, the preconditioner lost the rank a floating slave subdomain's singular
+  /// Schur complement does not give, and CG broke down on the 3D pass. A node that k subdomains share holds 1/k of
+  /// the row on each copy: k² (1/k)² Σ S_copy is the node's stiffness in all of them, as for a node in one.
+  static Eigen::VectorXd weights(const BlockSystem& sys, const Eigen::VectorXd& w, const RowCopies& copies, int body) {
     Eigen::VectorXd out = w;
     for (const ConstraintBlock& c : sys.blocks)
       if (c.kind == ConstraintKind::Contact && static_cast<long>(c.preconditioned_by.size()) == c.size())
-        for (long r = 0; r < c.size(); ++r)
-          if (c.preconditioned_by[static_cast<size_t>(r)] != body) out[c.begin + r] *= kOtherSideWeight;
+        for (long r = c.begin; r < c.end; ++r) {
+          const bool own = c.preconditioned_by[static_cast<size_t>(r - c.begin)] == body;
+          out[r] *= own ? std::max(1.0, copies.own[r]) : kOtherSideWeight * std::max(1.0, copies.other[r]);
+        }
     return out;
   }
   static constexpr double kOtherSideWeight = 0.1;

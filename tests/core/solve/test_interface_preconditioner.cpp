@@ -1,7 +1,7 @@
 // The FETI preconditioners of the interface (solve/InterfacePreconditioner): a contact row is preconditioned by the
-// groups of the body its block names (the slave's), the other side entering at a tenth; a row no body claims takes
-// every group it touches in full. Checked on the lumped preconditioner, whose blocks are K_bb: M⁻¹ e_r is then
-// Σ_g w_g² (C_g K_bb C_gᵀ)_rr exactly.
+// groups of the body its block names (the slave's), the other side entering at a tenth, a node shared by subdomains
+// with their stiffness together; a row no body claims takes every group it touches in full. Checked on the lumped
+// preconditioner, whose blocks are K_bb: M⁻¹ e_r is then Σ_g w_g² (C_g K_bb C_gᵀ)_rr exactly.
 #include <gtest/gtest.h>
 
 #include "solve/InterfacePreconditioner.h"
@@ -53,6 +53,13 @@ TEST(InterfacePreconditioner, AContactRowIsPreconditionedByItsSlaveSideTheMaster
   EXPECT_DOUBLE_EQ(apply_to_the_row(contact_pair({0})), 3.0 + 0.01 * 50.0);
   // the row claimed by the other body: the roles swap
   EXPECT_DOUBLE_EQ(apply_to_the_row(contact_pair({1})), 0.01 * 3.0 + 50.0);
+}
+
+TEST(InterfacePreconditioner, ARowOnANodeTwoSubdomainsShareWeighsTheirStiffnessTogether) {
+  // the slave node in two subdomains of body 0 (stiffness 3 and 5 there), each copy holding half of the row
+  BlockSystem sys = contact_pair({0});
+  sys.groups = {group(0, 3.0, 0.5), group(0, 5.0, 0.5), group(1, 50.0, -1.0)};
+  EXPECT_DOUBLE_EQ(apply_to_the_row(sys), 3.0 + 5.0 + 0.01 * 50.0);
 }
 
 TEST(InterfacePreconditioner, ARowNoBodyClaimsTakesEveryGroupInFull) {
