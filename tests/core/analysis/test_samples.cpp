@@ -74,9 +74,10 @@ void expect_close(const json& got, const json& want, const std::string& path, do
   }
 }
 
-class SampleTest : public testing::TestWithParam<std::string> {};
-
 }  // namespace
+
+// outside the anonymous namespace: the fixture of a TEST_P must not have internal linkage (GCC's -Wsubobject-linkage)
+class SampleTest : public testing::TestWithParam<std::string> {};
 
 void expect_same_displacements(const Model& model, const Results& a, const Results& b, double tol,
                                const std::string& what) {
