@@ -3,6 +3,7 @@
 // the Boolean-map algebra the tests check the extraction with.
 #include <Eigen/Sparse>
 #include <array>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,8 @@
 namespace rollsim::test {
 
 inline Model sample_model(const std::string& name) {
-  return build_model(load_project(std::string(ROLLSIM_SOURCE_DIR) + "/samples/" + name + ".json"));
+  // a path, not string concatenation: GCC 12 warned of a false overflow in `std::string&& + const char*` here
+  return build_model(load_project(std::filesystem::path(ROLLSIM_SOURCE_DIR) / "samples" / (name + ".json")));
 }
 
 /// Unit-element block nx × ny (× nz), E = 1000, nu = 0.3, no supports yet.
