@@ -2,6 +2,7 @@
 // component, two nodes, an edge or a face, in 2D (0..3) and 3D (0..6), and K R = 0 to round-off.
 #include <gtest/gtest.h>
 
+#include "../../common/FiniteBlock.h"
 #include "fem/Assembler.h"
 #include "mesh/StructuredBlock.h"
 #include "model/DofMap.h"
@@ -84,13 +85,7 @@ TEST(KernelBasis, ModeRowsAtChosenDofsAreTheBodysModes) {
 // stiffness_kernel: of a floating block's finite-strain tangent, all six geometric modes while it is unstressed,
 // the three translations once it is stretched (its rotations turn the internal forces: K R_rot ≠ 0).
 TEST(KernelBasis, AStressedFiniteStrainTangentKeepsOnlyTheTranslations) {
-  BlockSpec spec;
-  spec.dim = 3;
-  spec.n = {2, 2, 2};
-  Body body;
-  body.mesh = make_block(spec);
-  body.material = {1000.0, 0.3};
-  body.kinematics = Kinematics::Finite;
+  const Body body = testing_support::finite_block(3, {2, 2, 2});
   const DofMap dofs(body, 0, {});
   const Assembler assembler(body, dofs);
   auto kernel_at = [&](double stretch) {

@@ -6,6 +6,7 @@
 
 #include <limits>
 
+#include "../../common/FiniteBlock.h"
 #include "fem/Assembler.h"
 #include "mesh/StructuredBlock.h"
 #include "model/DofMap.h"
@@ -65,13 +66,7 @@ TEST(ElementGeometryCache, ABodyBeyondItsBudgetIsComputedEachTime) {
 // An Assembler whose body's reference nodes move between assemblies (as ALE moves them) assembles what a fresh
 // Assembler on the moved mesh does.
 TEST(ElementGeometryCache, AnAssemblyAfterTheMeshMovedIsThatOfTheMovedMesh) {
-  BlockSpec spec;
-  spec.dim = 2;
-  spec.n = {3, 2, 1};
-  Body body;
-  body.mesh = make_block(spec);
-  body.material = {1000.0, 0.3};
-  body.kinematics = Kinematics::Finite;
+  Body body = testing_support::finite_block(2, {3, 2, 1});
   const DofMap dofs(body, 0, {});
   const Assembler kept(body, dofs);
   Eigen::VectorXd u(body.mesh.num_nodes() * 2);
