@@ -125,10 +125,11 @@ std::vector<std::string> free_rigid_modes(const Model& model, int b) {
   for (Eigen::Index k = 0; k < V.cols(); ++k) {
     Eigen::Index dominant = 0;
     V.col(k).cwiseAbs().maxCoeff(&dominant);
-    if (dominant < dim)
-      names.push_back(std::string("translation along ") + axes[dominant]);
-    else
-      names.push_back(std::string("rotation about ") + (dim == 2 ? 'z' : axes[dominant - 3]));
+    const bool translation = dominant < dim;
+    const char axis = translation ? axes[dominant] : (dim == 2 ? 'z' : axes[dominant - 3]);
+    std::string name = translation ? "translation along " : "rotation about ";
+    name += axis;
+    names.push_back(name);
   }
   return names;
 }

@@ -239,7 +239,8 @@ double face_flux(const Mesh& slab, const std::vector<int>& face, const Eigen::Ve
       if (!std::all_of(nodes.begin(), nodes.end(), [&](int n) { return in[static_cast<size_t>(n)]; })) continue;
       std::vector<Eigen::Vector3d> x;
       double advance = 0;
-      for (int n : nodes) x.push_back(current(slab, u, n)), advance += u[n * slab.dim] / nodes.size();
+      for (int n : nodes)
+        x.push_back(current(slab, u, n)), advance += u[n * slab.dim] / static_cast<double>(nodes.size());
       const double measure = nodes.size() == 2 ? (x[1] - x[0]).norm() : 0.5 * (x[2] - x[0]).cross(x[3] - x[1]).norm();
       flux += measure * advance;
     }
