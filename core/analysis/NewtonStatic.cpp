@@ -611,14 +611,6 @@ Attempt NewtonRun::attempt(int increment, int attempt_no, double from, double lf
     if (!searched_again || !balanced) unmet = unmet_check(it);
     searched_again = false;
     if (unmet.empty()) {
-      // a frozen friction direction must oppose its point's slip where the step ends (Friction.h, release_frozen)
-      if (const int released = release_frozen(model_, body_displacements(lf), step_start_, pairs_); released > 0) {
-        unmet = "the residual ratio " + four_digits(relative) + " is within its tolerance " +
-                four_digits(opt_.tolerance) + ", but the friction check failed: " + std::to_string(released) +
-                " slipping points with a frozen friction direction do not slip against it";
-        changed = released;
-        continue;
-      }
       const ProjectionDrift drift =
           step_sliding_ ? projection_drift(model_, body_displacements(lf), pairs_) : ProjectionDrift{};
       if (drift.moved == 0) {

@@ -19,7 +19,8 @@ void add_point(PairState& s, const ContactPoint& c, bool active) {
   s.switches.push_back(0);
   s.contact_switches.push_back(0);
   s.slid.push_back(0.0);
-  s.slip_step.push_back(0.0);
+  s.trial_slip.push_back(0.0);
+  s.start_direction.push_back(Eigen::Vector3d::Zero());
 }
 }  // namespace
 
@@ -83,7 +84,8 @@ void carry(const PairState& from, size_t j, ContactPoint c, PairState& to) {
   to.switches.push_back(from.switches[j]);
   to.contact_switches.push_back(from.contact_switches[j]);
   to.slid.push_back(from.slid[j]);
-  to.slip_step.push_back(from.slip_step[j]);
+  to.trial_slip.push_back(from.trial_slip[j]);
+  to.start_direction.push_back(from.start_direction[j]);
 }
 }  // namespace
 

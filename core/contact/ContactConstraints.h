@@ -36,9 +36,12 @@ struct PairState {
   std::vector<int> switches;  // stick ↔ slip changes in the current step (a point that came back to slip stays)
   std::vector<int> contact_switches;  // in ↔ out changes in the current step (a point that came back in stays)
   std::vector<double> slid;           // tangential sliding accumulated over the converged steps [length]
-  // |v_t| of the slip over the step that set friction_dir (−v_t / |v_t|) at this iterate; 0 when the direction came
-  // from elsewhere (the force at the return onto the cone, or the last step): the direction's stiffness needs it
-  std::vector<double> slip_step;
+  // |δ d₀ − v_t| of the trial slip that set friction_dir at this iterate (contact/Friction.h); 0 when the direction
+  // came from elsewhere (the force at the return onto the cone, or the last step): the direction's stiffness needs it
+  std::vector<double> trial_slip;
+  // the friction direction where the step began (a point slipping then), or where the point began to slip in this
+  // step; zero for a point that sticks: the memory of the trial force (contact/Friction.h)
+  std::vector<Eigen::Vector3d> start_direction;
 };
 
 /// True for the kinds with tangential rows while they stick (sticking, coulomb).

@@ -1,6 +1,7 @@
 #include "contact/Friction.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace rollsim {
@@ -36,6 +37,9 @@ struct Overload {
   double ratio = std::numeric_limits<double>::max();
 };
 
+/// The least trial slip a slipping point's direction stiffness is taken at, as a fraction of its elastic slip.
+constexpr double kTrialFloor = 1e-3;
+
 bool any_sticks(const PairState& s) {
   for (size_t j = 0; j < s.points.size(); ++j)
     if (s.active[j] && !s.slip[j]) return true;
@@ -64,31 +68,25 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
         const Eigen::Vector3d f = m[i][j].tangential_force;
         if (f.norm() <= limit * (1 + 1e-9) || f.norm() == 0.0) continue;
         s.slip[j] = 1, s.friction_dir[j] = f.normalized();  // the return onto the cone keeps the direction
-        s.slip_step[j] = 0;
+        s.start_direction[j] = s.friction_dir[j], s.trial_slip[j] = 0;
         ++s.switches[j], ++changed;
         if (f.norm() / limit < least.ratio) least = {j, f.norm() / limit};
         continue;
       }
-      // slipping: the friction force opposes the slip over the step (backward Euler); a slip along the force means
-      // the point sticks where the step began. A point at the limit with next to no slip can chatter (stick, over
-      // μN, slip, along...): it gets one way back per step, then slips with the force against its slip — until its
-      // slip turns along the force once more, which freezes its direction for the rest of the step.
+      // slipping: the friction force points along the trial force δ d₀ − v_t (Friction.h). A trial force inside the
+      // cone sticks the point where the step began — once per step: a point at the limit with next to no slip could
+      // go round stick, over μN, slip, inside... at every iteration; the second time it slips on.
       const Eigen::Vector3d start = relative_position(p, c, u_start, model.dim);
       const Eigen::Vector3d v = tangential_part(relative_position(p, c, u, model.dim) - start, c.normal);
-      s.slip_step[j] = 0;
-      // a slip below the resolution has no direction (its turn −v_t/|v_t| would be round-off's): on the cone with
-      // next to no slip, any direction is Coulomb's, and the last one stays
-      if (v.norm() <= kSlipResolution * p.search_distance || s.switches[j] == kFrozenDirection) continue;
-      if (v.dot(s.friction_dir[j]) > 0 && s.switches[j] < 2) {
+      const double delta = elastic_slip(p, c, model.dim);
+      const Eigen::Vector3d trial = tangential_part(delta * s.start_direction[j], c.normal) - v;
+      if (trial.norm() < delta && s.switches[j] < 2) {
         s.slip[j] = 0, s.anchor[j] = start;
         ++s.switches[j], ++changed;
-      } else if (v.dot(s.friction_dir[j]) > 0 && s.switches[j] < kReleasedDirection) {
-        // it came back to slip and now slips along its force again: no slip against it holds this point (it
-        // would stick, but sticking needs more than μN). Turned over, μN would throw it to and fro with growing
-        // slips (3D rolling pass, docs/BENCHMARKS-ROLLING.md), so its direction stays for the rest of the step.
-        s.switches[j] = kFrozenDirection;
-      } else {
-        s.friction_dir[j] = -v.normalized(), s.slip_step[j] = v.norm();
+      } else if (trial.norm() > 0) {
+        // the direction's stiffness F / |trial| (FrictionStiffness) bounded where a point that slipped on keeps a
+        // trial force inside the cone
+        s.friction_dir[j] = trial.normalized(), s.trial_slip[j] = std::max(trial.norm(), kTrialFloor * delta);
       }
     }
     if (p.holds_slave && least.ratio < std::numeric_limits<double>::max() && !any_sticks(s)) {
@@ -99,25 +97,8 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
   return changed;
 }
 
-int release_frozen(const Model& model, const std::vector<Eigen::VectorXd>& u,
-                   const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs) {
-  int released = 0;
-  for (size_t i = 0; i < pairs.size(); ++i) {
-    const ContactPair& p = model.contacts[i];
-    PairState& s = pairs[i];
-    for (size_t j = 0; j < s.points.size(); ++j) {
-      if (!s.active[j] || !s.slip[j] || s.switches[j] != kFrozenDirection) continue;
-      const ContactPoint& c = s.points[j];
-      const Eigen::Vector3d v = tangential_part(
-          relative_position(p, c, u, model.dim) - relative_position(p, c, u_start, model.dim), c.normal);
-      if (v.norm() <= kSlipResolution * p.search_distance) continue;  // next to no slip: any direction on the cone
-      if (-v.normalized().dot(friction_direction(s, j)) >= 1 - kDirectionTolerance) continue;
-      s.friction_dir[j] = -v.normalized(), s.slip_step[j] = v.norm();
-      s.switches[j] = kReleasedDirection;
-      ++released;
-    }
-  }
-  return released;
+double elastic_slip(const ContactPair& p, const ContactPoint& c, int dim) {
+  return p.slip_tolerance * (dim == 3 ? std::sqrt(c.weight) : c.weight);
 }
 
 bool can_slip(const ContactPair& p) {
@@ -207,7 +188,9 @@ void new_step(std::vector<PairState>& pairs) {
   for (PairState& s : pairs) {
     std::fill(s.switches.begin(), s.switches.end(), 0);
     std::fill(s.contact_switches.begin(), s.contact_switches.end(), 0);
-    std::fill(s.slip_step.begin(), s.slip_step.end(), 0.0);  // the direction is the last step's
+    std::fill(s.trial_slip.begin(), s.trial_slip.end(), 0.0);  // the direction is the last step's
+    for (size_t j = 0; j < s.points.size(); ++j)
+      s.start_direction[j] = s.slip[j] ? friction_direction(s, j) : Eigen::Vector3d::Zero();
   }
 }
 

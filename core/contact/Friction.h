@@ -1,11 +1,20 @@
 #pragma once
 // Coulomb friction inside the Newton loop, with no inner contact loop: a sticking point holds its relative position
 // through tangential rows; after each solve, a point whose tangential force exceeds μ times its normal force slips
-// (its tangential rows go, and a friction force of exactly μ times the normal force of the last solve acts against
-// its relative motion, as a load on both bodies), and a slipping point whose motion turns along that force sticks
-// again. The bodies' stiffness blocks stay symmetric. A strategy that solves unsymmetric systems gets the friction
-// force's dependence on the normal multiplier in the multipliers' columns (slip_coupling); for the others the
-// friction force lags one iteration behind the normal force, and Newton's residual carries the difference.
+// (its tangential rows go, and a friction force of exactly μ times the normal force of the last solve acts on both
+// bodies as a load), and a slipping point whose trial force falls inside the cone sticks again.
+//
+// The friction force of a slipping point points along its trial force: the return map of Coulomb's law with an elastic
+// slip δ (the return map of elastoplastic friction in Wriggers's Computational Contact Mechanics; Abaqus's slip
+// tolerance), d = (δ d₀ − v_t) / |δ d₀ − v_t|, with v_t its slip over the step and d₀ its direction where the step
+// began (or where it began to slip in this step) — Coulomb's −v_t/|v_t| once the slip is large against δ, and d₀ while
+// it is small. δ = slip_tolerance × the point's facet size (√ of its tributary area in 3D, its tributary length in 2D).
+// A direction taken from the slip alone turned over at every iteration where a point slips next to nothing, and threw
+// it to and fro with growing slips (the 3D rolling pass with Coulomb friction diverged in its first millimetre;
+// docs/BENCHMARKS-ROLLING.md); the trial force's turns are bounded by δ, and so is its stiffness F / |δ d₀ − v_t|
+// (contact/FrictionStiffness). The bodies' stiffness blocks stay symmetric. A strategy that solves unsymmetric systems
+// gets the friction force's dependence on the normal multiplier in the multipliers' columns (slip_coupling); for the
+// others the friction force lags one iteration behind the normal force, and Newton's residual carries the difference.
 #include <vector>
 
 #include "contact/ContactConstraints.h"
@@ -14,12 +23,9 @@ namespace rollsim {
 
 /// Stick/slip update of the frictional pairs from the rows and multipliers of the last solve, the displacements
 /// now (u) and at the start of the step (u_start; every dof of every body, node-major). Records every active
-/// point's normal force, and a slipping point's slip over the step |v_t| beside the direction −v_t/|v_t| it sets
-/// (PairState::slip_step); returns the number of points that changed between stick and slip. A point that went back
-/// from slip to stick once in the step and slips again stays slipping for the rest of the step (no chatter); when its
-/// slip then turns along its friction force again, its direction is frozen for the rest of the step (PairState::
-/// switches = kFrozenDirection: no slip against any direction holds it, and a direction turned over at every
-/// iteration throws it to and fro with growing slips — the 3D rolling pass's entry and exit rows). A pair
+/// point's normal force, and a slipping point's trial slip |δ d₀ − v_t| beside the direction it sets
+/// (PairState::trial_slip); returns the number of points that changed between stick and slip. A point that went back
+/// from slip to stick once in the step and slips again stays slipping for the rest of the step (no chatter). A pair
 /// that holds its slave body (ContactPair::holds_slave) keeps the least overloaded of the points that would start to
 /// slip sticking when no other point sticks: with every point slipping nothing would hold the body (a rolling slab
 /// whose friction cannot draw it in: its tangential force then stays above the limit).
@@ -27,28 +33,12 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
                     const std::vector<Eigen::VectorXd>& u, const std::vector<Eigen::VectorXd>& u_start,
                     std::vector<PairState>& pairs);
 
-/// The slip over a step below which a slipping point's direction stays as it was, as a fraction of its pair's search
-/// distance: there −v_t/|v_t| would turn with round-off, and the direction's stiffness F/|v_t| grows without bound.
-constexpr double kSlipResolution = 1e-6;
-
-/// PairState::switches of a point whose friction direction is frozen for the rest of the step (update_friction).
-constexpr int kFrozenDirection = 3;
-
-/// PairState::switches of a point released from its frozen direction (release_frozen): it slips against its slip from
-/// then on, and is not frozen again within the step.
-constexpr int kReleasedDirection = 4;
-/// 1 − cos of the angle between a converged frozen direction and −v_t/|v_t| that release_frozen lets pass.
-constexpr double kDirectionTolerance = 1e-6;
-
-/// At a converged iterate: every frozen point (update_friction) whose slip over the step exceeds the resolution and
-/// does not oppose its friction force gets −v_t/|v_t| and slips on from
-/// there (kReleasedDirection) — a step does not end with a point slipping other than against its friction force.
-/// Returns how many were released.
-int release_frozen(const Model& model, const std::vector<Eigen::VectorXd>& u,
-                   const std::vector<Eigen::VectorXd>& u_start, std::vector<PairState>& pairs);
+/// The elastic slip δ of point c of pair p (slip_tolerance × its facet size) [length].
+double elastic_slip(const ContactPair& p, const ContactPoint& c, int dim);
 
 /// A step begins: every point may switch between stick and slip, in and out again (the chatter rules of
-/// update_friction and update_active_set); a slipping point's direction is the last step's (no slip_step).
+/// update_friction and update_active_set); a slipping point's direction is the last step's (no trial_slip), and the
+/// memory d₀ of its trial force.
 void new_step(std::vector<PairState>& pairs);
 
 /// A step converged: every active point of a unilateral pair adds the tangential part of its relative motion over

@@ -13,9 +13,9 @@ SlipDirectionRows slip_direction_rows(const Model& model, const std::vector<Pair
     const PairState& s = pairs[i];
     for (size_t j = 0; j < s.points.size(); ++j) {
       const Eigen::Vector3d d = friction_direction(s, j);
-      if (!s.active[j] || !s.slip[j] || !(s.slip_step[j] > 0) || d.norm() == 0.0) continue;
+      if (!s.active[j] || !s.slip[j] || !(s.trial_slip[j] > 0) || d.norm() == 0.0) continue;
       const ContactPoint& c = s.points[j];
-      const double k = slip_force(p, s.normal_force[j], c.weight) / s.slip_step[j];
+      const double k = slip_force(p, s.normal_force[j], c.weight) / s.trial_slip[j];
       if (!(k > 0)) continue;
       const Eigen::Vector3d w = c.normal.cross(d);  // P = w wᵀ: the tangent plane's direction across the slip
       ConstraintRow row;                            // wᵀR̃: the slave minus the master nodes by their weights

@@ -109,6 +109,9 @@ struct ContactPair {
   enum class Sliding { Small, Step, Iteration } sliding = Sliding::Small;
   double friction = 0;     // Coulomb's μ [-]
   double shear_limit = 0;  // sticking and coulomb: cap on the friction stress (0: none) [force / length^(dim−1)]
+  // a slipping point's elastic slip δ as a fraction of its facet size (contact/Friction.h: the direction of its
+  // friction force is that of its trial force) [-]
+  double slip_tolerance = 0.005;
   // the slave body has rigid modes its conditions leave free: this pair holds it, and friction keeps at least one of
   // its active points sticking (all slipping would leave the body free; see contact/Friction.h)
   bool holds_slave = false;

@@ -188,6 +188,9 @@ void check_friction(const json& c, const std::string& path, std::vector<Issue>& 
   if (type != "coulomb" && type != "sticking" && c.contains("shear_limit"))
     issues.push_back({path + ".shear_limit",
                       "only sticking and coulomb pairs have a friction stress limit (this pair is " + type + ")"});
+  if (c.contains("slip_tolerance") && type != "coulomb" && !(type == "sticking" && c.contains("shear_limit")))
+    issues.push_back({path + ".slip_tolerance", "only a pair whose points slip has an elastic slip (this pair is " +
+                                                    type + (type == "sticking" ? " without a shear_limit" : "") + ")"});
 }
 
 void check_contact(const json& c, const std::string& path, const json& bodies, int dim, std::vector<Issue>& issues) {
@@ -473,6 +476,7 @@ void add_contacts(Model& model, const json& d) {
                                   : ContactKind::Frictionless;
     p.friction = c.value("friction", 0.0);
     p.shear_limit = c.value("shear_limit", 0.0);
+    p.slip_tolerance = c.value("slip_tolerance", p.slip_tolerance);
     p.conductance = c.value("conductance", 0.0);
     p.friction_heat_to_slave = c.value("friction_heat_to_slave", p.friction_heat_to_slave);
     p.slave_body = find_named(d.at("bodies"), c.at("slave_body").get<std::string>());

@@ -174,6 +174,10 @@ const ObjectSchema& rolling_process_schema() {
          f.default_value = nullptr;
          return f;
        }(),
+       optional(number("slip_tolerance", "-", 0.005, 0, 0.1,
+                       "friction: coulomb only, default 0.005: the roll–slab pair's elastic slip as a fraction of a "
+                       "contact point's facet size (contacts[].slip_tolerance: a slipping point's friction force "
+                       "points along its trial force; smaller is nearer Coulomb's law)")),
        choice("sliding", {"large", "large_every_iteration"}, "large",
               "the roll–slab pair's large sliding (contacts[].sliding): searched where each step begins, or at every "
               "Newton iteration (then with the contact's geometric stiffness, analysis.contact_tangent)"),
@@ -336,6 +340,11 @@ void check_ignored(const json& project, std::vector<Issue>& issues) {
     issues.push_back(
         {"process.friction_coefficient", "has no effect with process.friction: " + p.at("friction").get<std::string>() +
                                              " (μ is Coulomb's: set process.friction to coulomb, or remove it)"});
+  if (p.contains("slip_tolerance") && p.at("friction") != "coulomb")
+    issues.push_back(
+        {"process.slip_tolerance", "has no effect with process.friction: " + p.at("friction").get<std::string>() +
+                                       " (only Coulomb's points slip: set process.friction to coulomb, "
+                                       "or remove it)"});
   if (p.contains("slab_flow_stress")) {
     if (p.at("slab_hardening").get<double>() > 0)
       issues.push_back({"process.slab_hardening",
@@ -617,6 +626,7 @@ json expand_rolling(const json& project) {
   const std::string friction = p.at("friction");
   out["contacts"].back()["type"] = friction;
   if (friction == "coulomb") out["contacts"].back()["friction"] = friction_coefficient(p);
+  if (p.contains("slip_tolerance")) out["contacts"].back()["slip_tolerance"] = p.at("slip_tolerance");
   // Coulomb's friction stress never exceeds the slab's shear yield stress k = σ_0/√3. Sticking has no cap: the slab's
   // surface layer, yielding in shear, is what limits it (a cap made the arc chatter between stick and slip)
   if (friction == "coulomb") out["contacts"].back()["shear_limit"] = pass_flow_stress(p) / std::sqrt(3.0);

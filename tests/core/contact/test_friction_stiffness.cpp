@@ -1,7 +1,8 @@
 // The friction direction's stiffness against central differences of the slipping points' friction loads: a block
 // on a base, every point slipping under Coulomb friction (μ 0.3) with its own normal force, both bodies moved at
-// random over the step so that each point slips its own way; the direction d = −v_t/|v_t| is set by update_friction
-// at each perturbed configuration, as Newton sets it. In 3D d turns with the slip, and the term is the exact
+// random over the step so that each point slips its own way; the direction of the trial force d = (δ d₀ − v_t) /
+// |δ d₀ − v_t| (−v_t/|v_t| where d₀ is zero) is set by update_friction at each perturbed configuration, as Newton sets
+// it. In 3D d turns with the slip, and the term is the exact
 // derivative −∂(friction loads)/∂u; in 2D d = ±t cannot turn and there is nothing to add.
 #include <gtest/gtest.h>
 
@@ -9,80 +10,21 @@
 #include <random>
 #include <tuple>
 
+#include "../../common/SlippingBlock.h"
 #include "contact/Friction.h"
 #include "contact/FrictionStiffness.h"
-#include "project/ModelBuilder.h"
-#include "project/Project.h"
 
 namespace test_friction_stiffness {
 
 using namespace rollsim;
-using json = nlohmann::json;
+using testing_support::Slipping;
+using testing_support::slipping;
 
 namespace {
 using Dof = std::tuple<int, int, int>;  // body, node, component
 using Matrix = std::map<std::pair<Dof, Dof>, double>;
 
-/// A 1 × 1 (× 1) block on a 2 × 2 (× 0.5) base, its bottom nodes inside the base's facets (weights away from 0, 1).
-Model block_on_base(int dim) {
-  const bool three = dim == 3;
-  const json base =
-      three ? json{{"type", "block"}, {"nx", 4},   {"ny", 4},   {"nz", 1},
-                   {"lx", 2.0},       {"ly", 2.0}, {"lz", 0.5}, {"origin", {0.0, 0.0, -0.5}}}
-            : json{{"type", "block"}, {"nx", 4}, {"ny", 1}, {"lx", 2.0}, {"ly", 0.5}, {"origin", {0.0, -0.5}}};
-  const json block =
-      three ? json{{"type", "block"}, {"nx", 2},   {"ny", 2},   {"nz", 1},
-                   {"lx", 1.0},       {"ly", 1.0}, {"lz", 0.5}, {"origin", {0.45, 0.55, 0.0}}}
-            : json{{"type", "block"}, {"nx", 2}, {"ny", 1}, {"lx", 1.0}, {"ly", 0.5}, {"origin", {0.45, 0.0}}};
-  const std::string top = three ? "zmax" : "ymax", bottom = three ? "zmin" : "ymin";
-  const json j = {
-      {"name", "block-on-base"},
-      {"dimension", dim},
-      {"materials", {{{"name", "m"}, {"E", 1000.0}, {"nu", 0.3}}}},
-      {"bodies",
-       {{{"name", "base"}, {"material", "m"}, {"mesh", base}},
-        {{"name", "block"}, {"material", "m"}, {"mesh", block}}}},
-      {"contacts",
-       {{{"name", "c"},
-         {"type", "coulomb"},
-         {"friction", 0.3},
-         {"slave_body", "block"},
-         {"slave_surface", bottom},
-         {"master_body", "base"},
-         {"master_surface", top},
-         {"search_distance", 0.1}}}},
-      {"boundary_conditions", {{{"type", "displacement"}, {"body", "base"}, {"set", bottom}, {"ux", 0.0}}}}};
-  return build_model(parse_project(j.dump(), "test.json"));
-}
-
-/// Every point active and slipping (for good: switches used up), its normal row's multiplier −(1 + 0.1 r).
-struct Slipping {
-  Model model;
-  std::vector<PairState> pairs;
-  std::vector<ConstraintRow> rows;
-  Eigen::VectorXd lambda;
-  std::vector<Eigen::VectorXd> start, u;  // the step's start (at rest) and the iterate, moved at random
-};
-
-Slipping slipping(int dim) {
-  Slipping s{block_on_base(dim), {}, {}, {}, {}, {}};
-  s.pairs = search_contacts(s.model);
-  PairState& p = s.pairs.at(0);
-  for (size_t j = 0; j < p.points.size(); ++j) p.active[j] = 1, p.slip[j] = 1, p.switches[j] = 2;
-  s.rows = contact_rows(s.model, s.pairs);
-  s.lambda.resize(static_cast<Eigen::Index>(s.rows.size()));
-  for (Eigen::Index r = 0; r < s.lambda.size(); ++r) s.lambda[r] = -1.0 - 0.1 * static_cast<double>(r);
-  std::mt19937 gen(11);
-  std::uniform_real_distribution<double> d(-0.01, 0.01);
-  for (const Body& b : s.model.bodies) {
-    s.start.push_back(Eigen::VectorXd::Zero(b.mesh.num_nodes() * dim));
-    s.u.emplace_back(b.mesh.num_nodes() * dim);
-    for (Eigen::Index i = 0; i < s.u.back().size(); ++i) s.u.back()[i] = d(gen);
-  }
-  return s;
-}
-
-/// The pairs after Newton's stick/slip update at u: each point's direction −v_t/|v_t| of its slip over the step.
+/// The pairs after Newton's stick/slip update at u: each point's direction that of its trial force.
 std::vector<PairState> updated(const Slipping& s, const std::vector<Eigen::VectorXd>& u) {
   std::vector<PairState> pairs = s.pairs;
   EXPECT_EQ(update_friction(s.model, s.rows, s.lambda, u, s.start, pairs), 0);  // every point keeps slipping
@@ -130,9 +72,8 @@ double largest(const Matrix& m) {
 }
 }  // namespace
 
-TEST(FrictionStiffness, In3DItIsTheExactDerivativeOfTheFrictionLoads) {
-  const Slipping s = slipping(3);
-  ASSERT_EQ(s.pairs[0].points.size(), 9u);
+/// The term of every slipping point against the differences of the friction loads, entry by entry.
+void expect_exact_derivative(const Slipping& s) {
   const Matrix fd = differences(s);
   const Matrix k = summed(slip_direction_stiffness(s.model, updated(s, s.u)));
   // μ N / |v_t| with |v_t| ~ 0.01: the direction turns, and without the term the tangent misses all of this
@@ -143,6 +84,21 @@ TEST(FrictionStiffness, In3DItIsTheExactDerivativeOfTheFrictionLoads) {
     EXPECT_NEAR(it == k.end() ? 0.0 : it->second, v, 1e-6 * scale);
   }
   for (const auto& [key, v] : k) EXPECT_TRUE(fd.count(key) || std::abs(v) < 1e-6 * scale);
+}
+
+TEST(FrictionStiffness, In3DItIsTheExactDerivativeOfTheFrictionLoads) {
+  const Slipping s = slipping(3);
+  ASSERT_EQ(s.pairs[0].points.size(), 9u);
+  expect_exact_derivative(s);
+}
+
+// With the memory d₀ of each point's trial force (its direction where the step began) of the size of its slip: the
+// direction then turns by (I − d dᵀ) / |δ d₀ − v_t|, not by 1 / |v_t|
+TEST(FrictionStiffness, In3DWithTheTrialForcesMemoryItIsTheExactDerivativeToo) {
+  Slipping s = slipping(3);
+  s.model.contacts[0].slip_tolerance = 0.05;  // δ 0.0125–0.025 against slips of up to 0.02
+  for (Eigen::Vector3d& d0 : s.pairs[0].start_direction) d0 = Eigen::Vector3d(0.6, 0.8, 0);
+  expect_exact_derivative(s);
 }
 
 TEST(FrictionStiffness, In3DItIsSymmetricPositiveSemidefiniteAndJoinsSlaveAndMaster) {

@@ -210,4 +210,35 @@ TEST(RollingPass, WholeWidthGivesTheHalfWidthPass) {
   EXPECT_NEAR(b.spread, a.spread, 1e-6 * 350);
 }
 
+// Coulomb friction in 3D (μ 0.3): a coarse pass (rigid roll) rolls its first 3 mm in 0.5 mm steps without a cut-back,
+// with a roll force and forward slip a little below the sticking pass's (friction that may slip holds less). A
+// friction direction taken from each point's slip alone threw the points that slip next to nothing to and fro: the
+// same pass diverged at 1 mm (contact/Friction.h, the trial force's direction).
+TEST(RollingPass, A3DPassWithCoulombFrictionRollsBelowTheStickingPass) {
+  nlohmann::json sticking = {{"name", "coulomb3d"},
+                             {"dimension", 3},
+                             {"process",
+                              {{"type", "rolling"},
+                               {"slab_nx", 16},
+                               {"slab_nw", 4},
+                               {"slab_nt", 2},
+                               {"roll", "rigid"},
+                               {"roll_n_around", 48},
+                               {"roll_n_axial", 2},
+                               {"travel", 3.0},
+                               {"travel_increment", 0.5}}}};
+  nlohmann::json coulomb = sticking;
+  coulomb["process"]["friction"] = "coulomb";
+  const testing_support::PassRun s = testing_support::run_pass(sticking), c = testing_support::run_pass(coulomb);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  ASSERT_EQ(c.increments.size(), 6u);
+  for (const IncrementResults& inc : c.increments) EXPECT_EQ(inc.cutbacks, 0);
+  const RollingIncrement &a = s.rolling->increments.back(), &b = c.rolling->increments.back();
+  EXPECT_LT(b.roll_force, a.roll_force);
+  EXPECT_GT(b.roll_force, 0.97 * a.roll_force);
+  EXPECT_LT(b.forward_slip, a.forward_slip);
+  EXPECT_GT(b.forward_slip, 0.5 * a.forward_slip);
+}
+
 }  // namespace test_rolling_pass
