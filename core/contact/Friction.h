@@ -5,12 +5,12 @@
 // bodies as a load), and a slipping point whose trial force falls inside the cone sticks again.
 //
 // The friction force of a slipping point points along its trial force: the return map of Coulomb's law with an elastic
-// slip δ (the return map of elastoplastic friction in Wriggers's Computational Contact Mechanics; Abaqus's slip
-// tolerance), d = (δ d₀ − v_t) / |δ d₀ − v_t|, with v_t its slip over the step and d₀ its direction where the step
-// began (or where it began to slip in this step) — Coulomb's −v_t/|v_t| once the slip is large against δ, and d₀ while
-// it is small. δ = slip_tolerance × the point's facet size (√ of its tributary area in 3D, its tributary length in 2D).
-// A direction taken from the slip alone turned over at every iteration where a point slips next to nothing, and threw
-// it to and fro with growing slips (the 3D rolling pass with Coulomb friction diverged in its first millimetre;
+// slip δ (elastoplastic friction as in Wriggers's Computational Contact Mechanics; Abaqus's slip tolerance), d = (δ d₀
+// − v_t) / |δ d₀ − v_t|, with v_t its slip over the step and d₀ its direction where the step began (or where it began
+// to slip in this step) — Coulomb's −v_t/|v_t| once the slip is large against δ, and d₀ while it is small. δ =
+// slip_tolerance × the point's facet size (√ of its tributary area in 3D, its tributary length in 2D). A direction
+// taken from the slip alone turned over at every iteration where a point slips next to nothing, and threw it to and fro
+// with growing slips (the 3D rolling pass with Coulomb friction diverged in its first millimetre;
 // docs/BENCHMARKS-ROLLING.md); the trial force's turns are bounded by δ, and so is its stiffness F / |δ d₀ − v_t|
 // (contact/FrictionStiffness). The bodies' stiffness blocks stay symmetric. A strategy that solves unsymmetric systems
 // gets the friction force's dependence on the normal multiplier in the multipliers' columns (slip_coupling); for the

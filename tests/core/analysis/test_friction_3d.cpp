@@ -5,8 +5,8 @@
 // `direct` and `mixed` then took 13, 13, 17 Newton iterations over the sliding steps 3–5, against 9, 8, 11 with
 // `full`, and on the 3D rolling pass Newton stalled (docs/BENCHMARKS-ROLLING.md, "Coulomb friction in 3D"). Now
 // `direct` takes it into its global matrix and `mixed` as compliant interface rows (BlockSystem::compliance): both
-// match `full`. Every point slides: the contact carries μ N, with no point left slipping across its force (a frozen
-// direction is released where Newton converges).
+// match `full`. Every point slides: the contact carries μ N, each point's force along its trial force (contact/
+// Friction.h), against its slip once it has slid far against the elastic slip.
 #include <gtest/gtest.h>
 
 #include "../../common/RunJson.h"
