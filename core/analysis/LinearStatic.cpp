@@ -44,6 +44,7 @@ struct DriverState {
   /// One linear solve with the active set as it stands, at load factor `lf`.
   RunStatus solve_once(double lf) {
     rows = contact_rows(model, pairs);
+    hold_supported_tangents(rows, layout.body_dofs());
     contact = body_constraints(rows, layout.body_dofs(), lf);
     layout.set_contact(contact);
     check_floating_groups_held(layout.system());

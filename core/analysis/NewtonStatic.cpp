@@ -228,6 +228,7 @@ void NewtonRun::set_constraints(double lf, bool step_begins) {
   search_again_ = false;
   if (iteration_sliding_) follow_contacts(model_, body_displacements(lf), pairs_, ContactPair::Sliding::Iteration);
   rows_ = contact_rows(model_, pairs_);
+  hold_supported_tangents(rows_, layout_.body_dofs());
   contact_ = body_constraints(rows_, layout_.body_dofs(), lf);
   if (couple_slip_) add_coupling(slip_coupling(model_, pairs_, rows_), layout_.body_dofs(), contact_);
   layout_.set_contact(contact_);

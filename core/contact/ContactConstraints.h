@@ -16,6 +16,10 @@ struct ConstraintTerm {
   double coef;
 };
 
+/// ConstraintRow::comp of a sticking point's one tangential row along n × e, where the supports hold its motion along
+/// the axis e on both sides (analysis/ConstraintAssembly hold_supported_tangents).
+constexpr int kSupportedTangent = 2;
+
 struct ConstraintRow {
   std::vector<ConstraintTerm> terms;
   double rhs = 0;

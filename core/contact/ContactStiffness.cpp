@@ -115,6 +115,8 @@ Matrix15 face_term(const ContactPair& p, const PairState& s, const ConstraintRow
   Matrix15 M;
   if (row.comp < 0) {
     M = f.R.transpose() * dn;
+  } else if (row.comp == kSupportedTangent) {
+    return Matrix15::Zero();  // along n × e (a supported axis e): its turn is left out
   } else {
     const double l1 = f.a[0].norm();
     const Eigen::Vector3d t1 = f.a[0] / l1;

@@ -644,6 +644,10 @@ json expand_rolling(const json& project) {
     // the whole width: the centre line (y = 0 on the mid-plane) holds the slab's sideways motion and yaw
     bcs.push_back(
         {{"type", "symmetry"}, {"body", "slab"}, {"set", half_width(p) ? "ymin" : "centre_line"}, {"normal", "y"}});
+    // and half the roll: its barrel's centre plane stays in place as the slab's does (left free, the cut face bulged
+    // sideways under the arc's pressure: the half-width pass was not the whole width's)
+    if (half_width(p) && p.at("roll") != "rigid")
+      bcs.push_back({{"type", "symmetry"}, {"body", "roll"}, {"set", "ymin"}, {"normal", "y"}});
   }
   bcs.push_back(hub);
   out["analysis"]["increments"] =
