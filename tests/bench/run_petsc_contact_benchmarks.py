@@ -7,8 +7,8 @@ Usage: tests/bench/run_petsc_contact_benchmarks.py [--build DIR] [--out FILE] [-
   --ranks     MPI ranks of the mumps runs (default 1,2,4,8; above 2 oversubscribed on this 2-core machine)
   --repeats   runs of each 2D case whose median wall time is quoted (default 3)
   --with-3d   also the 3D pass 16 x 8 x 4 (samples/rolling-3d-16x8x4.json: about 10 min per run), on 2 ranks
-  --sections  cases,subdomains,weak (default: all): the three 2D passes, the 72 x 12 slab in 1-8 subdomains, a slab
-              grown with its subdomains (18 x 12 elements each)
+  --sections  cases,subdomains,weak,weak3d (default: the first three): the three 2D passes, the 72 x 12 slab in 1-8
+              subdomains, a slab grown with its subdomains (18 x 12 elements each; weak3d: the 3D slab, 8 x 8 x 4 each)
 
 Each case runs under `direct` in one process (the reference), under the sample's own mode in one process, and under
 `mpirun -n N --oversubscribe rollsim run --solver petsc --petsc-method mumps | mixed` for every N (mixed: up to the
@@ -153,19 +153,34 @@ def subdomains(runner, lines, counts, repeats):
                 s["results"]["rolling"]["roll_force"], statistics.median(r[2] for r in runs), rss))
 
 
-def weak(runner, lines, counts, repeats):
-    """Weak scaling: every slab subdomain 18 x 12 elements, the slab 18 P x 12 in P subdomains along the rolling
-    direction (the mesh refined lengthwise as P grows), P + 1 ranks: interface iterations per Newton iteration."""
-    log("weak")
-    lines += ["", "### Weak scaling: slab 18 P x 12 in P subdomains of 18 x 12, P + 1 ranks (10 mm of travel)", "",
+# Weak scaling: the slab refined lengthwise with its subdomains, P + 1 ranks (the roll on one of them). Per family:
+# its title, sample, the options for P, and the preconditioner variants run.
+WEAK_FAMILIES = {
+    "weak": ("Weak scaling: slab 18 P x 12 in P subdomains of 18 x 12, P + 1 ranks (10 mm of travel)",
+             "rolling-2d-72x12-dd.json",
+             lambda p: ["--set", "process.slab_partition=%dx1" % p, "--set", "process.slab_nx=%d" % (18 * p)],
+             ([], ["--preconditioner", "dirichlet"])),
+    "weak3d": ("Weak scaling in 3D: slab 8 P x 8 x 4 (half width) in P x 1 x 1 subdomains of 8 x 8 x 4, P + 1 ranks "
+               "(2 mm of travel in 0.5 mm steps)",
+               "rolling-3d-16x8x4.json",
+               lambda p: ["--set", "process.slab_partition=%dx1x1" % p, "--set", "process.slab_nx=%d" % (8 * p),
+                          "--set", "process.travel=2"],
+               (["--preconditioner", "dirichlet"],)),
+}
+
+
+def weak(runner, lines, family, counts, repeats):
+    """Interface iterations per Newton iteration of the mixed method as the slab and its subdomains grow together."""
+    title, sample, options, variants = WEAK_FAMILIES[family]
+    log(family)
+    lines += ["", "### " + title, "",
               "| P | ranks | dofs | method | status | Newton iterations | interface CG per Newton iteration "
               "| factorizations: rank max / min | roll force | wall s (median of %d) |" % repeats,
               "|---|---|---|---|---|---|---|---|---|---|"]
     failures = []
     for p in counts:
-        extra = ["--set", "process.slab_partition=%dx1" % p, "--set", "process.slab_nx=%d" % (18 * p)]
-        for more in ([], ["--preconditioner", "dirichlet"]):
-            runs = [runner.run("rolling-2d-72x12-dd.json", extra + more, "mixed", p + 1) for _ in range(repeats)]
+        for more in variants:
+            runs = [runner.run(sample, options(p) + more, "mixed", p + 1) for _ in range(repeats)]
             s, _, _, _ = runs[0]
             lines.append("| %d | %d | %d | %s | %s | %d | %s | %s | %.10g | %.2f |" % (
                 p, p + 1, s["model"]["dofs"], "mixed" + (", Dirichlet" if more else ""), s["status"],
@@ -201,8 +216,9 @@ def main():
                 case(runner, lines, title, sample, extra, own, ranks, a.repeats)
         if "subdomains" in sections:
             subdomains(runner, lines, [1, 2, 4, 8], a.repeats)
-        if "weak" in sections:
-            weak(runner, lines, [1, 2, 4, 8], a.repeats)
+        for family in ("weak", "weak3d"):
+            if family in sections:
+                weak(runner, lines, family, [1, 2, 4, 8], a.repeats)
         if a.with_3d:
             case(runner, lines, *CASE_3D, [2], 1)
     with open(a.out, "w") as f:
