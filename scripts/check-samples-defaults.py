@@ -42,6 +42,10 @@ def cases(names, cap):
             continue
         d = json.loads(f.read_text())
         d.pop("solver", None)
+        for body in d.get("bodies", []):  # the copy runs from a temporary file: a mesh file named from the sample's
+            mesh = body.get("mesh", {})    # folder is named absolutely
+            if "file" in mesh and not Path(mesh["file"]).is_absolute():
+                mesh["file"] = str(f.parent / mesh["file"])
         note = ""
         p = d.get("process")
         if p and cap and p.get("travel", 100) > cap:
