@@ -7,8 +7,9 @@ Usage: tests/bench/run_petsc_contact_benchmarks.py [--build DIR] [--out FILE] [-
   --ranks     MPI ranks of the mumps runs (default 1,2,4,8; above 2 oversubscribed on this 2-core machine)
   --repeats   runs of each 2D case whose median wall time is quoted (default 3)
   --with-3d   also the 3D pass 16 x 8 x 4 (samples/rolling-3d-16x8x4.json: about 10 min per run), on 2 ranks
-  --sections  cases,subdomains,weak,weak3d (default: the first three): the three 2D passes, the 72 x 12 slab in 1-8
-              subdomains, a slab grown with its subdomains (18 x 12 elements each; weak3d: the 3D slab, 8 x 8 x 4 each)
+  --sections  cases,subdomains,weak,weak3d,weaklong,weak3dlong (default: the first three): the three 2D passes, the
+              72 x 12 slab in 1-8 subdomains, a slab refined with its subdomains (18 x 12 elements each; weak3d: the
+              3D slab, 8 x 8 x 4 each), or made longer with them (weaklong, weak3dlong: the sample's elements)
 
 Each case runs under `direct` in one process (the reference), under the sample's own mode in one process, and under
 `mpirun -n N --oversubscribe rollsim run --solver petsc --petsc-method mumps | mixed` for every N (mixed: up to the
@@ -166,6 +167,20 @@ WEAK_FAMILIES = {
                lambda p: ["--set", "process.slab_partition=%dx1x1" % p, "--set", "process.slab_nx=%d" % (8 * p),
                           "--set", "process.travel=2"],
                (["--preconditioner", "dirichlet"],)),
+    # the slab made longer with its subdomains, its elements as they are: every rank the same subdomain, the contact
+    # zone the same pass (the families above refine the slab lengthwise and change the pass with P)
+    "weaklong": ("Weak scaling, longer slab: slab 150 P mm long, 36 P x 12 (the sample's elements), in P subdomains "
+                 "of 36 x 12, P + 1 ranks (10 mm of travel)",
+                 "rolling-2d-72x12-dd.json",
+                 lambda p: ["--set", "process.slab_partition=%dx1" % p, "--set", "process.slab_nx=%d" % (36 * p),
+                            "--set", "process.slab_length=%d" % (150 * p)],
+                 ([], ["--preconditioner", "dirichlet"])),
+    "weak3dlong": ("Weak scaling in 3D, longer slab: slab 150 P mm long, 8 P x 8 x 4 (the sample's elements), in "
+                   "P x 1 x 1 subdomains of 8 x 8 x 4, P + 1 ranks (2 mm of travel in 0.5 mm steps)",
+                   "rolling-3d-16x8x4.json",
+                   lambda p: ["--set", "process.slab_partition=%dx1x1" % p, "--set", "process.slab_nx=%d" % (8 * p),
+                              "--set", "process.slab_length=%d" % (150 * p), "--set", "process.travel=2"],
+                   (["--preconditioner", "dirichlet"],)),
 }
 
 
@@ -216,7 +231,7 @@ def main():
                 case(runner, lines, title, sample, extra, own, ranks, a.repeats)
         if "subdomains" in sections:
             subdomains(runner, lines, [1, 2, 4, 8], a.repeats)
-        for family in ("weak", "weak3d"):
+        for family in WEAK_FAMILIES:
             if family in sections:
                 weak(runner, lines, family, [1, 2, 4, 8], a.repeats)
         if a.with_3d:
