@@ -1,6 +1,8 @@
 // The contact search on a convex master: a slave node in a vertex's region — under the roll's lowest node, where
 // neither neighbouring segment's own projection reaches — is found at that vertex (it used to drop out of contact);
-// a node beyond the end of an open master surface is still ignored. Restricting the candidate facets to those whose
+// a node beyond the end of an open master surface is still ignored; a node on a vertex two segments share gets the
+// same segment whichever side of the vertex round-off puts it (the 3D pass converged to two states 3.4e-5 apart when
+// a node on a roll edge took either facet). Restricting the candidate facets to those whose
 // bounding box is within reach (FacetCandidates::Boxes) finds the same points as projecting on every facet, on these
 // cases and on every sample's contact pairs.
 #include <gtest/gtest.h>
@@ -17,11 +19,11 @@ namespace test_contact_search {
 using namespace rollsim;
 
 namespace {
-Mesh slab_under(double top) {
+Mesh slab_under(double top, double shift = 0) {
   BlockSpec s;
   s.n = {2, 1, 1};
   s.size = {1.0, 1.0, 1.0};
-  s.origin = {-0.5, top - 1.0, 0.0};
+  s.origin = {-0.5 + shift, top - 1.0, 0.0};
   return make_block(s);
 }
 }  // namespace
@@ -103,6 +105,21 @@ TEST(ContactSearch, BoundingBoxesFindTheSamePointsOnEverySamplesPairs) {
     }
   }
   EXPECT_EQ(pairs, 7);
+}
+
+TEST(ContactSearch, ANodeOnAVertexGetsTheSameSegmentOnEitherSideOfItsRoundOff) {
+  AnnulusSpec ring;
+  ring.cx = 0, ring.cy = 10, ring.inner_radius = 2, ring.outer_radius = 5, ring.n_radial = 1, ring.n_around = 24;
+  const Mesh roll = make_annulus(ring);
+  std::vector<std::vector<int>> masters;
+  for (double shift : {-1e-13, 1e-13}) {  // the slab's middle top node on the lowest vertex (0, 5), a hair left, right
+    const Mesh slab = slab_under(5.0, shift);
+    for (const ContactPoint& c :
+         find_contact_points(slab, slab.surfaces.at("ymax"), roll, roll.surfaces.at("outer"), 1.0))
+      if (std::abs(slab.nodes[static_cast<size_t>(c.slave_node)][0]) < 1e-12) masters.push_back(c.master_nodes);
+  }
+  ASSERT_EQ(masters.size(), 2u);
+  EXPECT_EQ(masters[0], masters[1]);
 }
 
 }  // namespace test_contact_search
