@@ -211,7 +211,8 @@ bool face_line(const std::vector<int>& face, const std::vector<Point>& x, const 
 std::vector<Point> fold_onto_faces(const Boundary& bd, const std::vector<std::vector<int>>& faces,
                                    std::vector<Point> x) {
   Point centre{0, 0, 0};
-  for (const Point& p : x) centre = {centre[0] + p[0] / x.size(), centre[1] + p[1] / x.size(), 0.0};
+  const double count = static_cast<double>(x.size());
+  for (const Point& p : x) centre = {centre[0] + p[0] / count, centre[1] + p[1] / count, 0.0};
   for (const std::vector<int>& face : faces) {
     Point on, n;
     if (face.size() < 2 || !face_line(face, x, centre, on, n)) continue;

@@ -14,6 +14,14 @@ namespace test_bad_input {
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
+/// A bad project, and what its message must name (outside the anonymous namespace: the TEST_P fixture's parameter).
+struct Case {
+  std::string name;
+  std::function<std::string()> text;
+  std::string where;
+  std::string reason;
+};
+
 namespace {
 
 // Valid 2D project; every kind of condition, so that each has a path to break. Line 3 holds the material.
@@ -58,12 +66,6 @@ const json kRoundBar = {{"type", "round_bar"}, {"radius", 1}, {"length", 4},
 
 /// One bad project: its text, where the message must point (a JSON path, "line L..." or "" for the whole file)
 /// and a fragment of the reason.
-struct Case {
-  std::string name;
-  std::function<std::string()> text;
-  std::string where;
-  std::string reason;
-};
 
 using Edit = std::function<void(json&)>;
 
@@ -446,11 +448,11 @@ std::string test_name(std::string n) {
   return n;
 }
 
+}  // namespace
+
 class BadInput : public testing::TestWithParam<Case> {};
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
-
-}  // namespace
 
 TEST_P(BadInput, ExitTwoNamingWhereAndWhyWritingNothing) {
   const Case& c = GetParam();

@@ -90,8 +90,9 @@ TEST(NewtonRun, NoEquilibriumIsDivergedWithExitCode4) {
   ASSERT_FALSE(r.summary["increments"].empty()) << "the case must converge an increment before it diverges";
   const std::string last = read_text(r.out + "/last_converged.vtu");
   EXPECT_TRUE(contains(last, "Name=\"load_factor\"")) << last.substr(0, 2000);
-  if (r.summary["increments"].size() > 1)  // and every converged increment, for ParaView to step through
+  if (r.summary["increments"].size() > 1) {  // and every converged increment, for ParaView to step through
     EXPECT_EQ(count(read_text(r.out + "/results.pvd"), "<DataSet "), r.summary["increments"].size());
+  }
 }
 
 TEST(NewtonRun, BadPlasticityInputIsRefusedWithItsPath) {

@@ -307,10 +307,10 @@ void expect_rolls_as(const std::string& dir, const std::string& project, const s
       EXPECT_EQ(s["solver"]["factorizations"], d["solver"]["factorizations"]) << n;
       long total = 0, per_rank = 0;  // and per rank: every group on one rank, g mod n
       for (const auto& f : s["solver"]["factorizations"]) total += f.get<long>();
-      for (const auto& r : s["solver"]["ranks"]["per_rank"]) per_rank += r["factorizations"].get<long>();
+      for (const auto& rank : s["solver"]["ranks"]["per_rank"]) per_rank += rank["factorizations"].get<long>();
       EXPECT_EQ(per_rank, total) << n;
       EXPECT_EQ(s["solver"]["ranks"]["per_rank"].size(), static_cast<size_t>(n));
-      for (const auto& r : s["solver"]["ranks"]["per_rank"]) EXPECT_GT(r["factorize_s"].get<double>(), 0.0) << n;
+      for (const auto& rank : s["solver"]["ranks"]["per_rank"]) EXPECT_GT(rank["factorize_s"].get<double>(), 0.0) << n;
     }
     EXPECT_GT(s["results"]["rolling"]["roll_force"].get<double>(), 1000.0) << n;  // the slab is being rolled
     EXPECT_LT(relative_difference(expected, rolling_csv(out)), tolerance) << n << " ranks";
