@@ -82,8 +82,9 @@ void hold_supported_tangents(std::vector<ConstraintRow>& rows, const std::vector
         !of_point(r + 1) || !of_point(r + 2))
       continue;
     const int axis = supported_axis(rows[r + 1], dofs);
-    const Eigen::Vector3d q = rows[r].dir.cross(Eigen::Vector3d::Unit(std::max(axis, 0)));
-    if (axis < 0 || q.norm() < 0.5) continue;  // nothing held, or held along the normal
+    if (axis < 0) continue;  // nothing held
+    const Eigen::Vector3d q = rows[r].dir.cross(Eigen::Vector3d::Unit(axis));
+    if (q.norm() < 0.5) continue;  // held along the normal: both tangents are free
     const Eigen::Vector3d q1 = q.normalized();
     ConstraintRow t = combined(q1.dot(rows[r + 1].dir), rows[r + 1], q1.dot(rows[r + 2].dir), rows[r + 2]);
     t.dir = q1, t.comp = kSupportedTangent;
