@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -41,6 +42,20 @@ double at(const Mesh& m, const std::vector<double>& R, int width, int e,
   return v;
 }
 
+/// How far across element e (its nodes at `x`) a point moving by d has gone: |d| over the element's extent along d,
+/// at most 1.
+double crossed(const Mesh& m, const std::vector<Point3>& x, int e, const Point3& d) {
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (length == 0) return 0;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int a = 0; a < m.nodes_per_elem(); ++a) {
+    const Point3& p = x[static_cast<size_t>(m.element(e)[a])];
+    const double t = (p[0] * d[0] + p[1] * d[1] + p[2] * d[2]) / length;
+    lo = std::min(lo, t), hi = std::max(hi, t);
+  }
+  return std::min(1.0, length / (hi - lo));
+}
+
 /// Per element: whether a node of it lies on the inflow face (its range of values then includes the virgin state).
 std::vector<char> at_inflow(const Mesh& m, const std::vector<int>& face) {
   std::vector<char> on(static_cast<size_t>(m.num_nodes()), 0), out(static_cast<size_t>(m.num_elements()), 0);
@@ -61,6 +76,9 @@ std::vector<double> advected(const Mesh& from, const std::vector<Point3>& x, con
   const std::vector<char> inflow_element = at_inflow(from, face);
   const std::vector<Point3> points = integration_points(to);
   const PointLocator locator(from, x);
+  Mesh moved = from;
+  moved.nodes = x;
+  const std::vector<Point3> went = integration_points(moved);  // where each old point's material is now
   std::vector<double> out(values.size());
   for (size_t i = 0; i < points.size(); ++i) {
     const auto value = out.begin() + static_cast<long>(i * width);
@@ -75,6 +93,8 @@ std::vector<double> advected(const Mesh& from, const std::vector<Point3>& x, con
     Eigen::Matrix<double, D, E::NN> dN;
     E::shape_at(xi, here, dN);
     const Eigen::Matrix<double, E::NN, 1> own = E::gauss_shape().row(static_cast<long>(i) % E::NGP).transpose();
+    const Point3 d{went[i][0] - points[i][0], went[i][1] - points[i][1], went[i][2] - points[i][2]};
+    const double kept = 1.0 - crossed(from, x, e, d);  // of the point's own part, what stays in its element
     for (int c = 0; c < width; ++c) {
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for (int k : {place.element, e}) {
@@ -84,8 +104,8 @@ std::vector<double> advected(const Mesh& from, const std::vector<Point3>& x, con
         }
         if (inflow_element[static_cast<size_t>(k)]) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
       }
-      const double moved = at<D>(from, R, width, place.element, here, c) - at<D>(from, R, width, e, own, c);
-      value[c] = std::clamp(values[i * width + c] + moved, lo, hi);
+      const double own_part = values[i * width + c] - at<D>(from, R, width, e, own, c);
+      value[c] = std::clamp(at<D>(from, R, width, place.element, here, c) + kept * own_part, lo, hi);
     }
   }
   return out;

@@ -144,9 +144,10 @@ void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
                              displaced(master, u[p.master_body]), master.surfaces.at(p.master_surface),
                              p.search_distance, p.box_search ? FacetCandidates::Boxes : FacetCandidates::All)) {
       c.separation = reference_separation(slave, master, c);
-      if (const auto it = was.find(c.slave_node); it != was.end())
+      if (const auto it = was.find(c.slave_node); it != was.end()) {
         carry(pairs[i], it->second, c, now);
-      else
+        if (c.gap > 1e-9 * p.search_distance) now.active.back() = 0;  // put off the master: free until it touches
+      } else
         add_point(now, c, c.gap <= 1e-9 * p.search_distance);
       now.anchor.back() = relative_position(p, c, u, model.dim);
     }

@@ -69,8 +69,9 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
 
 /// The pairs whose slave body is `body` found again after that body's reference moved under its material (an ALE
 /// step: its nodes put back, u its displacement from there — zero — and the other bodies' as they are): every point's
-/// projection and reference separation anew, its status kept (active — an active point a little off the master is
-/// pulled onto it by its row —, stick or slip, its forces: the multipliers of its rows stay theirs), a sticking point
+/// projection and reference separation anew, its status kept (active, stick or slip, its forces: the multipliers of
+/// its rows stay theirs) unless it was put off the master — inactive then, as its row would pull it back onto the
+/// master and add the gap's material —, a sticking point
 /// anchored where it is now; a node new to the pair is active where it touches, one that left the search distance is
 /// dropped.
 void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, int body,

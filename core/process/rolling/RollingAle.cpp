@@ -46,35 +46,47 @@ RollingAle::RollingAle(const RollingPass& pass, const Model& model) : slab_(pass
   }
 }
 
-double RollingAle::top_at(double x, const std::vector<std::array<double, 2>>& top, const Positions& roll,
-                          bool touching) const {
+double RollingAle::top_at(double x, const Top& top, const Positions& roll) const {
   double under = std::numeric_limits<double>::infinity();
   for (const auto& [a, b] : roll_edges_) {  // the roll's lower side: the lowest of its edges that span x
     const double x0 = roll[a][0], x1 = roll[b][0];
     if (x < std::min(x0, x1) || x > std::max(x0, x1) || x0 == x1) continue;
     under = std::min(under, roll[a][1] + (roll[b][1] - roll[a][1]) * (x - x0) / (x1 - x0));
   }
-  if (touching && std::isfinite(under)) return under;
-  return std::min(along(top, x), under);
+  const auto& [p, q] = std::pair{top.before_last_free, top.last_free};
+  if (x < top.arc_from && x > q[0] && q[0] > p[0])  // entering: the free top's line until it meets the roll
+    return std::min(under, q[1] + (x - q[0]) * (q[1] - p[1]) / (q[0] - p[0]));
+  if (x >= top.arc_from && x <= top.arc_to && std::isfinite(under)) return under;
+  return std::min(along(top.surface, x), under);
 }
 
 MeshMotion::Positions RollingAle::placed(const std::vector<Positions>& current,
                                          const std::vector<char>& touching) const {
   const Positions& slab = current[static_cast<size_t>(slab_)];
-  std::vector<std::array<double, 2>> surface;  // the slab's top after the step, by x
-  for (const Column& c : columns_) surface.push_back({slab[c.nodes.back()][0], slab[c.nodes.back()][1]});
-  if (!std::is_sorted(surface.begin(), surface.end()))
+  const Positions& roll = current[static_cast<size_t>(roll_)];
+  Top top;  // the slab's top after the step, by x
+  for (const Column& c : columns_) {
+    const std::array<double, 3>& p = slab[static_cast<size_t>(c.nodes.back())];
+    top.surface.push_back({p[0], p[1]});
+    if (touching[static_cast<size_t>(c.nodes.back())]) {
+      top.arc_from = std::min(top.arc_from, p[0]);
+      top.arc_to = std::max(top.arc_to, p[0]);
+    } else if (std::isinf(top.arc_to)) {
+      top.before_last_free = top.last_free;
+      top.last_free = {p[0], p[1]};
+    }
+  }
+  if (!std::is_sorted(top.surface.begin(), top.surface.end()))
     throw AnalysisError("the slab's top surface has folded over itself: it cannot be followed");
   Positions out = slab;
   for (const Column& c : columns_) {
-    const double top =
-        top_at(c.x, surface, current[static_cast<size_t>(roll_)], touching[static_cast<size_t>(c.nodes.back())]);
-    if (!(top > 0)) {
+    const double height = top_at(c.x, top, roll);
+    if (!(height > 0)) {
       char text[160];
       std::snprintf(text, sizeof text, "the slab has no thickness left at x = %.4g mm", c.x);
       throw AnalysisError(text);
     }
-    for (size_t j = 0; j < c.nodes.size(); ++j) out[static_cast<size_t>(c.nodes[j])] = {c.x, c.share[j] * top, 0.0};
+    for (size_t j = 0; j < c.nodes.size(); ++j) out[static_cast<size_t>(c.nodes[j])] = {c.x, c.share[j] * height, 0.0};
   }
   return out;
 }

@@ -85,17 +85,29 @@ TEST(RollingAle, TheWindowSpansTheArcAndASlabMovedOnIsPutBackOntoItsMesh) {
     else
       EXPECT_NEAR(placed[n][1], slab.nodes[n][1], 1e-9 * (1 + share)) << n;
   }
-  // a top node in contact goes onto the roll even where the moved slab's top lies below it: the first column
-  // before the arc, lowered by 0.1 mm and touching, is put back at the roll's height there
-  size_t entry = 0;
+  // within the arc (between top nodes touching the roll) the top goes onto the roll even where the moved slab's top
+  // lies below it; the column before the arc, whose node went into it too, stays on the free top's line — the
+  // material at its x has not reached the roll (the column was put onto it, and the window gained a sliver of
+  // material at every step, in steps longer than a quarter of the column spacing)
+  size_t entry = 0, arc = 0;
   for (size_t n = 0; n < slab.nodes.size(); ++n)
     if (slab.nodes[n][1] == 50.0 && slab.nodes[n][0] < -L && slab.nodes[n][0] > slab.nodes[entry][0]) entry = n;
+  for (size_t n = 0; n < slab.nodes.size(); ++n)  // the top node next past it: the arc's first
+    if (slab.nodes[n][1] > 40 && slab.nodes[n][0] > slab.nodes[entry][0] &&
+        (arc == 0 || slab.nodes[n][0] < slab.nodes[arc][0]))
+      arc = n;
+  ASSERT_LT(slab.nodes[entry][0], slab.nodes[arc][0]);
   for (auto& x : current[static_cast<size_t>(pass.slab)]) x[1] -= 0.1 * x[1] / 50;
-  touching[entry] = 1;
+  touching[entry] = touching[arc] = 1;
+  std::vector<char> arc_only = touching;
+  arc_only[entry] = 0;
+  for (size_t n = 0; n < slab.nodes.size(); ++n)  // the arc's next column touches too
+    if (std::abs(slab.nodes[n][0] - slab.nodes[arc][0] - spacing) < 1e-6 && slab.nodes[n][1] > 40)
+      touching[n] = arc_only[n] = 1;
   const MeshMotion::Positions snapped = motion.placed(current, touching);
-  EXPECT_GT(snapped[entry][1], 50.0) << "the roll's surface before the arc lies above the slab's entry thickness";
-  touching[entry] = 0;
-  EXPECT_LT(motion.placed(current, touching)[entry][1], 50.0);
+  EXPECT_NEAR(snapped[arc][1], slab.nodes[arc][1], 1e-9) << "onto the roll, where the slab was cut to it";
+  EXPECT_NEAR(snapped[entry][1], 49.9, 1e-9) << "the free top's line, below the roll there";
+  EXPECT_EQ(motion.placed(current, arc_only)[entry][1], snapped[entry][1]);
   EXPECT_TRUE(motion.inflow({-pass.ale_entry + 0.4, 10, 0}, current[static_cast<size_t>(pass.slab)]));
   EXPECT_FALSE(motion.inflow({-pass.ale_entry + 0.6, 10, 0}, current[static_cast<size_t>(pass.slab)]));
 }
