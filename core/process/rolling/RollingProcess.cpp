@@ -197,9 +197,9 @@ const ObjectSchema& rolling_process_schema() {
                        "contact length √(R Δh) plus the entry thickness h0)")),
        optional(number("ale_exit_length", "length", 0, 0, 1e6,
                        "formulation ale: how far past the exit plane the window ends (default: about the entry "
-                       "thickness h0, adjusted so that a column of nodes lies a quarter of a spacing before the arc's "
-                       "nominal entry — a column at the entry or just inside it keeps switching in and out of "
-                       "contact and can make the pass diverge)")),
+                       "thickness h0, adjusted so that a column of nodes lies half a spacing before the arc's nominal "
+                       "entry — steps of up to about half a spacing then bring no column into the arc; a column at "
+                       "the entry keeps switching in and out of contact and can make the pass diverge)")),
        def(boolean("stop_at_steady_state",
                    "end the pass once it is steady — the means of roll force and torque over the last two windows of "
                    "half a nominal contact length of travel agree within 2 % (results.rolling's steady_state rule) — "
@@ -260,9 +260,12 @@ bool is_ale(const json& p) { return p.value("formulation", "lagrangian") == "ale
 double nominal_contact_length(const json& p);
 
 /// Where the ALE window's column nearest the arc's nominal entry lies by default: this share of a column spacing
-/// before it. A column at the entry or just inside the arc keeps switching in and out of contact as material flows
-/// past it, and diverged on 36 × 6 (entry at 0, 0.5, 0.75 and 0.9 of a spacing after the column); 0.1–0.35 ran.
-constexpr double kEntryOffset = 0.25;
+/// before it, so that steps up to about half a spacing of travel bring no node of it into the arc. The next column,
+/// half a spacing inside the arc, lies on the roll. A column at the entry diverged; 0.25 put the column onto the roll
+/// in steps longer than a quarter spacing; at 0.75 the column a quarter inside the arc added 1 % of volume to the
+/// window (the force 4 % higher on 32 × 6); at 0.5 the window's volume balance is within 0.2 %
+/// (docs/BENCHMARKS-ROLLING.md).
+constexpr double kEntryOffset = 0.5;
 
 /// The ALE window's reach before and past the exit plane: ale_entry_length (default √(R Δh) + h0) and
 /// ale_exit_length (default about h0, so that a column lies kEntryOffset of a spacing before the arc's entry).

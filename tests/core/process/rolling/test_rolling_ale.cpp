@@ -129,15 +129,18 @@ TEST(RollingAle, ThePaperPassIsSteadyAfterTwoWindowsAndAgreesWithTheLagrangianPa
       "steady force %.1f / %.1f N/mm, torque %.0f / %.0f, slip %.4f / %.4f, exit %.3f / %.3f (ALE / Lagrangian)\n",
       s.roll_force, t.roll_force, s.roll_torque, t.roll_torque, s.forward_slip, t.forward_slip, s.exit_thickness,
       t.exit_thickness);
-  // measured 2.8 % apart on these coarse meshes (1.3 % on 64 × 12 against 72 × 12: docs/BENCHMARKS-ROLLING.md)
-  EXPECT_NEAR(s.roll_force, t.roll_force, 0.04 * t.roll_force);
+  // measured 2.3 % apart on these coarse meshes (0.4 % on 64 × 12 against 72 × 12: docs/BENCHMARKS-ROLLING.md)
+  EXPECT_NEAR(s.roll_force, t.roll_force, 0.03 * t.roll_force);
   for (const RollingIncrement* r : {&s, &t}) {  // the gap's 86.8 mm and the slab's springback
     EXPECT_GT(r->exit_thickness, 86.8);
     EXPECT_LT(r->exit_thickness, 1.005 * 86.8);
   }
-  EXPECT_NEAR(s.forward_slip, t.forward_slip, 0.1 * t.forward_slip);
-  // the window's flux out over its flux in (−0.75 %): the volume the top's placement onto the roll polygon changes
-  EXPECT_LT(std::abs(s.volume_change), 0.015);
+  // the exit face's speed against the Lagrangian front's (which still springs back): 5.3 against 4.6 % faster than
+  // the roll, 0.7 % apart in speed
+  EXPECT_NEAR(1 + s.forward_slip, 1 + t.forward_slip, 0.01);
+  // the window's flux out over its flux in (+0.04 %; −0.75 % when its column nearest the entry lay a quarter spacing
+  // before it: the column's top was put onto the roll polygon)
+  EXPECT_LT(std::abs(s.volume_change), 0.005);
   EXPECT_EQ(a.ale_steps, static_cast<int>(a.increments.size()) - 1);  // after every step but the last
   EXPECT_EQ(l.ale_steps, 0);
 }
@@ -216,15 +219,17 @@ TEST(RollingAle, The3dWindowsSideFollowsABulgeWithoutSmearingIt) {
 }
 
 TEST(RollingAle, ADivergedPassSaysItsStepStartedHalved) {
-  // 4 mm steps on 64 × 12 invert an element in the second step; the step's halvings count the three it started with
+  // 12 mm steps on 64 × 12 invert an element in the first step when no halving beyond the three it starts with is
+  // allowed (with one more the pass rolls); the step's halvings count those three
   nlohmann::json j = ale_pass(20);
-  j["process"].update({{"slab_nx", 64}, {"slab_nt", 12}, {"roll_n_around", 240}, {"travel_increment", 4.0}});
+  j["process"].update({{"slab_nx", 64}, {"slab_nt", 12}, {"roll_n_around", 240}, {"travel_increment", 12.0}});
+  j["analysis"] = {{"max_cutbacks", 3}};
   const testing_support::PassRun r = testing_support::run_pass(j);
   ASSERT_EQ(r.status.status, Status::diverged) << r.status.message;
   EXPECT_NE(r.status.message.find("is inverted"), std::string::npos) << r.status.message;
   EXPECT_NE(r.status.message.find("the run starts 3 below it, analysis.first_step_halvings"), std::string::npos)
       << r.status.message;
-  EXPECT_NE(r.status.message.find("process.travel_increment (now 4 mm)"), std::string::npos) << r.status.message;
+  EXPECT_NE(r.status.message.find("process.travel_increment (now 12 mm)"), std::string::npos) << r.status.message;
 }
 
 TEST(RollingAle, AWindowStartsFromAnEighthOfAStepInPlaneStrainAndA64thIn3DUnlessTheProjectSays) {
