@@ -2,7 +2,8 @@
 """ALE against Lagrangian steady rolling -> docs/ale-bench-output.md (docs/BENCHMARKS-ROLLING.md, "ALE").
 
 The paper's plane-strain pass (samples/rolling-2d-36x6.json: 300 mm roll, 100 -> 86.8 mm, sigma_0 100 MPa, sticking)
-on three meshes refined together (slab elements, roll elements, steps), once Lagrangian (the whole 300 mm slab rolled
+on three meshes refined together (slab elements, roll elements, steps: ALE's its own, up to half its window's column
+spacing), once Lagrangian (the whole 300 mm slab rolled
 through the gap) and once ALE (process.formulation: ale, the window's default reach, its columns as long as the
 Lagrangian slab's elements), both ending at their steady state (process.stop_at_steady_state). Per run: status, the
 travel where it became steady, the steady force, torque, forward slip and exit thickness, the volume balance (ALE: the
@@ -20,11 +21,13 @@ import sys
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-MESHES = [  # Lagrangian slab, ALE window, roll elements around, travel increment [mm]
-    ((36, 6), (32, 6), 120, 1.0),
-    ((54, 9), (48, 9), 180, 0.75),
-    ((72, 12), (64, 12), 240, 0.5),
-    ((72, 12), (64, 12), 240, 1.0),  # the finest mesh in the steps of the coarsest (samples/rolling-2d-ale.json)
+MESHES = [  # Lagrangian slab, ALE window, roll elements around, travel increment [mm]: Lagrangian, ALE
+    ((36, 6), (32, 6), 120, 1.0, 2.0),
+    ((36, 6), (32, 6), 120, 1.0, 4.0),  # ALE's steps up to half its column spacing (8.2 mm) bring no node into the arc
+    ((54, 9), (48, 9), 180, 0.75, 1.5),
+    ((72, 12), (64, 12), 240, 0.5, 1.0),
+    ((72, 12), (64, 12), 240, 0.5, 2.0),
+    ((72, 12), (64, 12), 240, 1.0, 1.0),  # the finest mesh in the steps of the coarsest (samples/rolling-2d-ale.json)
 ]
 
 
@@ -74,21 +77,21 @@ def main():
     ap.add_argument("--out", default=str(ROOT / "docs/ale-bench-output.md"))
     a = ap.parse_args()
     tmp = pathlib.Path(tempfile.mkdtemp(prefix="ale-bench-"))
-    lines = ["| mesh (Lagrangian / ALE) | run | status | steady from [mm] | force [N/mm] | torque [kN·m/m] | "
+    lines = ["| mesh (Lagrangian / ALE), roll, steps (Lagrangian / ALE) | run | status | steady from [mm] | force [N/mm] | torque [kN·m/m] | "
              "forward slip | exit [mm] | volume balance | Newton its | run [s] |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     timing = ["| mesh | ALE CPU [s] | Lagrangian CPU [s] | ALE / Lagrangian CPU | wall | peak MiB (ALE / Lag.) |",
               "|---|---|---|---|---|---|"]
     meshes = MESHES[-1:] if a.only_last else MESHES
-    for lag_n, ale_n, around, step in meshes:
+    for lag_n, ale_n, around, lag_step, ale_step in meshes:
         paths = {}
         rows = {}
-        for formulation, n in (("lagrangian", lag_n), ("ale", ale_n)):
-            p = tmp / f"{formulation}-{n[0]}x{n[1]}.json"
+        for formulation, n, step in (("lagrangian", lag_n, lag_step), ("ale", ale_n, ale_step)):
+            p = tmp / f"{formulation}-{n[0]}x{n[1]}-{step:g}.json"
             p.write_text(json.dumps(project(formulation, n, around, step)))
             paths[formulation] = p
             rows[formulation] = run(a.rollsim, p, tmp / p.stem)
-        mesh = f"{lag_n[0]} × {lag_n[1]} / {ale_n[0]} × {ale_n[1]}, roll {around}, {step:g} mm"
+        mesh = f"{lag_n[0]} × {lag_n[1]} / {ale_n[0]} × {ale_n[1]}, roll {around}, {lag_step:g} / {ale_step:g} mm"
         for formulation, r in rows.items():
             fmt = lambda v, f: f.format(v) if v is not None else "–"
             lines.append(f"| {mesh} | {formulation} | {r['status']} | {fmt(r['steady_at'], '{:.1f}')} | "

@@ -194,10 +194,11 @@ const ObjectSchema& rolling_process_schema() {
               "comes without rolling a whole slab; slab_length and grading have no effect)"),
        optional(number("ale_entry_length", "length", 0, 0, 1e6,
                        "formulation ale: how far before the exit plane the window begins (default: the nominal "
-                       "contact length √(R Δh) plus the entry thickness h0)")),
+                       "contact length √(R Δh) plus half the entry thickness h0 in plane strain, h0 in 3D)")),
        optional(number("ale_exit_length", "length", 0, 0, 1e6,
-                       "formulation ale: how far past the exit plane the window ends (default: about the entry "
-                       "thickness h0, adjusted so that a column of nodes lies half a spacing before the arc's nominal "
+                       "formulation ale: how far past the exit plane the window ends (default: about half the "
+                       "entry thickness h0 in plane strain, h0 in 3D, adjusted so that a column of nodes lies half a "
+                       "spacing before the arc's nominal "
                        "entry — steps of up to about half a spacing then bring no column into the arc; a column at "
                        "the entry keeps switching in and out of contact and can make the pass diverge)")),
        def(boolean("stop_at_steady_state",
@@ -259,22 +260,42 @@ bool is_ale(const json& p) { return p.value("formulation", "lagrangian") == "ale
 /// The nominal contact length √(R Δh), Δh = h0 − h1.
 double nominal_contact_length(const json& p);
 
-/// Where the ALE window's column nearest the arc's nominal entry lies by default: this share of a column spacing
-/// before it, so that steps up to about half a spacing of travel bring no node of it into the arc. The next column,
-/// half a spacing inside the arc, lies on the roll. A column at the entry diverged; 0.25 put the column onto the roll
-/// in steps longer than a quarter spacing; at 0.75 the column a quarter inside the arc added 1 % of volume to the
-/// window (the force 4 % higher on 32 × 6); at 0.5 the window's volume balance is within 0.2 %
-/// (docs/BENCHMARKS-ROLLING.md).
-constexpr double kEntryOffset = 0.5;
+/// Where the ALE window's columns lie by default against the arc's nominal entry and the exit plane, in shares of a
+/// column spacing: one column half a spacing before the entry (steps of up to about half a spacing bring no node of it
+/// into the arc; the next column, half a spacing inside the arc, lies on the roll), and the spacing such that the arc
+/// holds a whole number of spacings and a quarter, so that the last column on the arc lies 3/4 of a spacing before the
+/// exit plane and the next a quarter past it. A column at the entry diverged; a quarter of a spacing before it was
+/// put onto the roll in longer steps; at 3/4 the column a quarter inside the arc added 1 % of volume to the window.
+/// A column within about a millimetre before the exit plane, where the material leaves the roll, went in and out of
+/// contact at every iteration (64 × 12 elements' spacing, 1 mm steps: 1178 Newton iterations instead of about 300; the
+/// force 1 % off) (docs/BENCHMARKS-ROLLING.md).
+constexpr double kEntryOffset = 0.5, kArcRemainder = 0.25;
 
-/// The ALE window's reach before and past the exit plane: ale_entry_length (default √(R Δh) + h0) and
-/// ale_exit_length (default about h0, so that a column lies kEntryOffset of a spacing before the arc's entry).
-std::pair<double, double> ale_window(const json& p) {
-  const double h0 = p.at("slab_thickness"), arc = nominal_contact_length(p);
-  const double entry = p.value("ale_entry_length", arc + h0);
-  if (p.contains("ale_exit_length")) return {entry, p.at("ale_exit_length").get<double>()};
+/// How far the ALE window reaches before the arc and past the exit plane by default, in entry thicknesses h0. In plane
+/// strain the paper's pass gave the same steady force within 0.1 % with h0 / 4, h0 / 2 and h0 on both sides (64 × 12
+/// elements' spacing): what lies further is elastic and only costs elements. In 3D the zones change the spread: on
+/// the 16 × 8 × 4 elements' spacing the mean spread was 1.45 mm with h0 on both sides, 3.55 with h0 / 2 before the
+/// arc (the material bulging sideways before the arc reaches the entry face and flows in wider) and 1.90 with h0 / 2
+/// past the exit (docs/BENCHMARKS-ROLLING.md).
+double zone_thickness(int dim) { return dim == 2 ? 0.5 : 1.0; }
+
+/// The ALE window's reach before and past the exit plane: ale_entry_length and ale_exit_length, by default about
+/// zone_thickness h0 before the arc and past the exit plane with the columns placed as kEntryOffset and kArcRemainder
+/// say (with ale_entry_length alone: the first only).
+std::pair<double, double> ale_window(const json& p, int dim) {
+  const double h0 = p.at("slab_thickness"), arc = nominal_contact_length(p), zone = zone_thickness(dim) * h0;
   const int nx = p.at("slab_nx");
-  const double before = entry - arc, spacing = (entry + h0) / nx;  // the columns before the arc, at about h0 past
+  if (!p.contains("ale_entry_length")) {
+    const double nominal = (arc + 2 * zone) / nx;
+    const double spacing = arc / (std::max(1.0, std::round(arc / nominal - kArcRemainder)) + kArcRemainder);
+    const double zones = nx - arc / spacing;  // the spacings before the arc and past it, about as many on each side
+    const double entry = arc + (std::max(1.0, std::round(zones / 2 - kEntryOffset)) + kEntryOffset) * spacing;
+    return {entry, p.contains("ale_exit_length") ? p.at("ale_exit_length").get<double>()
+                                                 : std::max(nx * spacing - entry, spacing)};
+  }
+  const double entry = p.at("ale_entry_length");
+  if (p.contains("ale_exit_length")) return {entry, p.at("ale_exit_length").get<double>()};
+  const double before = entry - arc, spacing = (entry + zone) / nx;  // the columns before the arc, at about zone past
   const double columns = std::max(1.0, std::round(before / spacing - kEntryOffset)) + kEntryOffset;
   return {entry, std::max(nx * before / columns - entry, spacing)};
 }
@@ -434,7 +455,7 @@ void check_ale(const json& project, std::vector<Issue>& issues) {
     issues.push_back({"process.grading",
                       "has no effect with process.formulation: ale (the window's elements are "
                       "uniform along x): remove it"});
-  const auto [entry, exit] = ale_window(p);
+  const auto [entry, exit] = ale_window(p, project.at("dimension").get<int>());
   const double arc = nominal_contact_length(p);
   if (entry <= arc)
     issues.push_back({"process.ale_entry_length", mm(entry) + " does not reach before the arc of contact (it starts " +
@@ -567,7 +588,7 @@ json expand_rolling(const json& project) {
       {{"name", "roll"}, {"model", "linear_elastic"}, {"E", p.at("roll_E")}, {"nu", p.at("roll_nu")}});
   const int around = p.at("roll_n_around");
   // the slab from −L to the exit plane, or an ALE window from −entry to exit, flat at the gap past the exit plane
-  const auto [entry, exit] = is_ale(p) ? ale_window(p) : std::pair{L, 0.0};
+  const auto [entry, exit] = is_ale(p) ? ale_window(p, dim) : std::pair{L, 0.0};
   json slab_mesh = {{"type", "block"},
                     {"nx", p.at("slab_nx")},
                     {"lx", entry + exit},
@@ -704,7 +725,7 @@ RollingPass rolling_pass(const json& section, const Model& model) {
   pass.radius = roll_radius(p);
   pass.slab_length = p.at("slab_length");
   pass.ale = is_ale(p);
-  if (pass.ale) std::tie(pass.ale_entry, pass.ale_exit) = ale_window(p);
+  if (pass.ale) std::tie(pass.ale_entry, pass.ale_exit) = ale_window(p, model.dim);
   pass.stop_at_steady = p.value("stop_at_steady_state", false);
   if (p.contains("roll_speed")) pass.rpm = p.at("roll_speed");
   pass.entry_thickness = p.at("slab_thickness");
