@@ -71,9 +71,8 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
 /// step: its nodes put back, u its displacement from there — zero — and the other bodies' as they are): every point's
 /// projection and reference separation anew, its status kept (active, stick or slip, its forces: the multipliers of
 /// its rows stay theirs) unless it was put off the master — inactive then, as its row would pull it back onto the
-/// master and add the gap's material —, a sticking point
-/// anchored where it is now; a node new to the pair is active where it touches, one that left the search distance is
-/// dropped.
+/// master and add the gap's material —, a sticking point anchored where it is now; a node new to the pair is active
+/// where it touches, one that left the search distance is dropped.
 void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, int body,
                      std::vector<PairState>& pairs);
 

@@ -5,9 +5,9 @@
 // roll's deformed surface between the top nodes that touch the roll and wherever the free surface would lie inside it
 // (before the arc the free top's last segment meets the roll: a column whose node went into the arc in a long step is
 // left off the roll, and inactive — contact/refind_contacts —, where the material at its x has not reached it); its
-// other nodes keep their share of the height as meshed (the symmetry plane at 0). Before the
-// entry face's new place the top keeps its height, and points there hold material that flowed in during the step:
-// virgin. Plane strain, a structured slab (columns of one x).
+// other nodes keep their share of the height as meshed (the symmetry plane at 0). Before the entry face's new place
+// the top keeps its height, and points there hold material that flowed in during the step: virgin. Plane strain, a
+// structured slab (columns of one x).
 #include <array>
 #include <limits>
 #include <string>

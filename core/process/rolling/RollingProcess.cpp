@@ -197,10 +197,11 @@ const ObjectSchema& rolling_process_schema() {
                        "contact length √(R Δh) plus half the entry thickness h0 in plane strain, h0 in 3D)")),
        optional(number("ale_exit_length", "length", 0, 0, 1e6,
                        "formulation ale: how far past the exit plane the window ends (default: about half the "
-                       "entry thickness h0 in plane strain, h0 in 3D, adjusted so that a column of nodes lies half a "
-                       "spacing before the arc's nominal "
-                       "entry — steps of up to about half a spacing then bring no column into the arc; a column at "
-                       "the entry keeps switching in and out of contact and can make the pass diverge)")),
+                       "entry thickness h0 in plane strain, h0 in 3D; without ale_entry_length the columns are "
+                       "spaced so that one lies half a spacing before the arc's nominal entry — steps of up to about "
+                       "half a spacing then bring no column into the arc — and the arc holds a whole number of "
+                       "spacings and a quarter, no column just before the exit plane, where the material leaves the "
+                       "roll; with it, the first of the two)")),
        def(boolean("stop_at_steady_state",
                    "end the pass once it is steady — the means of roll force and torque over the last two windows of "
                    "half a nominal contact length of travel agree within 2 % (results.rolling's steady_state rule) — "
@@ -267,8 +268,8 @@ double nominal_contact_length(const json& p);
 /// exit plane and the next a quarter past it. A column at the entry diverged; a quarter of a spacing before it was
 /// put onto the roll in longer steps; at 3/4 the column a quarter inside the arc added 1 % of volume to the window.
 /// A column within about a millimetre before the exit plane, where the material leaves the roll, went in and out of
-/// contact at every iteration (64 × 12 elements' spacing, 1 mm steps: 1178 Newton iterations instead of about 300; the
-/// force 1 % off) (docs/BENCHMARKS-ROLLING.md).
+/// contact at every iteration (4 mm columns, 1 mm steps: 1178 Newton iterations instead of about 300; the force 1 %
+/// off) (docs/BENCHMARKS-ROLLING.md).
 constexpr double kEntryOffset = 0.5, kArcRemainder = 0.25;
 
 /// How far the ALE window reaches before the arc and past the exit plane by default, in entry thicknesses h0. In plane
