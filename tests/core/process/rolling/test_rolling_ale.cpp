@@ -121,8 +121,14 @@ TEST(RollingAle, TheWindowSpansTheArcAndASlabMovedOnIsPutBackOntoItsMesh) {
 }
 
 TEST(RollingAle, ThePaperPassIsSteadyAfterTwoWindowsAndAgreesWithTheLagrangianPass) {
+  // 12 elements through the half thickness, the window's 40 columns about as long as the Lagrangian slab's 72
   nlohmann::json ale = ale_pass(120), lagrangian = testing_support::paper_pass_2d(120, 1.0);
-  for (nlohmann::json* j : {&ale, &lagrangian}) (*j)["process"]["stop_at_steady_state"] = true;
+  ale["process"].update({{"slab_nx", 40}});
+  lagrangian["process"].update({{"slab_nx", 72}});
+  for (nlohmann::json* j : {&ale, &lagrangian}) {
+    (*j)["process"].update({{"stop_at_steady_state", true}, {"slab_nt", 12}, {"roll_n_around", 240}});
+    (*j)["analysis"]["contact_frames"] = "predicted";  // as the main job: fewer Newton iterations
+  }
   const testing_support::PassRun a = testing_support::run_pass(ale), l = testing_support::run_pass(lagrangian);
   ASSERT_TRUE(a.status.ok() && l.status.ok()) << a.status.message << " / " << l.status.message;
   EXPECT_NE(a.status.message.find("the pass is steady at travel"), std::string::npos) << a.status.message;
@@ -137,17 +143,18 @@ TEST(RollingAle, ThePaperPassIsSteadyAfterTwoWindowsAndAgreesWithTheLagrangianPa
       "steady force %.1f / %.1f N/mm, torque %.0f / %.0f, slip %.4f / %.4f, exit %.3f / %.3f (ALE / Lagrangian)\n",
       s.roll_force, t.roll_force, s.roll_torque, t.roll_torque, s.forward_slip, t.forward_slip, s.exit_thickness,
       t.exit_thickness);
-  // measured 1.1 % apart on these coarse meshes (0.1 % on 40 × 12 against 72 × 12: docs/BENCHMARKS-ROLLING.md)
-  EXPECT_NEAR(s.roll_force, t.roll_force, 0.02 * t.roll_force);
-  for (const RollingIncrement* r : {&s, &t}) {  // the gap's 86.8 mm and the slab's springback
-    EXPECT_GT(r->exit_thickness, 86.8);
-    EXPECT_LT(r->exit_thickness, 1.005 * 86.8);
+  // issue 34: the same steady force within 1 % (measured 0.48 %; 1.1 % on the main job's 36 × 6 elements against 20
+  // columns, where the Lagrangian force is 4.5 % above this mesh's: docs/BENCHMARKS-ROLLING.md)
+  EXPECT_NEAR(s.roll_force, t.roll_force, 0.01 * t.roll_force);
+  for (const RollingIncrement* r : {&s, &t}) {  // the gap's 86.8 mm and the slab's springback (0.1 %; 0.5 % at the
+    EXPECT_GT(r->exit_thickness, 86.8);         // Lagrangian slab's free front)
+    EXPECT_LT(r->exit_thickness, 1.01 * 86.8);
   }
-  // the exit face's speed against the Lagrangian front's (which still springs back): 5.3 against 4.6 % faster than
-  // the roll, 0.7 % apart in speed
+  // the exit face's speed against the Lagrangian front's (which still springs back): 5.1 against 4.8 % faster than
+  // the roll, 0.3 % apart in speed
   EXPECT_NEAR(1 + s.forward_slip, 1 + t.forward_slip, 0.01);
-  // the window's flux out over its flux in (+0.04 %; −0.75 % when its column nearest the entry lay a quarter spacing
-  // before it: the column's top was put onto the roll polygon)
+  // the window's flux out over its flux in (+0.15 %; −0.75 % on a coarser window whose column nearest the entry lay
+  // a quarter spacing before it: the column's top was put onto the roll polygon)
   EXPECT_LT(std::abs(s.volume_change), 0.005);
   EXPECT_EQ(a.ale_steps, static_cast<int>(a.increments.size()) - 1);  // after every step but the last
   EXPECT_EQ(l.ale_steps, 0);
