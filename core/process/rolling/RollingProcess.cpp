@@ -726,7 +726,10 @@ RollingPass rolling_pass(const json& section, const Model& model) {
   pass.radius = roll_radius(p);
   pass.slab_length = p.at("slab_length");
   pass.ale = is_ale(p);
-  if (pass.ale) std::tie(pass.ale_entry, pass.ale_exit) = ale_window(p, model.dim);
+  if (pass.ale) {
+    std::tie(pass.ale_entry, pass.ale_exit) = ale_window(p, model.dim);
+    pass.ale_columns = p.at("slab_nx");
+  }
   pass.stop_at_steady = p.value("stop_at_steady_state", false);
   if (p.contains("roll_speed")) pass.rpm = p.at("roll_speed");
   pass.entry_thickness = p.at("slab_thickness");

@@ -75,7 +75,9 @@ TEST(RollingAle, TheWindowSpansTheArcAndASlabMovedOnIsPutBackOntoItsMesh) {
   EXPECT_NEAR(x_max, pass.ale_exit, 1e-9);
   EXPECT_NEAR(exit_top, 86.8 / 2, 1e-9) << "flat at the gap past the exit plane";
   bool said = false;  // `rollsim check` and the window's forecast say where the window lies
-  for (const ProcessFact& f : RollingRun(pass, m).facts()) said = said || f.name == "ALE window";
+  for (const ProcessFact& f : RollingRun(pass, m).facts())  // and how long a step may be
+    said = said || (f.name == "ALE window" && f.value.find("columns 8.68 mm apart") != std::string::npos &&
+                    f.note.find("half a column (4.34 mm of travel)") != std::string::npos);
   EXPECT_TRUE(said);
   const RollingAle motion(pass, m);
   // the slab moved on by 0.5 mm along x, the roll where it is: every node back where it was meshed (the top of the
