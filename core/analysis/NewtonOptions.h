@@ -146,7 +146,8 @@ inline const std::vector<BoundField<NewtonOptions>>& newton_option_fields() {
       bind(str("predictor",
                "Newton: where a step's first iteration starts — tangent: the converged state, the prescribed motion's "
                "increment carried into the body by the tangent assembled there (elastic where a zero strain increment "
-               "returns elastically); extrapolate: the converged state plus the last converged step's displacement "
+               "returns elastically; in an ALE run as extrapolate: its window's flow repeats); extrapolate: the "
+               "converged state plus the last converged step's displacement "
                "scaled to this step, the prescribed dofs at their new values (a steadily flowing body starts near "
                "its answer); quadratic: on the quadratic through the last three converged states (a body whose flow "
                "changes smoothly: plastic upsetting 59 Newton iterations against extrapolate's 65; a rolling pass, "
