@@ -158,8 +158,9 @@ class NewtonRun {
   void save() { saved_ = {u_, pairs_, lambda_, lambda_valid_}; }
   /// How a diverged run says its step's halvings (`depth` below the nominal step): cut-backs, and the first step's own.
   std::string halvings(int depth) const;
-  /// Under `predictor: extrapolate`, u_ moved on by the last converged step's displacement scaled from its load-factor
-  /// span to this step's; false when there is none yet (the first step) or the option is `tangent`.
+  /// Under `predictor: extrapolate` (and in an ALE run under `tangent`), u_ moved on by the last converged step's
+  /// displacement scaled from its load-factor span to this step's; under `quadratic` along the last three states;
+  /// false when there is none yet (the first step) or the option is `tangent` outside ALE.
   bool extrapolate(double span);
   void restore() { std::tie(u_, pairs_, lambda_, lambda_valid_) = saved_; }
   void recover_into(Results& into, double lf) const;
