@@ -76,9 +76,7 @@ std::vector<double> advected(const Mesh& from, const std::vector<Point3>& x, con
   const std::vector<char> inflow_element = at_inflow(from, face);
   const std::vector<Point3> points = integration_points(to);
   const PointLocator locator(from, x);
-  Mesh moved = from;
-  moved.nodes = x;
-  const std::vector<Point3> went = integration_points(moved);  // where each old point's material is now
+  const std::vector<Point3> went = integration_points(from, x);  // where each old point's material is now
   std::vector<double> out(values.size());
   for (size_t i = 0; i < points.size(); ++i) {
     const auto value = out.begin() + static_cast<long>(i * width);

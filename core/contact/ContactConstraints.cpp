@@ -139,6 +139,7 @@ void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
     std::map<int, size_t> was;
     for (size_t j = 0; j < pairs[i].points.size(); ++j) was[pairs[i].points[j].slave_node] = j;
     PairState now;
+    const double touch = 1e-9 * p.search_distance;
     for (ContactPoint& c :
          find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
                              displaced(master, u[p.master_body]), master.surfaces.at(p.master_surface),
@@ -146,9 +147,9 @@ void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
       c.separation = reference_separation(slave, master, c);
       if (const auto it = was.find(c.slave_node); it != was.end()) {
         carry(pairs[i], it->second, c, now);
-        if (c.gap > 1e-9 * p.search_distance) now.active.back() = 0;  // put off the master: free until it touches
+        if (c.gap > touch) now.active.back() = 0;  // put off the master: free until it touches
       } else
-        add_point(now, c, c.gap <= 1e-9 * p.search_distance);
+        add_point(now, c, c.gap <= touch);
       now.anchor.back() = relative_position(p, c, u, model.dim);
     }
     pairs[i] = std::move(now);

@@ -179,7 +179,7 @@ std::vector<double> current_state(const Body& body, const Eigen::VectorXd& u, st
 
 namespace {
 template <int D>
-std::vector<Point3> integration_points_in(const Mesh& mesh) {
+std::vector<Point3> integration_points_in(const Mesh& mesh, const std::vector<Point3>& x) {
   using E = SolidElement<D>;
   std::vector<Point3> at;
   const auto& N = E::gauss_shape();
@@ -187,15 +187,17 @@ std::vector<Point3> integration_points_in(const Mesh& mesh) {
     for (int p = 0; p < E::NGP; ++p) {
       Point3 q{0, 0, 0};
       for (int a = 0; a < E::NN; ++a)
-        for (int c = 0; c < D; ++c) q[c] += N(p, a) * mesh.nodes[mesh.element(e)[a]][c];
+        for (int c = 0; c < D; ++c) q[c] += N(p, a) * x[static_cast<size_t>(mesh.element(e)[a])][c];
       at.push_back(q);
     }
   return at;
 }
 }  // namespace
 
-std::vector<Point3> integration_points(const Mesh& mesh) {
-  return mesh.dim == 2 ? integration_points_in<2>(mesh) : integration_points_in<3>(mesh);
+std::vector<Point3> integration_points(const Mesh& mesh) { return integration_points(mesh, mesh.nodes); }
+
+std::vector<Point3> integration_points(const Mesh& mesh, const std::vector<Point3>& x) {
+  return mesh.dim == 2 ? integration_points_in<2>(mesh, x) : integration_points_in<3>(mesh, x);
 }
 
 std::vector<double> transfer_points(const Mesh& from, const std::vector<Point3>& x, const std::vector<double>& values,

@@ -53,6 +53,8 @@ std::vector<Point3> displaced_nodes(const Mesh& mesh, const Eigen::VectorXd& u);
 
 /// The integration points of a quad mesh at its own node positions (element-major, 4 per element).
 std::vector<Point3> integration_points(const Mesh& mesh);
+/// The same with its nodes at `x` (a displaced configuration).
+std::vector<Point3> integration_points(const Mesh& mesh, const std::vector<Point3>& x);
 
 /// Point values (`width` per integration point, element-major) of `from`, its nodes at `x`, carried to the
 /// integration points of `to` (at its own node positions).

@@ -53,7 +53,7 @@ double RollingAle::top_at(double x, const Top& top, const Positions& roll) const
     if (x < std::min(x0, x1) || x > std::max(x0, x1) || x0 == x1) continue;
     under = std::min(under, roll[a][1] + (roll[b][1] - roll[a][1]) * (x - x0) / (x1 - x0));
   }
-  const auto& [p, q] = std::pair{top.before_last_free, top.last_free};
+  const std::array<double, 2>&p = top.before_last_free, &q = top.last_free;
   if (x < top.arc_from && x > q[0] && q[0] > p[0])  // entering: the free top's line until it meets the roll
     return std::min(under, q[1] + (x - q[0]) * (q[1] - p[1]) / (q[0] - p[0]));
   if (x >= top.arc_from && x <= top.arc_to && std::isfinite(under)) return under;

@@ -286,19 +286,19 @@ double zone_thickness(int dim) { return dim == 2 ? 0.5 : 1.0; }
 std::pair<double, double> ale_window(const json& p, int dim) {
   const double h0 = p.at("slab_thickness"), arc = nominal_contact_length(p), zone = zone_thickness(dim) * h0;
   const int nx = p.at("slab_nx");
+  // about `spacings`, at least one and a whole number plus `share`
+  const auto placed = [](double spacings, double share) { return std::max(1.0, std::round(spacings - share)) + share; };
   if (!p.contains("ale_entry_length")) {
-    const double nominal = (arc + 2 * zone) / nx;
-    const double spacing = arc / (std::max(1.0, std::round(arc / nominal - kArcRemainder)) + kArcRemainder);
+    const double spacing = arc / placed(arc / ((arc + 2 * zone) / nx), kArcRemainder);
     const double zones = nx - arc / spacing;  // the spacings before the arc and past it, about as many on each side
-    const double entry = arc + (std::max(1.0, std::round(zones / 2 - kEntryOffset)) + kEntryOffset) * spacing;
+    const double entry = arc + placed(zones / 2, kEntryOffset) * spacing;
     return {entry, p.contains("ale_exit_length") ? p.at("ale_exit_length").get<double>()
                                                  : std::max(nx * spacing - entry, spacing)};
   }
   const double entry = p.at("ale_entry_length");
   if (p.contains("ale_exit_length")) return {entry, p.at("ale_exit_length").get<double>()};
   const double before = entry - arc, spacing = (entry + zone) / nx;  // the columns before the arc, at about zone past
-  const double columns = std::max(1.0, std::round(before / spacing - kEntryOffset)) + kEntryOffset;
-  return {entry, std::max(nx * before / columns - entry, spacing)};
+  return {entry, std::max(nx * before / placed(before / spacing, kEntryOffset) - entry, spacing)};
 }
 
 /// ω R [length/s], 0 without a roll speed.
