@@ -4,6 +4,8 @@
 #include <map>
 #include <stdexcept>
 
+#include <Eigen/Geometry>
+
 namespace rollsim {
 
 namespace {
@@ -22,45 +24,37 @@ void add_point(PairState& s, const ContactPoint& c, bool active) {
   s.trial_slip.push_back(0.0);
   s.start_direction.push_back(Eigen::Vector3d::Zero());
 }
-}  // namespace
 
-std::vector<PairState> search_contacts(const Model& model) {
-  std::vector<PairState> states;
-  for (const ContactPair& p : model.contacts) {
-    const Mesh& slave = model.bodies[p.slave_body].mesh;
-    const Mesh& master = model.bodies[p.master_body].mesh;
-    const std::vector<ContactPoint> found =
-        find_contact_points(slave, slave.surfaces.at(p.slave_surface), master, master.surfaces.at(p.master_surface),
-                            p.search_distance, p.box_search ? FacetCandidates::Boxes : FacetCandidates::All);
-    if (found.empty())
-      throw std::runtime_error("contact pair '" + p.name + "': no node of surface '" + p.slave_surface + "' of body '" +
-                               model.bodies[p.slave_body].name + "' lies over surface '" + p.master_surface +
-                               "' of body '" + model.bodies[p.master_body].name + "' within the search distance " +
-                               std::to_string(p.search_distance) + ": the surfaces never meet");
-    PairState s;
-    for (const ContactPoint& c : found)
-      add_point(s, c, p.kind == ContactKind::Tied || c.gap <= 1e-9 * p.search_distance);
-    states.push_back(std::move(s));
-  }
-  return states;
-}
-
-Eigen::Vector3d relative_position(const ContactPair& p, const ContactPoint& c, const std::vector<Eigen::VectorXd>& u,
-                                  int dim) {
-  Eigen::Vector3d r = c.separation;
-  for (int k = 0; k < dim; ++k) {
-    r[k] += u[p.slave_body][c.slave_node * dim + k];
-    for (size_t m = 0; m < c.master_nodes.size(); ++m) r[k] -= c.N[m] * u[p.master_body][c.master_nodes[m] * dim + k];
-  }
-  return r;
-}
-
-namespace {
 Mesh displaced(const Mesh& m, const Eigen::VectorXd& u) {
   Mesh d = m;
   for (size_t n = 0; n < d.nodes.size(); ++n)
     for (int k = 0; k < m.dim; ++k) d.nodes[n][k] += u[static_cast<Eigen::Index>(n) * m.dim + k];
   return d;
+}
+
+/// A turning master surface is one of revolution (ContactPair::master_turns): its true surface lies outside the
+/// facet, along the facet's normal, by the distance from the projection to the circle of the radius interpolated from
+/// the facet's nodes — the sagitta, up to L²/8R on a facet of length L. Without it a point carried along a fixed
+/// roll's facets would ride over every node's corner. Taken on the undeformed master (a correction of its facets'
+/// shape, not of its deformation): the offset a row holds is the one its point is found with again where the step
+/// ends, as the master deforms under it.
+void round_facet(const Mesh& master, const ContactPair& p, ContactPoint& c) {
+  if (!p.master_turns) return;
+  const Eigen::Vector3d centre(p.master_turns->center.data()), axis(p.master_turns->axis.data());
+  auto across = [&](const Eigen::Vector3d& v) -> Eigen::Vector3d { return v - v.dot(axis) * axis; };
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  double radius = 0;
+  for (size_t k = 0; k < c.master_nodes.size(); ++k) {
+    const auto& X = master.nodes[c.master_nodes[k]];
+    const Eigen::Vector3d x(X[0], X[1], X[2]);
+    point += c.N[k] * x;
+    radius += c.N[k] * across(x - centre).norm();
+  }
+  // |d + b n| = radius along the normal n from the projection, d its offset from the axis: b² + 2 b n·d + |d|² − r²
+  const Eigen::Vector3d d = across(point - centre), n = across(c.normal);
+  const double a = n.squaredNorm(), half = n.dot(d), rest = d.squaredNorm() - radius * radius;
+  c.offset = a > 0 ? (-half + std::sqrt(std::max(0.0, half * half - a * rest))) / a : 0.0;
+  c.gap -= c.offset;
 }
 
 /// X_s − Σ N_k X_k in the undeformed positions.
@@ -89,6 +83,39 @@ void carry(const PairState& from, size_t j, ContactPoint c, PairState& to) {
 }
 }  // namespace
 
+std::vector<PairState> search_contacts(const Model& model) {
+  std::vector<PairState> states;
+  for (const ContactPair& p : model.contacts) {
+    const Mesh& slave = model.bodies[p.slave_body].mesh;
+    const Mesh& master = model.bodies[p.master_body].mesh;
+    const std::vector<ContactPoint> found =
+        find_contact_points(slave, slave.surfaces.at(p.slave_surface), master, master.surfaces.at(p.master_surface),
+                            p.search_distance, p.box_search ? FacetCandidates::Boxes : FacetCandidates::All);
+    if (found.empty())
+      throw std::runtime_error("contact pair '" + p.name + "': no node of surface '" + p.slave_surface + "' of body '" +
+                               model.bodies[p.slave_body].name + "' lies over surface '" + p.master_surface +
+                               "' of body '" + model.bodies[p.master_body].name + "' within the search distance " +
+                               std::to_string(p.search_distance) + ": the surfaces never meet");
+    PairState s;
+    for (ContactPoint c : found) {
+      round_facet(master, p, c);
+      add_point(s, c, p.kind == ContactKind::Tied || c.gap <= 1e-9 * p.search_distance);
+    }
+    states.push_back(std::move(s));
+  }
+  return states;
+}
+
+Eigen::Vector3d relative_position(const ContactPair& p, const ContactPoint& c, const std::vector<Eigen::VectorXd>& u,
+                                  int dim) {
+  Eigen::Vector3d r = c.separation;
+  for (int k = 0; k < dim; ++k) {
+    r[k] += u[p.slave_body][c.slave_node * dim + k];
+    for (size_t m = 0; m < c.master_nodes.size(); ++m) r[k] -= c.N[m] * u[p.master_body][c.master_nodes[m] * dim + k];
+  }
+  return r;
+}
+
 void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs,
                      ContactPair::Sliding when, const std::vector<Eigen::VectorXd>* frames_at) {
   for (size_t i = 0; i < pairs.size(); ++i) {
@@ -106,6 +133,7 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
                                                master_now, master.surfaces.at(p.master_surface), p.search_distance,
                                                p.box_search ? FacetCandidates::Boxes : FacetCandidates::All)) {
       c.separation = reference_separation(slave, master, c);
+      round_facet(master, p, c);
       const auto it = was.find(c.slave_node);
       if (it == was.end()) {
         add_point(now, c, c.gap <= touch);
@@ -114,10 +142,17 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
       }
       const size_t j = it->second;
       const bool stuck = frictional(p.kind) && pairs[i].active[j] && !pairs[i].slip[j];
+      if (stuck && p.master_turns) {  // the material it sticks to is not the mesh's: projected anew, the same place
+        const Eigen::Vector3d shift =
+            relative_position(p, c, u, model.dim) - relative_position(p, pairs[i].points[j], u, model.dim);
+        carry(pairs[i], j, std::move(c), now);
+        now.anchor.back() += shift;
+        continue;
+      }
       if (stuck) {  // keeps its master point; the facet's frame turns
         ContactPoint kept = pairs[i].points[j];
         facet_frame(frames_at ? master_frames : master_now, kept.master_nodes, kept.N, kept);
-        kept.gap = kept.normal.dot(relative_position(p, kept, u, model.dim));
+        kept.gap = kept.normal.dot(relative_position(p, kept, u, model.dim)) - kept.offset;
         carry(pairs[i], j, std::move(kept), now);
         continue;
       }
@@ -125,6 +160,7 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
       carry(pairs[i], j, std::move(c), now);
       now.active.back() = now.active.back() || penetrates;
     }
+    now.master_turn = pairs[i].master_turn;
     pairs[i] = std::move(now);
   }
 }
@@ -136,15 +172,18 @@ void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
     if (p.slave_body != body) continue;
     const Mesh& slave = model.bodies[p.slave_body].mesh;
     const Mesh& master = model.bodies[p.master_body].mesh;
+    const Mesh master_now = displaced(master, u[p.master_body]);
     std::map<int, size_t> was;
     for (size_t j = 0; j < pairs[i].points.size(); ++j) was[pairs[i].points[j].slave_node] = j;
     PairState now;
-    const double touch = 1e-9 * p.search_distance;
-    for (ContactPoint& c :
-         find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
-                             displaced(master, u[p.master_body]), master.surfaces.at(p.master_surface),
-                             p.search_distance, p.box_search ? FacetCandidates::Boxes : FacetCandidates::All)) {
+    // a turning master's true surface: the window's placement and the contact interpolate its radius at points a
+    // rounding apart
+    const double touch = (p.master_turns ? 1e-6 : 1e-9) * p.search_distance;
+    for (ContactPoint& c : find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
+                                               master_now, master.surfaces.at(p.master_surface), p.search_distance,
+                                               p.box_search ? FacetCandidates::Boxes : FacetCandidates::All)) {
       c.separation = reference_separation(slave, master, c);
+      round_facet(master, p, c);
       if (const auto it = was.find(c.slave_node); it != was.end()) {
         carry(pairs[i], it->second, c, now);
         if (c.gap > touch) now.active.back() = 0;  // put off the master: free until it touches
@@ -152,7 +191,79 @@ void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
         add_point(now, c, c.gap <= touch);
       now.anchor.back() = relative_position(p, c, u, model.dim);
     }
+    now.master_turn = pairs[i].master_turn;
     pairs[i] = std::move(now);
+  }
+}
+
+namespace {
+Eigen::AngleAxisd step_rotation(const ContactPair& p, const PairState& s) {
+  const auto& a = p.master_turns->axis;
+  return Eigen::AngleAxisd(s.master_turn, Eigen::Vector3d(a[0], a[1], a[2]));
+}
+
+Eigen::Vector3d position(const Mesh& m, const Eigen::VectorXd& u, int node) {
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  for (int k = 0; k < m.dim; ++k) x[k] = m.nodes[node][k] + u[node * m.dim + k];
+  return x;
+}
+}  // namespace
+
+Eigen::Vector3d surface_travel(const Model& model, const ContactPair& p, const PairState& s, const ContactPoint& c,
+                               const std::vector<Eigen::VectorXd>& u) {
+  if (!p.master_turns || s.master_turn == 0) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d x = position(model.bodies[p.slave_body].mesh, u[p.slave_body], c.slave_node) -
+                            Eigen::Vector3d(p.master_turns->center.data());
+  return step_rotation(p, s) * x - x;
+}
+
+namespace {
+/// The pair's slave nodes projected where the master's turning material carries them over the step (u: its start),
+/// by slave node, each with its reference separation and the master's true surface (round_facet).
+std::map<int, ContactPoint> carried_projections(const Model& model, const ContactPair& p, const PairState& s,
+                                                const std::vector<Eigen::VectorXd>& u) {
+  const Mesh& slave = model.bodies[p.slave_body].mesh;
+  const Mesh& master = model.bodies[p.master_body].mesh;
+  Mesh carried = displaced(slave, u[p.slave_body]);
+  const Eigen::Vector3d centre(p.master_turns->center.data());
+  for (auto& x : carried.nodes) {
+    const Eigen::Vector3d y = step_rotation(p, s) * (Eigen::Vector3d(x[0], x[1], x[2]) - centre) + centre;
+    for (int k = 0; k < slave.dim; ++k) x[k] = y[k];
+  }
+  std::map<int, ContactPoint> out;
+  for (ContactPoint& c :
+       find_contact_points(carried, slave.surfaces.at(p.slave_surface), displaced(master, u[p.master_body]),
+                           master.surfaces.at(p.master_surface), p.search_distance,
+                           p.box_search ? FacetCandidates::Boxes : FacetCandidates::All)) {
+    c.separation = reference_separation(slave, master, c);
+    round_facet(master, p, c);
+    c.gap = c.normal.dot(relative_position(p, c, u, model.dim)) - c.offset;
+    out[c.slave_node] = std::move(c);
+  }
+  return out;
+}
+}  // namespace
+
+void turn_master_surfaces(const Model& model, const std::vector<Eigen::VectorXd>& u, double span,
+                          std::vector<PairState>& pairs) {
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& p = model.contacts[i];
+    if (!p.master_turns) continue;
+    PairState& s = pairs[i];
+    s.master_turn = span * p.master_turns->angle;
+    // each point projected where the material carries it over the step: its rows hold it to the master's true
+    // surface there, and a point that sticks — or enters during the step — ends on the projection it started from
+    // (no search again)
+    const std::map<int, ContactPoint> ahead = carried_projections(model, p, s, u);
+    for (size_t j = 0; j < s.points.size(); ++j) {
+      if (const auto it = ahead.find(s.points[j].slave_node); it != ahead.end()) {
+        const double weight = s.points[j].weight;
+        s.points[j] = it->second;
+        s.points[j].weight = weight;
+      }
+      if (s.active[j] && !s.slip[j])
+        s.anchor[j] = relative_position(p, s.points[j], u, model.dim) + surface_travel(model, p, s, s.points[j], u);
+    }
   }
 }
 
@@ -211,7 +322,7 @@ void point_rows(const ContactPair& p, const PairState& s, size_t j, int dim, int
     return;
   }
   ConstraintRow normal = relative_motion(p, c, c.normal, dim);
-  normal.rhs = -c.normal.dot(c.separation);  // the gap of the configuration the point was found in
+  normal.rhs = c.offset - c.normal.dot(c.separation);  // the gap of the configuration the point was found in
   add(std::move(normal), -1);
   if (!frictional(p.kind) || s.slip[j]) return;
   for (int k = 0; k + 1 < dim; ++k) {
@@ -251,7 +362,7 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
       if (pairs[i].active[j]) continue;
       const ContactPoint& c = pairs[i].points[j];
       const Eigen::Vector3d r = relative_position(p, c, u, model.dim);
-      if (c.normal.dot(r) >= -1e-9 * p.search_distance) continue;
+      if (c.normal.dot(r) - c.offset >= -1e-9 * p.search_distance) continue;
       next[i][j] = 1;
       pairs[i].anchor[j] = r;
       pairs[i].slip[j] = 0;

@@ -46,6 +46,7 @@ struct PairState {
   // the friction direction where the step began (a point slipping then), or where the point began to slip in this
   // step; zero for a point that sticks: the memory of the trial force (contact/Friction.h)
   std::vector<Eigen::Vector3d> start_direction;
+  double master_turn = 0;  // the turn of the master surface's material over the current step [radian]
 };
 
 /// True for the kinds with tangential rows while they stick (sticking, coulomb).
@@ -55,6 +56,19 @@ inline bool frictional(ContactKind k) { return k == ContactKind::Sticking || k =
 Eigen::Vector3d relative_position(const ContactPair& p, const ContactPoint& c, const std::vector<Eigen::VectorXd>& u,
                                   int dim);
 
+/// The displacement over the current step of the master's material under point c, when the pair's master surface
+/// turns (ContactPair::master_turns; zero otherwise): (R(θ) − I)(x_s − centre), x_s the slave node in the
+/// configuration u (where the step begins: on the master's surface where it touches) and θ the step's turn
+/// (PairState::master_turn).
+Eigen::Vector3d surface_travel(const Model& model, const ContactPair& p, const PairState& s, const ContactPoint& c,
+                               const std::vector<Eigen::VectorXd>& u);
+
+/// A step of load-factor span `span` begins at u: each pair whose master surface turns takes the step's share of its
+/// turn, and its sticking points are anchored where the material under them goes over the step — they move with the
+/// material, not with the master's mesh, which stays (an Eulerian roll). Call after the step's search.
+void turn_master_surfaces(const Model& model, const std::vector<Eigen::VectorXd>& u, double span,
+                          std::vector<PairState>& pairs);
+
 /// Contact search of every pair of the model; unilateral points start active (and sticking) where the gap is
 /// closed (gap ≤ 1e-9 of the search distance). Throws std::runtime_error naming a pair whose surfaces never meet.
 std::vector<PairState> search_contacts(const Model& model);
@@ -63,7 +77,9 @@ std::vector<PairState> search_contacts(const Model& model);
 /// dof of every body, node-major), so that a slave node travels from master facet to master facet. A slave node keeps
 /// its active flag and friction state; a node new to the pair is active where it touches or penetrates. A point that
 /// sticks keeps its master point, its normal and tangents turned with the master facet — as it is in u, or in
-/// `frames_at` when given (where the step is expected to end: analysis.contact_frames).
+/// `frames_at` when given (where the step is expected to end: analysis.contact_frames) —, unless the master surface
+/// turns under a mesh that stays (ContactPair::master_turns): it is projected anew then, its anchor the same place
+/// on the master.
 void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, std::vector<PairState>& pairs,
                      ContactPair::Sliding when, const std::vector<Eigen::VectorXd>* frames_at = nullptr);
 

@@ -15,8 +15,9 @@ struct ContactPoint {
   std::vector<int> master_nodes;    // nodes of the master facet holding the projection
   std::vector<double> N;            // their shape function values at the projection (sum 1)
   Eigen::Vector3d normal{0, 0, 0};  // master outward unit normal at the projection (points towards the slave)
-  double gap = 0;                   // normal · (x_slave − x_projection): > 0 open, < 0 penetrating [length]
-  double weight = 0;                // tributary length (2D) / area (3D) of the slave node on the slave surface
+  double gap = 0;     // normal · (x_slave − x_projection) − offset: > 0 open, < 0 penetrating [length]
+  double offset = 0;  // how far the master's true surface lies outside the facet, along the normal [length]
+  double weight = 0;  // tributary length (2D) / area (3D) of the slave node on the slave surface
   // X_slave − Σ N_k X_k in the undeformed positions: a row along `dir` reads dir · (u_s − Σ N_k u_k) = −dir ·
   // separation, the current gap being normal · (separation + u_s − Σ N_k u_k)
   Eigen::Vector3d separation{0, 0, 0};

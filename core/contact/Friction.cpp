@@ -76,7 +76,9 @@ int update_friction(const Model& model, const std::vector<ConstraintRow>& rows, 
       // slipping: the friction force points along the trial force δ d₀ − v_t (Friction.h). A trial force inside the
       // cone sticks the point where the step began — once per step: a point at the limit with next to no slip could
       // go round stick, over μN, slip, inside... at every iteration; the second time it slips on.
-      const Eigen::Vector3d start = relative_position(p, c, u_start, model.dim);
+      // where it would be had it stuck: its place at the step's start, moved with a turning master's material
+      const Eigen::Vector3d start =
+          relative_position(p, c, u_start, model.dim) + surface_travel(model, p, s, c, u_start);
       const Eigen::Vector3d v = tangential_part(relative_position(p, c, u, model.dim) - start, c.normal);
       const double delta = elastic_slip(p, c, model.dim);
       const Eigen::Vector3d trial = tangential_part(delta * s.start_direction[j], c.normal) - v;
@@ -178,7 +180,8 @@ void accumulate_slip(const Model& model, const std::vector<Eigen::VectorXd>& u,
     for (size_t j = 0; j < s.points.size(); ++j) {
       if (!s.active[j]) continue;
       const ContactPoint& c = s.points[j];
-      const Eigen::Vector3d v = relative_position(p, c, u, model.dim) - relative_position(p, c, u_start, model.dim);
+      const Eigen::Vector3d v = relative_position(p, c, u, model.dim) - relative_position(p, c, u_start, model.dim) -
+                                surface_travel(model, p, s, c, u_start);
       s.slid[j] += tangential_part(v, c.normal).norm();
     }
   }

@@ -10,6 +10,10 @@
 namespace rollsim {
 
 double RollPolygon::lower_surface(double x) const {
+  if (n_around <= 0) {  // the circle itself
+    const double d = radius * radius - (x - cx) * (x - cx);
+    return d > 0 ? ct - std::sqrt(d) : std::numeric_limits<double>::infinity();
+  }
   double best = std::numeric_limits<double>::infinity();
   const double step = 2 * std::numbers::pi / n_around;
   for (int k = 0; k < n_around; ++k) {  // the chords of the lower half that span x

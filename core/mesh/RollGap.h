@@ -9,7 +9,8 @@
 namespace rollsim {
 
 /// The roll's outer polygon in the rolling plane: axis at (x, t) = (cx, ct), radius R through its nodes, n_around
-/// nodes starting at angle 0 (the annulus and cylinder generators' layout).
+/// nodes starting at angle 0 (the annulus and cylinder generators' layout); n_around 0: the circle itself (a fixed
+/// roll, whose contact holds the slab to its true surface).
 struct RollPolygon {
   double cx = 0, ct = 0, radius = 1;
   int n_around = 120;

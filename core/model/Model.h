@@ -122,6 +122,10 @@ struct ContactPair {
   // (0: none); and the share of the friction work, μ N × slip, that heats the slave (the rest heats the master)
   double conductance = 0;
   double friction_heat_to_slave = 0.5;
+  // the master surface's material turns by this rotation over the analysis while its mesh stays in place (an Eulerian
+  // roll: its elastic field is steady in space, so its mesh need not turn): a point sticks to the turning material,
+  // and slips against it (contact/ContactConstraints.h turn_master_surfaces)
+  std::optional<RigidRotation> master_turns;
 };
 
 /// Heat a body's surface gives to the air around it: convection h (T − T_air) and radiation ε σ (T⁴ − T_air⁴) per

@@ -212,6 +212,17 @@ void check_contact(const json& c, const std::string& path, const json& bodies, i
                         "no surface '" + surface + "' in body '" + body_name + "' (available: " + join(names) + ")"});
     found[r] = body_name;
   }
+  if (c.contains("master_turns")) {
+    check_rotation(c.at("master_turns"), path + ".master_turns", dim, issues);
+    if (c.value("sliding", "small") == "small")
+      issues.push_back({path + ".sliding",
+                        "a turning master surface (master_turns) needs large sliding: its "
+                        "material moves along the surface"});
+    if (c.value("conductance", 0.0) > 0)
+      issues.push_back({path + ".master_turns",
+                        "not with a conductance: the master's heat would stay where its "
+                        "mesh is, not turn with its material"});
+  }
   if (!found[0].empty() && found[0] == found[1])
     issues.push_back({path, "slave and master are the same body '" + found[0] +
                                 "' (self-contact is not supported; name two different bodies)"});
@@ -489,6 +500,7 @@ void add_contacts(Model& model, const json& d) {
     using S = ContactPair::Sliding;
     if (p.kind != ContactKind::Tied)
       p.sliding = sliding == "large_every_iteration" ? S::Iteration : sliding == "large" ? S::Step : S::Small;
+    if (c.contains("master_turns")) p.master_turns = rigid_rotation(c.at("master_turns"));
     model.contacts.push_back(std::move(p));
   }
 }

@@ -385,6 +385,18 @@ const ObjectSchema kBC{"boundary condition",
                         {"traction", &kTraction},
                         {"body_force", &kBodyForce}}};
 
+const ObjectSchema kSurfaceTurn{
+    "turning master surface",
+    "The master surface's material turns about an axis while its mesh stays in place: a roll's surface moving under "
+    "a mesh that does not turn (an Eulerian roll — its elastic field is steady in space, so a linear elastic roll "
+    "with small kinematics is assembled and factored once). A sticking point moves with the turning material and a "
+    "slipping one slips against it. Large sliding only; not with a conductance (the master's heat would stay where "
+    "its mesh is).",
+    {req(vec("center", "length", "a point of the axis")),
+     vec("axis", "-", "direction of the axis (3D, required; 2D: the z axis, not given)", 3),
+     req(num("angle", "degree", "the turn at the end of the analysis, right-hand rule about the axis"))},
+    "",
+    {}};
 const ObjectSchema kContact{
     "contact pair",
     "Contact between two bodies through Lagrange multipliers on the slave surface's nodes (node-to-segment in 2D, "
@@ -430,6 +442,11 @@ const ObjectSchema kContact{
                   "heat transfer across the pair where it touches, h_c (T_master − T_slave) per unit area (= "
                   "N/(mm·s·K) with mm, N and s; roll and hot slab 10–50): both bodies must conduct (the `heat` "
                   "section)"),
+     [] {
+       Field f = object("master_turns", kSurfaceTurn, "the master surface's material turns under a mesh that stays");
+       f.default_value = json();
+       return f;
+     }(),
      def(bounded(num("friction_heat_to_slave", "-",
                      "the share of the friction work (friction force × slip) that heats the slave body; the rest "
                      "heats the master"),

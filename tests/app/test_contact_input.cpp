@@ -61,6 +61,16 @@ TEST(ContactInput, ValidationNamesThePathAndReason) {
        json::array({0, 0, 0, -1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}), "bodies[0].partition_map[3]",
        "must be a subdomain id"},
       {"more METIS parts than elements", "/bodies/1/partition", "metis:9", "bodies[1].partition", "metis:9"},
+      {"a turning master without large sliding",
+       "/contacts/0/master_turns",
+       {{"center", {3, -10}}, {"angle", 5}},
+       "contacts[0].sliding",
+       "a turning master surface (master_turns) needs large sliding"},
+      {"a turning master's axis in 2D",
+       "/contacts/0/master_turns",
+       {{"center", {3, -10}}, {"angle", 5}, {"axis", {0, 0, 1}}},
+       "contacts[0].master_turns.axis",
+       "not allowed in a 2D model"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);

@@ -24,7 +24,8 @@ double along(const std::vector<std::array<double, 2>>& points, double x) {
 }
 }  // namespace
 
-RollingAle::RollingAle(const RollingPass& pass, const Model& model) : slab_(pass.slab), roll_(pass.roll) {
+RollingAle::RollingAle(const RollingPass& pass, const Model& model)
+    : slab_(pass.slab), roll_(pass.roll), surface_(pass, model) {
   const Mesh& slab = model.bodies[static_cast<size_t>(slab_)].mesh;
   if (slab.dim != 2) throw std::logic_error("ALE rolling: plane strain only");
   std::map<double, std::vector<int>> by_x;
@@ -50,8 +51,11 @@ double RollingAle::top_at(double x, const Top& top, const Positions& roll) const
   double under = std::numeric_limits<double>::infinity();
   for (const auto& [a, b] : roll_edges_) {  // the roll's lower side: the lowest of its edges that span x
     const double x0 = roll[a][0], x1 = roll[b][0];
-    if (x < std::min(x0, x1) || x > std::max(x0, x1) || x0 == x1) continue;
-    under = std::min(under, roll[a][1] + (roll[b][1] - roll[a][1]) * (x - x0) / (x1 - x0));
+    if (x < std::min(x0, x1) || x > std::max(x0, x1) || x0 == x1 || !surface_.lower(roll[a])) continue;
+    const double t = (x - x0) / (x1 - x0);
+    under = std::min(under, surface_.round ? surface_.lower_side(
+                                                 x, surface_.radius(roll[a]) * (1 - t) + surface_.radius(roll[b]) * t)
+                                           : roll[a][1] + (roll[b][1] - roll[a][1]) * t);
   }
   const std::array<double, 2>&p = top.before_last_free, &q = top.last_free;
   if (x < top.arc_from && x > q[0] && q[0] > p[0])  // entering: the free top's line until it meets the roll

@@ -15,6 +15,7 @@
 
 #include "analysis/MeshMotion.h"
 #include "model/Model.h"
+#include "process/rolling/RollSurface.h"
 #include "process/rolling/RollingPass.h"
 
 namespace rollsim {
@@ -50,6 +51,7 @@ class RollingAle final : public MeshMotion {
   std::vector<Column> columns_;                 // by x
   std::vector<int> entry_;                      // the entry face's nodes, bottom to top
   std::vector<std::array<int, 2>> roll_edges_;  // the roll's outer surface, node pairs
+  RollSurface surface_;
 };
 
 }  // namespace rollsim

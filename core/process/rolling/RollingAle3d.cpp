@@ -36,7 +36,8 @@ bool inside_xy(const std::array<std::array<double, 3>, 4>& q, double x, double y
 }
 }  // namespace
 
-RollingAle3d::RollingAle3d(const RollingPass& pass, const Model& model) : slab_(pass.slab), roll_(pass.roll) {
+RollingAle3d::RollingAle3d(const RollingPass& pass, const Model& model)
+    : slab_(pass.slab), roll_(pass.roll), surface_(pass, model) {
   const Mesh& slab = model.bodies[static_cast<size_t>(slab_)].mesh;
   // a column: the nodes of one (x, y), by height; a line: the nodes of one (y, level), by x
   std::map<std::pair<double, double>, std::vector<int>> columns;
@@ -108,11 +109,14 @@ double RollingAle3d::roll_under(double x, double y, const Positions& roll) const
       lo_y = std::min(lo_y, q[a][1]), hi_y = std::max(hi_y, q[a][1]);
     }
     double s, t;
-    if (x < lo_x || x > hi_x || y < lo_y || y > hi_y || !inside_xy(q, x, y, s, t)) continue;
+    if (x < lo_x || x > hi_x || y < lo_y || y > hi_y || !surface_.lower(q[0]) || !inside_xy(q, x, y, s, t)) continue;
     constexpr int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
-    double z = 0;
-    for (size_t a = 0; a < 4; ++a) z += 0.25 * (1 + sx[a] * s) * (1 + sy[a] * t) * q[a][2];
-    under = std::min(under, z);
+    double z = 0, r = 0;
+    for (size_t a = 0; a < 4; ++a) {
+      const double N = 0.25 * (1 + sx[a] * s) * (1 + sy[a] * t);
+      z += N * q[a][2], r += N * surface_.radius(q[a]);
+    }
+    under = std::min(under, surface_.round ? surface_.lower_side(x, r) : z);
   }
   return under;
 }

@@ -12,6 +12,7 @@
 
 #include "analysis/MeshMotion.h"
 #include "model/Model.h"
+#include "process/rolling/RollSurface.h"
 #include "process/rolling/RollingPass.h"
 
 namespace rollsim {
@@ -34,6 +35,7 @@ class RollingAle3d final : public MeshMotion {
   std::vector<char> top_;                        // per line: on the top face
   std::vector<int> entry_;                       // the entry face's nodes
   std::vector<std::array<int, 4>> roll_facets_;  // the roll's outer surface
+  RollSurface surface_;
 };
 
 }  // namespace rollsim

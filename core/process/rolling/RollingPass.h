@@ -35,6 +35,7 @@ struct RollingPass {
   double temperature = 0;            // the slab's temperature with a law [°C]
   double mean_strain_rate = 0;       // the rate its mean flow stress is taken at [1/s]
   double roll_E = 0, roll_nu = 0.3;  // the roll's elasticity (E 0: a rigid roll) [stress, -]
+  bool roll_fixed = false;           // the roll's mesh stays, its surface's material turns (process.roll_mesh: fixed)
   double friction = -1;  // Coulomb's μ of the roll–slab contact (frictionless: 0); −1: sticking (always bites) [-]
   RadiusProfile profile;  // 3D: the radius's change (≤ 0) by distance from the barrel's centre [length]
   // a schedule's passes (process.passes) as its facts list them, each {draft, roll}; empty: a single pass

@@ -152,6 +152,11 @@ const ObjectSchema& rolling_process_schema() {
               "the roll: elastic (its hub turned, the ring deforms: roll flattening) or rigid (every node of the ring "
               "turned as one body; nothing of the roll is factored: faster, and beside an elastic run a measure of "
               "what flattening changes)"),
+       choice("roll_mesh", {"turning", "fixed"}, "turning",
+              "the roll's mesh: turning with its hub (finite kinematics: its tangent assembled and factored anew as "
+              "it turns) or fixed in place while its surface's material turns (contacts[].master_turns: an Eulerian "
+              "roll — its elastic field is steady in space — with small kinematics: an elastic roll is assembled "
+              "and factored once). Not with heat_transfer: the roll's heat would stay where its mesh is"),
        def(boolean(
                "width_symmetry",
                "3D: model half the width, with a symmetry plane at y = 0 (the pass is symmetric about it). false: the "
@@ -384,6 +389,10 @@ void check_ignored(const json& project, std::vector<Issue>& issues) {
                       "has no effect without process.slab_flow_stress or process.heat_transfer "
                       "(slab_yield_stress does not depend on temperature): give the slab a flow stress law"});
   }
+  if (p.at("roll_mesh") == "fixed" && p.contains("heat_transfer"))
+    issues.push_back({"process.roll_mesh",
+                      "fixed is not for a pass with heat_transfer: the roll's heat would stay "
+                      "where its mesh is, not turn with its surface (set it to turning)"});
   if (project.at("analysis").value("duration", 0.0) > 0)
     issues.push_back({"analysis.duration",
                       "a rolling pass's time follows from process.roll_speed (the travel over "
@@ -588,13 +597,14 @@ json expand_rolling(const json& project) {
   out["materials"].push_back(
       {{"name", "roll"}, {"model", "linear_elastic"}, {"E", p.at("roll_E")}, {"nu", p.at("roll_nu")}});
   const int around = p.at("roll_n_around");
+  const bool fixed_roll = p.at("roll_mesh") == "fixed";  // its contact holds the slab to its circle, not its chords
   // the slab from −L to the exit plane, or an ALE window from −entry to exit, flat at the gap past the exit plane
   const auto [entry, exit] = is_ale(p) ? ale_window(p, dim) : std::pair{L, 0.0};
   json slab_mesh = {{"type", "block"},
                     {"nx", p.at("slab_nx")},
                     {"lx", entry + exit},
                     {"x_grading", p.at("grading")},
-                    {"roll_cut", {{"center", {0.0, axis}}, {"radius", R}, {"n_around", around}}}};
+                    {"roll_cut", {{"center", {0.0, axis}}, {"radius", R}, {"n_around", fixed_roll ? 0 : around}}}};
   if (is_ale(p)) slab_mesh["roll_cut"]["flat_exit"] = true;
   json roll_mesh = {{"inner_radius", p.at("roll_hub_radius")},
                     {"outer_radius", R},
@@ -636,7 +646,7 @@ json expand_rolling(const json& project) {
   out["bodies"].push_back({{"name", "roll"},
                            {"material", "roll"},
                            {"formulation", "full"},
-                           {"kinematics", "finite"},
+                           {"kinematics", fixed_roll ? "small" : "finite"},
                            {"mesh", roll_mesh},
                            {"node_sets", json::array()}});
   const std::string top = dim == 2 ? "ymax" : "zmax", mid = dim == 2 ? "ymin" : "zmin";
@@ -660,7 +670,8 @@ json expand_rolling(const json& project) {
   // the hub turns so that the roll's lowest point moves along +x: counter-clockwise about z in 2D, about −y in 3D
   const double turn = p.at("travel").get<double>() / R * 180.0 / M_PI;
   const std::string turned = p.at("roll") == "rigid" ? "all" : "inner";
-  json hub = {{"type", "rotation"}, {"body", "roll"}, {"set", turned}, {"angle", turn}};
+  // a fixed roll's hub stays (a rotation by 0: its centre and axis are the pass's measures'), its surface turns
+  json hub = {{"type", "rotation"}, {"body", "roll"}, {"set", turned}, {"angle", fixed_roll ? 0.0 : turn}};
   if (dim == 2) {
     hub["center"] = {0.0, axis};
   } else {
@@ -673,6 +684,11 @@ json expand_rolling(const json& project) {
     // sideways under the arc's pressure: the half-width pass was not the whole width's)
     if (half_width(p) && p.at("roll") != "rigid")
       bcs.push_back({{"type", "symmetry"}, {"body", "roll"}, {"set", "ymin"}, {"normal", "y"}});
+  }
+  if (fixed_roll) {
+    json turns = {{"center", hub.at("center")}, {"angle", turn}};
+    if (dim == 3) turns["axis"] = hub.at("axis");
+    out["contacts"].back()["master_turns"] = turns;
   }
   bcs.push_back(hub);
   out["analysis"]["increments"] =
@@ -744,6 +760,7 @@ RollingPass rolling_pass(const json& section, const Model& model) {
     pass.mean_strain_rate = pass_strain_and_rate(p).second;
   }
   if (p.at("roll") == "elastic") pass.roll_E = p.at("roll_E"), pass.roll_nu = p.at("roll_nu");
+  pass.roll_fixed = p.at("roll_mesh") == "fixed";
   const std::string friction = p.at("friction");
   if (friction != "sticking") pass.friction = friction == "coulomb" ? friction_coefficient(p) : 0.0;
   if (model.dim == 3) pass.profile = roll_profile(p);

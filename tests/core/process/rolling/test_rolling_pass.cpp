@@ -126,6 +126,34 @@ TEST(RollingPass, RigidRollIsDrivenWithoutFactoringAndCarriesTheContactForce) {
   EXPECT_NEAR(rigid_last.exit_thickness, 86.8, 0.005 * 86.8);
 }
 
+// A fixed roll (process.roll_mesh: fixed) stays where it is meshed while its surface's material turns: linear, it is
+// assembled and factored once under the selective update (again only after a cut-back), where the turning roll is
+// factored at most steps.
+// Its contact holds the slab to its circle, not its facets' chords: on a coarse roll of 60 facets (31 mm long, their
+// sagitta 0.41 mm) its force over 20–30 mm of travel is a fine turning roll's (240 facets) within 0.2 %, where the
+// coarse turning roll's is 2 % below it.
+TEST(RollingPass, AFixedRollIsFactoredOnceAndTheSlabMeetsItsCircle) {
+  auto run = [](const std::string& mesh, int around) {
+    nlohmann::json j = testing_support::paper_pass_2d(30.0, 1.0);
+    j["process"].update({{"roll_mesh", mesh}, {"roll_n_around", around}});
+    j["solver"] = {{"mode", "mixed"}, {"update", "selective"}, {"cg_tolerance", 1e-10}};
+    const testing_support::PassRun r = testing_support::run_pass(j);
+    EXPECT_TRUE(r.status.ok()) << mesh << " " << around << ": " << r.status.message;
+    double sum = 0;
+    int n = 0;
+    for (const RollingIncrement& i : r.rolling->increments)
+      if (i.travel >= 20) sum += i.roll_force, ++n;
+    return std::pair{sum / n, r.solver.factorizations.at("roll")};
+  };
+  const auto [fixed, fixed_factors] = run("fixed", 60);
+  const auto [coarse, coarse_factors] = run("turning", 60);
+  const auto [fine, fine_factors] = run("turning", 240);
+  EXPECT_LE(fixed_factors, 2);
+  EXPECT_GE(coarse_factors, 20);
+  EXPECT_NEAR(fixed, fine, 0.002 * fine);
+  EXPECT_LT(coarse, 0.99 * fine) << "the coarse turning roll's chords";
+}
+
 // A pass whose friction cannot draw the slab in is answered `no_bite` before anything is solved, with the numbers:
 // the paper's draft (13.2 mm on R 300 mm) has a bite angle of 12.04°, tan α = 0.213; μ = 0.1 bites at most 2.98 mm.
 // Frictionless cannot bite at all; μ = 0.3 and sticking friction bite.

@@ -102,6 +102,39 @@ TEST(RollingProcess, GeneratesAPreBittenSlabTouchingTheRollAlongTheArc) {
   }
 }
 
+// process.roll_mesh: fixed — the roll stays where it is meshed (its hub turned by 0, small kinematics: linear) and
+// its surface's material turns by travel / R through the contact (master_turns about the hub's axis); the slab is cut
+// to the roll's circle, which the contact holds it to, not to its chords. A pass with heat is refused: the roll's
+// heat would stay where its mesh is.
+TEST(RollingProcess, AFixedRollStaysWhereItIsMeshedAndItsSurfaceTurns) {
+  for (const int dim : {2, 3}) {
+    SCOPED_TRACE(dim);
+    const Model m = rolling(dim, {{"roll_mesh", "fixed"}});
+    EXPECT_EQ(m.bodies[1].kinematics, Kinematics::Small);
+    EXPECT_EQ(rolling(dim).bodies[1].kinematics, Kinematics::Finite);
+    const DisplacementBC& hub = m.displacements[static_cast<size_t>(pass_of(dim, {{"roll_mesh", "fixed"}}).hub)];
+    EXPECT_EQ(hub.rotation->angle, 0.0);
+    ASSERT_TRUE(m.contacts[0].master_turns.has_value());
+    EXPECT_NEAR(m.contacts[0].master_turns->angle, 100.0 / 300.0, 1e-12);  // the default 100 mm of travel on R 300
+    EXPECT_EQ(m.contacts[0].master_turns->center, hub.rotation->center);
+    EXPECT_EQ(m.contacts[0].master_turns->axis, hub.rotation->axis);
+    EXPECT_FALSE(rolling(dim).contacts[0].master_turns.has_value());
+    const int up = dim - 1;
+    const double axis = hub.rotation->center[static_cast<size_t>(up)];
+    int on_circle = 0;  // the top over the arc, cut to the circle (the turning roll's slab: to its chords)
+    for (const auto& x : m.bodies[0].mesh.nodes) {
+      const double circle = axis - std::sqrt(300.0 * 300.0 - x[0] * x[0]), h = x[static_cast<size_t>(up)];
+      if (x[0] <= -60 || x[0] >= 0 || std::abs(h - circle) > 1) continue;
+      EXPECT_NEAR(h, circle, 1e-9);
+      ++on_circle;
+    }
+    EXPECT_GT(on_circle, 0);
+  }
+  const std::string heat =
+      refusal({{"type", "rolling"}, {"roll_mesh", "fixed"}, {"heat_transfer", json::object()}, {"roll_speed", 30.0}});
+  EXPECT_NE(heat.find("process.roll_mesh: fixed is not for a pass with heat_transfer"), std::string::npos) << heat;
+}
+
 TEST(RollingProcess, ExitThicknessInsteadOfReduction) {
   // the paper's 13.2 % given as the exit thickness 86.8 mm builds the same pass, node for node
   const Model by_reduction = rolling(2), by_exit = rolling(2, {{"exit_thickness", 86.8}});
