@@ -292,6 +292,8 @@ Model remeshed_model(const Model& model, const Model& original, const Results& d
     hold_node_temperatures(moved);
   }
   for (DisplacementBC& bc : next.displacements) bc = rest_of(bc, lf);
+  for (ContactPair& p : next.contacts)  // what is left of a turning master surface's turn
+    if (p.master_turns) p.master_turns->angle *= 1 - lf;
   return next;
 }
 

@@ -393,6 +393,11 @@ void check_ignored(const json& project, std::vector<Issue>& issues) {
     issues.push_back({"process.roll_mesh",
                       "fixed is not for a pass with heat_transfer: the roll's heat would stay "
                       "where its mesh is, not turn with its surface (set it to turning)"});
+  if (p.at("roll_mesh") == "fixed" && project.at("analysis").value("remesh_quality", 0.0) > 0)
+    issues.push_back({"process.roll_mesh",
+                      "fixed is not for a pass that remeshes (analysis.remesh_quality): a remesh restarts every body "
+                      "from its current shape, and the fixed roll, small-strain, would lose its stress (set it to "
+                      "turning)"});
   if (project.at("analysis").value("duration", 0.0) > 0)
     issues.push_back({"analysis.duration",
                       "a rolling pass's time follows from process.roll_speed (the travel over "

@@ -104,8 +104,8 @@ TEST(RollingProcess, GeneratesAPreBittenSlabTouchingTheRollAlongTheArc) {
 
 // process.roll_mesh: fixed — the roll stays where it is meshed (its hub turned by 0, small kinematics: linear) and
 // its surface's material turns by travel / R through the contact (master_turns about the hub's axis); the slab is cut
-// to the roll's circle, which the contact holds it to, not to its chords. A pass with heat is refused: the roll's
-// heat would stay where its mesh is.
+// to the roll's circle, which the contact holds it to, not to its chords. A pass with heat is refused (the roll's
+// heat would stay where its mesh is), and one that remeshes (the small-strain roll would lose its stress).
 TEST(RollingProcess, AFixedRollStaysWhereItIsMeshedAndItsSurfaceTurns) {
   for (const int dim : {2, 3}) {
     SCOPED_TRACE(dim);
@@ -133,6 +133,9 @@ TEST(RollingProcess, AFixedRollStaysWhereItIsMeshedAndItsSurfaceTurns) {
   const std::string heat =
       refusal({{"type", "rolling"}, {"roll_mesh", "fixed"}, {"heat_transfer", json::object()}, {"roll_speed", 30.0}});
   EXPECT_NE(heat.find("process.roll_mesh: fixed is not for a pass with heat_transfer"), std::string::npos) << heat;
+  const std::string remesh =
+      refusal({{"type", "rolling"}, {"roll_mesh", "fixed"}}, 2, {{"analysis", {{"remesh_quality", 0.5}}}});
+  EXPECT_NE(remesh.find("process.roll_mesh: fixed is not for a pass that remeshes"), std::string::npos) << remesh;
 }
 
 TEST(RollingProcess, ExitThicknessInsteadOfReduction) {
