@@ -40,6 +40,7 @@ RollingAle::RollingAle(const RollingPass& pass, const Model& model)
     columns_.push_back(std::move(c));
   }
   entry_ = columns_.front().nodes;
+  entry_height_ = slab.nodes[static_cast<size_t>(entry_.back())][1];
   const Mesh& roll = model.bodies[static_cast<size_t>(roll_)].mesh;
   for (const Facet& f : roll.surfaces.at("outer")) {
     const std::vector<int> local = facet_local_nodes(roll.type, f.local);
@@ -84,7 +85,10 @@ MeshMotion::Positions RollingAle::placed(const std::vector<Positions>& current,
     throw AnalysisError("the slab's top surface has folded over itself: it cannot be followed");
   Positions out = slab;
   for (const Column& c : columns_) {
-    const double height = top_at(c.x, top, roll);
+    // the entry column, where material has flowed in: its virgin height (RollingAle3d: the entry face kept each
+    // step's rise ahead of the arc)
+    const bool inflowed = &c == &columns_.front() && slab[static_cast<size_t>(c.nodes.back())][0] > c.x;
+    const double height = inflowed ? entry_height_ : top_at(c.x, top, roll);
     if (!(height > 0)) {
       char text[160];
       std::snprintf(text, sizeof text, "the slab has no thickness left at x = %.4g mm", c.x);

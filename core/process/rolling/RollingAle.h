@@ -50,6 +50,7 @@ class RollingAle final : public MeshMotion {
   int slab_ = 0, roll_ = 1;
   std::vector<Column> columns_;                 // by x
   std::vector<int> entry_;                      // the entry face's nodes, bottom to top
+  double entry_height_ = 0;                     // its top as meshed: the virgin material's
   std::vector<std::array<int, 2>> roll_edges_;  // the roll's outer surface, node pairs
   RollSurface surface_;
 };

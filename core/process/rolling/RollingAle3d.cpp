@@ -59,6 +59,7 @@ RollingAle3d::RollingAle3d(const RollingPass& pass, const Model& model)
     if (nodes.size() != x_.size()) throw std::logic_error("ALE rolling: the slab's window is not a structured block");
     lines_.push_back(nodes);
     top_.push_back(key.second + 1 == levels);
+    entry_of_.push_back(slab.nodes[static_cast<size_t>(nodes.front())]);
   }
   entry_ = slab.node_sets.at("xmin");
   const Mesh& roll = model.bodies[static_cast<size_t>(roll_)].mesh;
@@ -135,7 +136,10 @@ MeshMotion::Positions RollingAle3d::placed(const std::vector<Positions>& current
     for (size_t i = 0; i < line.size(); ++i) {
       const double X = x_[i];
       while (seg + 2 < line.size() && slab[static_cast<size_t>(line[seg + 1])][0] < X) ++seg;
+      // the entry plane, where the material has flowed in: its virgin section (held to the line's first moved node,
+      // the entry face kept whatever the step's bulge ahead of the arc gave it, and the window's width grew)
       std::array<double, 3> p = crossing(slab, line, seg, X);
+      if (i == 0 && slab[static_cast<size_t>(line[0])][0] > X) p = entry_of_[l];
       if (top_[l]) {
         const double under = roll_under(X, p[1], roll);
         if (std::isfinite(under) && (touching[static_cast<size_t>(line[i])] || p[2] > under)) p[2] = under;

@@ -33,6 +33,7 @@ class RollingAle3d final : public MeshMotion {
   std::vector<double> x_;                        // the window's node planes along x, ascending
   std::vector<std::vector<int>> lines_;          // per material line: its nodes by x (one per plane)
   std::vector<char> top_;                        // per line: on the top face
+  std::vector<std::array<double, 3>> entry_of_;  // per line: its first node as meshed (the virgin entry section)
   std::vector<int> entry_;                       // the entry face's nodes
   std::vector<std::array<int, 4>> roll_facets_;  // the roll's outer surface
   RollSurface surface_;

@@ -41,9 +41,13 @@ constexpr double kSteadySpread = 0.01;
 
 /// The first increment (1-based) at which the means of roll force and torque over the `window` of travel before it
 /// and over the window before that agree within kSteadyTolerance — with `shape`, the mean spread's too (within
-/// kSteadyTolerance of it plus kSteadySpread: an ALE pass in 3D, whose force settles long before its free side does);
-/// 0 when none does (or the travel is shorter than two windows).
-int steady_state_from(const std::vector<RollingIncrement>& history, double window, bool shape = false);
+/// kSteadyTolerance of it plus kSteadySpread: an ALE pass in 3D, whose force settles long before its free side does),
+/// and every spread of the last window within that band about its mean (no overshoot on its way down), and not
+/// before `flushed` mm of travel (an ALE window's length: the side's shape is carried out of the window by its
+/// material, and until the material it started with has left, what leaves was not rolled from the entry); 0 when
+/// none does (or the travel is shorter than two windows).
+int steady_state_from(const std::vector<RollingIncrement>& history, double window, bool shape = false,
+                      double flushed = 0);
 
 /// An increment's exit thickness, spread and mean spread (RollingIncrement's; the rest zero), from the slab's nodes
 /// past the exit plane on the increment's model.

@@ -56,15 +56,23 @@ MeasureRow RollingRun::measure(const IncrementResults& increment) const {
 
 std::string RollingRun::steady() const {
   const double window = kSteadyWindow * rolling_theory(pass_).contact_length;
-  const int from = steady_state_from(live_, window, shape_steady());
+  const int from = steady_state_from(live_, window, shape_steady(), pass_.ale_entry + pass_.ale_exit);
   if (from == 0) return {};
-  char text[300];
+  char text[400];
   std::snprintf(text, sizeof text,
                 "the pass is steady at travel %.4g mm (process.stop_at_steady_state): the means of roll force and "
                 "torque%s over the last two windows of %.3g mm of travel agree within %g %%",
                 live_[static_cast<size_t>(from - 1)].travel, shape_steady() ? " and the mean spread" : "", window,
                 100 * kSteadyTolerance);
-  return text;
+  std::string said = text;
+  if (shape_steady()) {
+    std::snprintf(text, sizeof text,
+                  ", the spread within %g %% + %g mm at every increment of the last window, and the window's first "
+                  "material has left it (%.4g mm of travel)",
+                  100 * kSteadyTolerance, kSteadySpread, pass_.ale_entry + pass_.ale_exit);
+    said += text;
+  }
+  return said;
 }
 
 std::string RollingRun::over(const IncrementResults& increment) const {

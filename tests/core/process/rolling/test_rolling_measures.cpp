@@ -107,6 +107,29 @@ TEST(RollingMeasures, WithTheShapeNotSteadyWhileTheMeanSpreadStillGrows) {
   EXPECT_EQ(steady_state_from(settled, 31.45, true), steady_state_from(settled, 31.45));
 }
 
+TEST(RollingMeasures, WithTheShapeAnOvershootIsNotSteadyOnItsWayDown) {
+  // the spread rises to 1.55 mm at 130 mm of travel and decays to 1.30 over about 80 mm, as the 3D ALE window's: two
+  // windows about the peak have equal means, yet the spread is 15 % above where it settles
+  std::vector<RollingIncrement> h = history(200);
+  for (RollingIncrement& r : h) {
+    const double t = r.travel;
+    r.mean_spread = t < 130 ? 1.55 * t / 130 : 1.30 + 0.25 * std::exp(-(t - 130) / 40);
+  }
+  const auto means_agree = [&](double t) {
+    const double a = window_mean(h, t - 31.45, t).mean_spread, b = window_mean(h, t - 62.9, t - 31.45).mean_spread;
+    return std::abs(a - b) <= 0.02 * a + 0.01;
+  };
+  EXPECT_TRUE(means_agree(170)) << "the means alone are fooled about the peak: the spread is 1.39 there";
+  const int steady = steady_state_from(h, 31.45, true);
+  ASSERT_GT(steady, 0);
+  EXPECT_GT(h[static_cast<size_t>(steady - 1)].travel, 230);
+  EXPECT_NEAR(h[static_cast<size_t>(steady - 1)].mean_spread, 1.30, 0.02 * 1.30 + 0.01);
+  // nor before the window's first material has left it (its length: 263 mm for the 3D sample's window)
+  const int flushed = steady_state_from(h, 31.45, true, 263);
+  EXPECT_NEAR(h[static_cast<size_t>(flushed - 1)].travel, 264, 1e-9);
+  EXPECT_EQ(steady_state_from(h, 31.45, false, 263), steady_state_from(h, 31.45)) << "the force's own rule";
+}
+
 // Spread, two ways, from the slab's side face past the exit plane: the widest point and the mean width over the
 // thickness. A 3D slab moved 150 mm past the exit plane whose side leans out linearly with height (y = b0/2 + c z on
 // the side face; the half thickness 50 mm behind the arc): widest 2 c · 50, mean 2 c · 25; the half-width model
