@@ -36,7 +36,7 @@ def project(mesh):
     p = json.loads((ROOT / "samples/rolling-3d-16x8x4.json").read_text())
     p["name"] = f"ale-{nx}x{nw}x{nt}"
     p["process"].update(formulation="ale", roll_mesh="fixed", slab_nx=nx, slab_nw=nw, slab_nt=nt,
-                        roll_n_around=around, roll_n_axial=axial, travel=220, travel_increment=1,
+                        roll_n_around=around, roll_n_axial=axial, travel=600, travel_increment=1,
                         stop_at_steady_state=True)
     p["output"] = {"vtu": False}
     return p
