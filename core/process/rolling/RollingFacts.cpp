@@ -79,7 +79,9 @@ std::vector<ProcessFact> rolling_facts(const RollingPass& pass, int dim) {
   const double h0 = pass.entry_thickness, h1 = pass.exit_thickness;
   std::vector<ProcessFact> facts;
   facts.push_back({"reduction", format("%.1f %%", 100 * (h0 - h1) / h0), format("h0 %g → h1 %.4g mm", h0, h1)});
-  facts.push_back({"roll", format("Ø %g mm", 2 * pass.radius), format("R = %g mm", pass.radius)});
+  facts.push_back({"roll", format("Ø %g mm", 2 * pass.radius),
+                   format("R = %g mm", pass.radius) +
+                       (pass.roll_fixed ? "; its mesh fixed, its surface turning: linear, factored once" : "")});
   facts.push_back({"bite angle", format("%.2f°", t.bite_angle * 180 / M_PI), "cos α = 1 − Δh / 2R"});
   facts.push_back({"contact length", format("%.1f mm", t.contact_length), "projected arc √(R Δh)"});
   facts.push_back(bite(pass, t.bite_angle));

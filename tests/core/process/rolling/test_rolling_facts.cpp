@@ -34,6 +34,10 @@ TEST(RollingFacts, ThePapersPassInMillTerms) {
   ASSERT_NE(fact(facts, "bite angle"), nullptr);
   EXPECT_EQ(fact(facts, "reduction")->value, "13.2 %");
   EXPECT_EQ(fact(facts, "roll")->value, "Ø 600 mm");
+  EXPECT_EQ(fact(facts, "roll")->note, "R = 300 mm");
+  RollingPass fixed = paper_pass();
+  fixed.roll_fixed = true;  // process.roll_mesh: fixed, said beside the roll
+  EXPECT_NE(fact(rolling_facts(fixed, 2), "roll")->note.find("its mesh fixed, its surface turning"), std::string::npos);
   EXPECT_EQ(fact(facts, "bite angle")->value, "12.04°");
   EXPECT_EQ(fact(facts, "contact length")->value, "62.9 mm");
   EXPECT_EQ(fact(facts, "bites")->value, "yes");
