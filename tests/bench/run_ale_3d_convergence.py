@@ -67,7 +67,10 @@ def richardson(f1, f2, f3, ratio=1.5):
     if abs(e2) >= abs(e1):
         return "the finer difference is not the smaller: not in the asymptotic range"
     p = math.log(abs(e1) / abs(e2)) / math.log(ratio)
-    return f"order {p:.2f}, limit {f3 + e2 / (ratio ** p - 1):.5g}"
+    if p < 0.5:
+        return f"order {p:.2f}: the differences barely shrink, no limit"
+    limit = f"order {p:.2f}, limit {f3 + e2 / (ratio ** p - 1):.5g}"
+    return limit + (" (an order this high is pre-asymptotic: not to be trusted)" if p > 4 else "")
 
 
 def main():
