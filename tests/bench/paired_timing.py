@@ -32,6 +32,34 @@ def spread(values):
     return min(values), statistics.median(values), max(values)
 
 
+def paired(cmd_a, cmd_b, runs, warmup=1):
+    """The runs of A and B in turn (after `warmup` uncounted pairs): {"A": [...], "B": [...]}, each run_once's."""
+    for _ in range(warmup):
+        run_once(cmd_a)
+        run_once(cmd_b)
+    rows = {"A": [], "B": []}
+    for _ in range(runs):
+        rows["A"].append(run_once(cmd_a))
+        rows["B"].append(run_once(cmd_b))
+    return rows
+
+
+def figures(rows):
+    """(min, median, max) of every figure by name: "A cpu s", "B peak MiB", ..., and "A/B cpu", "A/B wall" pair by pair."""
+    out = {}
+    for side in ("A", "B"):
+        for name, index in (("wall s", 0), ("cpu s", 1), ("peak MiB", 2)):
+            out[f"{side} {name}"] = spread([r[index] for r in rows[side]])
+    for name, index in (("cpu", 1), ("wall", 0)):
+        out[f"A/B {name}"] = spread([x[index] / y[index] for x, y in zip(rows["A"], rows["B"]) if y[index] > 0])
+    return out
+
+
+def medians(cmd_a, cmd_b, runs, warmup=1):
+    """The median of every figure of paired(cmd_a, cmd_b, runs, warmup), by figures()' names."""
+    return {name: mid for name, (_, mid, _) in figures(paired(cmd_a, cmd_b, runs, warmup)).items()}
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("-n", "--runs", type=int, default=5)
@@ -43,27 +71,15 @@ def main():
     cmd_b = shlex.split(a.vs)
     if not cmd_a:
         ap.error("no command A after --")
-    for _ in range(a.warmup):
-        run_once(cmd_a)
-        run_once(cmd_b)
-    rows = {"A": [], "B": []}
-    for _ in range(a.runs):
-        rows["A"].append(run_once(cmd_a))
-        rows["B"].append(run_once(cmd_b))
+    rows = paired(cmd_a, cmd_b, a.runs, a.warmup)
     print(f"{'':18} {'min':>10} {'median':>11} {'max':>11}   n: A {a.runs}, B {a.runs}; whole process")
-    for side in ("A", "B"):
-        for name, index in (("wall s", 0), ("cpu s", 1), ("peak MiB", 2)):
-            lo, mid, hi = spread([r[index] for r in rows[side]])
-            print(f"{side} {name:16} {lo:10.3f} {mid:11.3f} {hi:11.3f}")
-    for name, index in (("cpu", 1), ("wall", 0)):
-        ratios = [x[index] / y[index] for x, y in zip(rows["A"], rows["B"]) if y[index] > 0]
-        lo, mid, hi = spread(ratios)
-        print(f"A/B {name:14} {lo:10.4f} {mid:11.4f} {hi:11.4f}")
+    for name, (lo, mid, hi) in figures(rows).items():
+        digits = 4 if name.startswith("A/B") else 3
+        print(f"{name:18} {lo:10.{digits}f} {mid:11.{digits}f} {hi:11.{digits}f}")
     codes = {r[3] for side in rows.values() for r in side}
     if codes != {0}:
         print(f"exit codes: {sorted(codes)}")
     return 0
-
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -16,10 +16,11 @@ Builds nothing; it fails only if a run cannot start.
 import argparse
 import json
 import pathlib
-import re
 import subprocess
 import sys
 import tempfile
+
+import paired_timing  # beside this script
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 MESHES = [  # Lagrangian slab, roll elements around, step [mm]; ALE window, roll, step (ALE's steps may be up to half its
@@ -60,16 +61,11 @@ def run(rollsim, path, out):
 
 
 def paired(rollsim, a, b, runs, tmp):
+    """The medians of projects a and b run whole in turn (paired_timing: CPU, wall, peak memory and their ratios)."""
     def cmd(p):
-        out = tmp / f"fb-{p.stem}"
-        return f"sh -c 'rm -rf {out}; exec {rollsim} run {p} --out {out} --quiet'"
-    text = subprocess.run([sys.executable, str(ROOT / "tests/bench/paired_timing.py"), "-n", str(runs), "--warmup", "1",
-                           "--vs", cmd(b), "--", "sh", "-c", cmd(a)[7:-1]], capture_output=True, text=True).stdout
-    got = {}
-    for key in ("A cpu s", "B cpu s", "A/B cpu", "A/B wall", "A peak MiB", "B peak MiB"):
-        m = re.search(re.escape(key) + r"\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)", text)
-        got[key] = float(m.group(2)) if m else None
-    return got
+        out = tmp / f"pt-{p.stem}"
+        return ["sh", "-c", f"rm -rf {out}; exec {rollsim} run {p} --out {out} --quiet"]
+    return {name: round(value, 4) for name, value in paired_timing.medians(cmd(a), cmd(b), runs).items()}
 
 
 def main():

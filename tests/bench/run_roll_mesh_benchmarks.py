@@ -14,10 +14,11 @@ Builds nothing; it fails only if a run cannot start.
 import argparse
 import json
 import pathlib
-import re
 import subprocess
 import sys
 import tempfile
+
+import paired_timing  # beside this script
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CASES = [  # name, sample, process fields over the sample's, timed in pairs
@@ -52,16 +53,11 @@ def run(rollsim, path, out):
 
 
 def paired(rollsim, a, b, runs, tmp):
+    """The medians of projects a and b run whole in turn (paired_timing: CPU, wall, peak memory and their ratios)."""
     def cmd(p):
         out = tmp / f"pt-{p.stem}"
-        return f"rm -rf {out}; exec {rollsim} run {p} --out {out} --quiet"
-    text = subprocess.run([sys.executable, str(ROOT / "tests/bench/paired_timing.py"), "-n", str(runs), "--warmup", "1",
-                           "--vs", f"sh -c '{cmd(b)}'", "--", "sh", "-c", cmd(a)], capture_output=True, text=True).stdout
-    got = {}
-    for key in ("A cpu s", "B cpu s", "A/B cpu", "A/B wall", "A peak MiB", "B peak MiB"):
-        m = re.search(re.escape(key) + r"\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)", text)
-        got[key] = float(m.group(2)) if m else None
-    return got
+        return ["sh", "-c", f"rm -rf {out}; exec {rollsim} run {p} --out {out} --quiet"]
+    return {name: round(value, 4) for name, value in paired_timing.medians(cmd(a), cmd(b), runs).items()}
 
 
 def main():
