@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 
 namespace rollsim {
@@ -17,6 +18,7 @@ std::array<int, 3> numbering_order(const BlockSpec& s) {
 // The coordinate along `axis` of node i: the uniform expression unchanged when there is no grading.
 double node_at(const BlockSpec& s, int axis, int i) {
   const auto a = static_cast<size_t>(axis);
+  if (axis == 0 && !s.x_planes.empty()) return s.x_planes[static_cast<size_t>(i)];
   if (s.grading[a] == 1.0) return s.origin[a] + s.size[a] * i / s.n[a];
   return s.origin[a] + s.size[a] * graded_fraction(i, s.n[a], s.grading[a]);
 }
@@ -33,6 +35,10 @@ Mesh make_block(const BlockSpec& s) {
   for (int a = 0; a < 3; ++a)
     if (!(std::isfinite(s.grading[static_cast<size_t>(a)]) && s.grading[static_cast<size_t>(a)] > 0.0))
       throw std::invalid_argument(std::string("BlockSpec.grading along ") + "xyz"[a] + " must be a positive number");
+  if (!s.x_planes.empty() &&
+      (s.x_planes.size() != static_cast<size_t>(s.n[0]) + 1 ||
+       std::adjacent_find(s.x_planes.begin(), s.x_planes.end(), std::greater_equal<>()) != s.x_planes.end()))
+    throw std::invalid_argument("BlockSpec.x_planes must hold nx + 1 increasing coordinates");
   Mesh m;
   m.dim = s.dim;
   m.type = s.dim == 2 ? ElementType::Quad4 : ElementType::Hex8;

@@ -2,6 +2,7 @@
 // Structured rectangle (Q4) / box (H8) generator.
 #include <array>
 #include <string>
+#include <vector>
 
 #include "mesh/Mesh.h"
 
@@ -15,13 +16,16 @@ struct BlockSpec {
   // per axis, the size ratio of each element to its neighbour on the + side (> 1: elements shrink geometrically
   // toward the max face, < 1: toward the min face; 1: uniform)
   std::array<double, 3> grading{1.0, 1.0, 1.0};
+  // the nodes' x coordinates, n[0] + 1 of them increasing (empty: from origin, size and grading). An ALE rolling
+  // window's columns, fine over the arc and growing away from it (process/rolling's ale_grading).
+  std::vector<double> x_planes;
 };
 
 /// Nodes are numbered along the shortest direction first (the paper's cantilever numbering),
 /// elements likewise. Surfaces and node sets: xmin, xmax, ymin, ymax (, zmin, zmax); element set "all".
 /// Grading moves the nodes along its axis only (the numbering and connectivity do not change); a grading of 1 gives
 /// origin + size · i / n exactly. Throws std::invalid_argument naming the axis whose grading is not a positive
-/// number.
+/// number, or when x_planes is given and does not hold n[0] + 1 increasing coordinates.
 Mesh make_block(const BlockSpec& spec);
 
 /// Largest / smallest element size a grading may produce: beyond it the smallest elements approach round-off.

@@ -221,6 +221,8 @@ Mesh make_mesh(const json& m, int dim) {
     const char* gradings[] = {"x_grading", "y_grading", "z_grading"};
     for (size_t a = 0; a < static_cast<size_t>(dim); ++a)
       if (m.contains(gradings[a])) s.grading[a] = num(m, gradings[a]);
+    if (m.contains("x_planes"))  // written by the rolling process only: an ALE window's graded columns
+      s.x_planes = m.at("x_planes").get<std::vector<double>>();
     Mesh mesh = make_block(s);
     if (m.contains("roll_cut")) {  // written by the rolling process only: the pre-bitten slab (mesh/RollGap.h)
       const json& c = m.at("roll_cut");

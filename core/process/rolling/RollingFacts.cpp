@@ -97,11 +97,14 @@ std::vector<ProcessFact> rolling_facts(const RollingPass& pass, int dim) {
     facts.push_back({"pass " + std::to_string(k + 1), pass.schedule[k].first, pass.schedule[k].second});
   if (pass.ale) {  // the slab never runs out: the window is held while its material flows through
     const double column = (pass.ale_entry + pass.ale_exit) / std::max(pass.ale_columns, 1);
-    facts.push_back({"ALE window",
-                     format("x %.4g to %.4g mm, columns %.3g mm apart", -pass.ale_entry, pass.ale_exit, column),
-                     format("the slab's mesh held around the gap (exit plane at 0), its material flowing through; "
-                            "steps of up to half a column (%.3g mm of travel) bring no node into the arc",
-                            column / 2)});
+    const std::string grown =
+        pass.ale_grading == 1 ? "" : format(" over the arc, growing by %g away from it", pass.ale_grading);
+    facts.push_back(
+        {"ALE window",
+         format("x %.4g to %.4g mm, columns %.3g mm apart%s", -pass.ale_entry, pass.ale_exit, column, grown.c_str()),
+         format("the slab's mesh held around the gap (exit plane at 0), its material flowing through; "
+                "steps of up to half a column (%.3g mm of travel) bring no node into the arc",
+                column / 2)});
     if (pass.stop_at_steady)
       facts.push_back({"end of the pass", format("travel ≈ %.0f mm", t.contact_length),
                        "steady at the earliest after two windows of half a contact length"});

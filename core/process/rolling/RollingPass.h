@@ -24,7 +24,8 @@ struct RollingPass {
   // through
   bool ale = false;
   double ale_entry = 0, ale_exit = 0;  // [length]
-  int ale_columns = 0;                 // the window's elements along x (process.slab_nx)
+  int ale_columns = 0;                 // the uniform window's elements along x (process.slab_nx)
+  double ale_grading = 1;              // the zones' columns growing by this ratio away from the arc (1: uniform)
   bool stop_at_steady = false;         // the run ends once force and torque are steady (steady_state_from)
   double rpm = 0;                      // roll speed [1/min] (0: not given)
   double travel = 0;                   // roll surface travel R θ at load factor 1 [length]

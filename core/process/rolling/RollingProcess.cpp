@@ -1,9 +1,11 @@
 #include "process/rolling/RollingProcess.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 #include "base/SchemaFields.h"
 #include "material/FlowStress.h"
@@ -207,6 +209,16 @@ const ObjectSchema& rolling_process_schema() {
                        "half a spacing then bring no column into the arc — and the arc holds a whole number of "
                        "spacings and a quarter, no column just before the exit plane, where the material leaves the "
                        "roll; with it, the first of the two)")),
+       [] {
+         Field f = number("ale_grading", "-", 1, 1, 2,
+                          "formulation ale: the size ratio of neighbouring columns in the window's zones before the "
+                          "arc and past the exit plane, growing away from it (1: uniform). The arc keeps the spacing "
+                          "of the uniform window of slab_nx columns, from the column before its entry to the second "
+                          "past the exit plane; the zones, elastic before the arc and nearly rigid past it, take "
+                          "fewer columns");
+         f.min_exclusive = false;
+         return f;
+       }(),
        def(boolean("stop_at_steady_state",
                    "end the pass once it is steady — the means of roll force and torque over the last two windows of "
                    "half a nominal contact length of travel agree within 2 % (results.rolling's steady_state rule) — "
@@ -304,6 +316,46 @@ std::pair<double, double> ale_window(const json& p, int dim) {
   if (p.contains("ale_exit_length")) return {entry, p.at("ale_exit_length").get<double>()};
   const double before = entry - arc, spacing = (entry + zone) / nx;  // the columns before the arc, at about zone past
   return {entry, std::max(nx * before / placed(before / spacing, kEntryOffset) - entry, spacing)};
+}
+
+/// A zone of length `length` beside the arc's uniform columns (spacing h), its elements growing by `ratio` from h ·
+/// ratio at the arc outward, scaled to fit: their sizes, nearest the arc first.
+std::vector<double> growing_zone(double length, double h, double ratio) {
+  if (length <= 1e-9 * h) return {};
+  const double k = std::log1p(length * (ratio - 1) / (h * ratio)) / std::log(ratio);  // h r (r^k − 1)/(r − 1) = L
+  const int n = std::max(1, static_cast<int>(std::lround(k)));
+  std::vector<double> sizes;
+  double sum = 0;
+  for (int i = 1; i <= n; ++i) sum += sizes.emplace_back(h * std::pow(ratio, i));
+  for (double& s : sizes) s *= length / sum;
+  return sizes;
+}
+
+/// The ALE window's column planes along x, from −entry to exit: uniform (slab_nx of them), or with ale_grading r > 1
+/// the uniform layout's spacing h kept over the arc — from the column before its entry to the second past the exit
+/// plane, where the material leaves the roll and springs back — and the zones before and past it in elements
+/// growing by r from there (the zones are elastic or nearly rigid: the arc's gradients are what need the columns).
+std::vector<double> ale_planes(const json& p, int dim) {
+  const auto [entry, exit] = ale_window(p, dim);
+  const int nx = p.at("slab_nx");
+  const double h = (entry + exit) / nx, r = p.value("ale_grading", 1.0);
+  std::vector<double> uniform;
+  for (int i = 0; i <= nx; ++i) uniform.push_back(-entry + (entry + exit) * i / nx);
+  if (r == 1.0) return uniform;
+  const double arc = nominal_contact_length(p), tol = 1e-6 * h;
+  const auto first = std::find_if(uniform.rbegin(), uniform.rend(), [&](double x) { return x <= -arc - tol; });
+  const auto last = std::find_if(uniform.begin(), uniform.end(), [&](double x) { return x >= h - tol; });
+  const double from = first == uniform.rend() ? -entry : *first, to = last == uniform.end() ? exit : *last;
+  std::vector<double> planes{-entry};
+  const std::vector<double> before = growing_zone(from + entry, h, r);
+  for (auto s = before.rbegin(); s != before.rend(); ++s) planes.push_back(planes.back() + *s);
+  planes.back() = from;
+  for (double x : uniform)
+    if (x > from + tol && x < to - tol) planes.push_back(x);
+  if (to > from + tol) planes.push_back(to);
+  for (double s : growing_zone(exit - to, h, r)) planes.push_back(planes.back() + s);
+  planes.back() = exit;
+  return planes;
 }
 
 /// ω R [length/s], 0 without a roll speed.
@@ -459,6 +511,10 @@ void check_ale(const json& project, std::vector<Issue>& issues) {
                           "has no effect with process.formulation: lagrangian (the "
                           "window is an ALE pass's): set formulation to ale, or "
                           "remove it"});
+    if (p.value("ale_grading", 1.0) != 1.0)
+      issues.push_back({"process.ale_grading",
+                        "has no effect with process.formulation: lagrangian (it grades an ALE window's columns; a "
+                        "Lagrangian slab's is process.grading): set formulation to ale, or remove it"});
     return;
   }
   const std::string why = "process.formulation";
@@ -610,7 +666,12 @@ json expand_rolling(const json& project) {
                     {"lx", entry + exit},
                     {"x_grading", p.at("grading")},
                     {"roll_cut", {{"center", {0.0, axis}}, {"radius", R}, {"n_around", fixed_roll ? 0 : around}}}};
-  if (is_ale(p)) slab_mesh["roll_cut"]["flat_exit"] = true;
+  if (is_ale(p)) {
+    slab_mesh["roll_cut"]["flat_exit"] = true;
+    const std::vector<double> planes = ale_planes(p, dim);
+    slab_mesh["nx"] = planes.size() - 1;
+    if (p.value("ale_grading", 1.0) != 1.0) slab_mesh["x_planes"] = planes;
+  }
   json roll_mesh = {{"inner_radius", p.at("roll_hub_radius")},
                     {"outer_radius", R},
                     {"n_radial", p.at("roll_n_radial")},
@@ -750,6 +811,7 @@ RollingPass rolling_pass(const json& section, const Model& model) {
   if (pass.ale) {
     std::tie(pass.ale_entry, pass.ale_exit) = ale_window(p, model.dim);
     pass.ale_columns = p.at("slab_nx");
+    pass.ale_grading = p.value("ale_grading", 1.0);
   }
   pass.stop_at_steady = p.value("stop_at_steady_state", false);
   if (p.contains("roll_speed")) pass.rpm = p.at("roll_speed");

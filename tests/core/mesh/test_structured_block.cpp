@@ -251,5 +251,26 @@ TEST(StructuredBlock, GradingAlongYAndZBiasesThoseAxesAlone) {
   }
 }
 
+// An ALE window's columns: x planes given one by one (the rolling process's ale_grading), y and z as before; planes
+// that are not nx + 1 increasing coordinates are refused.
+TEST(StructuredBlock, ExplicitXPlanesPlaceTheNodesAlongX) {
+  BlockSpec s;
+  s.dim = 3;
+  s.n = {3, 1, 2};
+  s.size = {9.0, 1.0, 2.0};
+  s.x_planes = {-4.0, -1.0, 0.0, 0.5};
+  const Mesh m = make_block(s);
+  std::vector<double> x;
+  for (const Vec& p : m.nodes) x.push_back(p[0]);
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end()), x.end());
+  EXPECT_EQ(x, s.x_planes);
+  EXPECT_EQ(m.num_elements(), 6);
+  for (const std::vector<double>& bad : {std::vector<double>{-4.0, -1.0, 0.5}, std::vector<double>{-4, 0, -1, 0.5}}) {
+    s.x_planes = bad;
+    EXPECT_THROW(make_block(s), std::invalid_argument);
+  }
+}
+
 }  // namespace
 }  // namespace rollsim::test_structured_block

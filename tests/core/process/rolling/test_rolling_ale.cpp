@@ -6,6 +6,7 @@
 // undivided window's force.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -161,6 +162,49 @@ TEST(RollingAle, ThePaperPassIsSteadyAfterTwoWindowsAndAgreesWithTheLagrangianPa
   EXPECT_LT(std::abs(s.volume_change), 0.005);
   EXPECT_EQ(a.ale_steps, static_cast<int>(a.increments.size()) - 1);  // after every step but the last
   EXPECT_EQ(l.ale_steps, 0);
+}
+
+// process.ale_grading: the arc keeps the uniform window's columns, from the column before its entry to the second
+// past the exit plane; the zones before and past it grow by the ratio away from it to the same window's ends; the
+// sample's pass rolled on it gives the uniform window's steady force (0.02 % on 60 columns, measured 2026-11-30).
+TEST(RollingAle, AGradedWindowKeepsTheArcsColumnsAndGrowsItsZones) {
+  nlohmann::json uniform =
+      nlohmann::json::parse(std::ifstream(std::string(ROLLSIM_SOURCE_DIR) + "/samples/rolling-2d-ale.json"));
+  nlohmann::json graded = uniform;
+  graded["process"]["ale_grading"] = 1.4;
+  const auto planes = [](const nlohmann::json& j) {
+    const Project p = parse_project(j.dump(), "ale");
+    const Model m = build_model(p);
+    std::vector<double> x;
+    for (const auto& n : m.bodies[static_cast<size_t>(rolling_pass(p.data.at("process"), m).slab)].mesh.nodes)
+      x.push_back(n[0]);
+    std::sort(x.begin(), x.end());
+    x.erase(std::unique(x.begin(), x.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }), x.end());
+    return x;
+  };
+  const std::vector<double> u = planes(uniform), g = planes(graded);
+  ASSERT_EQ(u.size(), 31u);
+  EXPECT_LT(g.size(), u.size());
+  EXPECT_NEAR(g.front(), u.front(), 1e-9);
+  EXPECT_NEAR(g.back(), u.back(), 1e-9);
+  const double h = u[1] - u[0], arc = std::sqrt(300 * 13.2);
+  int kept = 0;
+  for (double x : u)
+    if (x >= -arc - h && x <= 1.5 * h) {
+      ++kept;
+      EXPECT_TRUE(std::any_of(g.begin(), g.end(), [&](double y) { return std::abs(x - y) < 1e-9; })) << x;
+    }
+  EXPECT_GE(kept, 12);
+  const auto at = std::find_if(g.begin(), g.end(), [&](double y) { return y > -arc - h; }) - g.begin();
+  ASSERT_GE(at, 3);  // the zone before the arc: each element 1.4 times the next, nearer the arc
+  for (auto i = at - 1; i >= 2; --i) EXPECT_NEAR((g[i - 1] - g[i - 2]) / (g[i] - g[i - 1]), 1.4, 1e-9) << i;
+  for (nlohmann::json* j : {&uniform, &graded})  // steps of up to half the arc's spacing (2.2 mm)
+    (*j)["process"].update({{"slab_nx", 60}, {"travel_increment", 1.0}});
+  const testing_support::PassRun a = testing_support::run_pass(uniform), b = testing_support::run_pass(graded);
+  ASSERT_TRUE(a.status.ok() && b.status.ok()) << a.status.message << " / " << b.status.message;
+  ASSERT_TRUE(a.rolling->steady_state_increment > 0 && b.rolling->steady_state_increment > 0);
+  EXPECT_NEAR(b.rolling->steady.roll_force, a.rolling->steady.roll_force, 2e-3 * a.rolling->steady.roll_force);
+  EXPECT_LT(b.dofs, a.dofs);
 }
 
 // A window on a fixed roll (process.roll_mesh: fixed): its top placed on the roll's circle, the contact holding it
@@ -322,6 +366,9 @@ TEST(RollingAle, WhatAnAlePassCannotDoIsRefusedAtTheUsersPaths) {
   EXPECT_TRUE(has(refusal({{"ale_exit_length", 50}}),
                   "process.ale_exit_length: has no effect with "
                   "process.formulation: lagrangian"));
+  EXPECT_TRUE(has(refusal({{"ale_grading", 1.2}}), "process.ale_grading: has no effect with process.formulation"));
+  EXPECT_TRUE(has(refusal({{"formulation", "ale"}, {"ale_grading", 2.5}}), "process.ale_grading"));
+  EXPECT_EQ(refusal({{"formulation", "ale"}, {"ale_grading", 1.3}}, 3), "accepted");
   EXPECT_EQ(refusal({{"formulation", "ale"}}), "accepted");
 }
 
