@@ -358,7 +358,8 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
         lambda[static_cast<Eigen::Index>(r)] > tensile && pairs[row.pair].contact_switches[row.point] < 2)
       next[row.pair][row.point] = 0;
   }
-  // entering: an inactive point whose gap after deformation is negative (beyond round-off); it sticks where it is
+  // entering: an inactive point whose gap after deformation is negative (beyond round-off, or a turning master's
+  // placement tolerance: refind_contacts); it sticks where it is
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
     if (p.kind == ContactKind::Tied) continue;
@@ -366,7 +367,7 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
       if (pairs[i].active[j]) continue;
       const ContactPoint& c = pairs[i].points[j];
       const Eigen::Vector3d r = relative_position(p, c, u, model.dim);
-      if (c.normal.dot(r) - c.offset >= -1e-9 * p.search_distance) continue;
+      if (c.normal.dot(r) - c.offset >= -(p.master_turns ? 1e-4 : 1e-9) * p.search_distance) continue;
       next[i][j] = 1;
       pairs[i].anchor[j] = r;
       pairs[i].slip[j] = 0;

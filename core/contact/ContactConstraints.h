@@ -113,10 +113,12 @@ std::vector<ConstraintRow> contact_rows(const Model& model, const std::vector<Pa
 /// Active-set update of the unilateral pairs from the displacements (node-major per body) and the multiplier
 /// of each row (a point that enters sticks where it is): a point leaves when its multiplier is tensile beyond
 /// `tolerance` × the largest |λ| of the rows (the relative accuracy of λ: round-off for a direct solve, the CG
-/// tolerance for an iterative one — a λ that is zero to that accuracy keeps its point), enters when it penetrates.
-/// A point that chatters (out, then in again within the step) stays in for the rest of the step, tensile or not:
-/// the exact answer lies between the two statuses (a node at the edge of the arc) and Newton would cycle.
-/// Returns the number of points that changed status.
+/// tolerance for an iterative one — a λ that is zero to that accuracy keeps its point), enters when it penetrates
+/// (beyond round-off; a turning master's true surface, where a window's placement and the contact agree to 1e-4 of
+/// the search distance, by more than that: a column at the end of a 3D window's arc, stuck and tensile, left and
+/// came back at every step, penetrating by 1 µm). A point that chatters (out, then in again within the step) stays in
+/// for the rest of the step, tensile or not: the exact answer lies between the two statuses (a node at the edge of the
+/// arc) and Newton would cycle. Returns the number of points that changed status.
 int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& lambda,
                       const std::vector<Eigen::VectorXd>& displacement, std::vector<PairState>& pairs,
                       double tolerance = 0.0);
