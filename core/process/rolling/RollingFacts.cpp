@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "process/rolling/RollingMeasures.h"
 #include "process/rolling/RollingTheory.h"
 
 namespace rollsim {
@@ -106,8 +107,10 @@ std::vector<ProcessFact> rolling_facts(const RollingPass& pass, int dim) {
                 "steps of up to half a column (%.3g mm of travel) bring no node into the arc",
                 column / 2)});
     if (pass.stop_at_steady)
-      facts.push_back({"end of the pass", format("travel ≈ %.0f mm", t.contact_length),
-                       "steady at the earliest after two windows of half a contact length"});
+      facts.push_back({"end of the pass", format("travel ≈ %.0f mm", earliest_steady_travel(pass)),
+                       shape_steady(pass) ? "steady at the earliest once the window's first material has left it "
+                                            "(its length) and its side's spread has settled"
+                                          : "steady at the earliest after two windows of half a contact length"});
     return facts;
   }
   const double through = travel_through(pass);

@@ -290,6 +290,11 @@ Eigen::VectorXd node_temperatures(const Mesh& mesh, const BodyResults& r) {
   return T.cwiseQuotient(count.cwiseMax(1.0));
 }
 
+double earliest_steady_travel(const RollingPass& pass) {
+  const double windows = 2 * kSteadyWindow * rolling_theory(pass).contact_length;
+  return shape_steady(pass) ? std::max(windows, pass.ale_entry + pass.ale_exit) : windows;
+}
+
 int steady_state_from(const std::vector<RollingIncrement>& h, double window, bool shape, double flushed) {
   const auto near = [](double a, double b) { return std::abs(a - b) <= kSteadyTolerance * std::abs(a); };
   const auto spread_near = [](double a, double b) {

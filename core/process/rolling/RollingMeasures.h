@@ -49,6 +49,13 @@ constexpr double kSteadySpread = 0.01;
 int steady_state_from(const std::vector<RollingIncrement>& history, double window, bool shape = false,
                       double flushed = 0);
 
+/// Whether a pass's steady state asks for its free side's shape too (steady_state_from's `shape`): an ALE window in 3D.
+inline bool shape_steady(const RollingPass& pass) { return pass.ale && pass.width_axis >= 0; }
+
+/// The travel at which a pass can be steady at the earliest under steady_state_from: two windows of half a nominal
+/// contact length, and with the shape the ALE window's length (the material it started with gone) [length].
+double earliest_steady_travel(const RollingPass& pass);
+
 /// An increment's exit thickness, spread and mean spread (RollingIncrement's; the rest zero), from the slab's nodes
 /// past the exit plane on the increment's model.
 RollingIncrement exit_shape(const RollingPass& pass, const Model& model, const IncrementResults& increment);

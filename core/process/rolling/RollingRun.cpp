@@ -27,9 +27,8 @@ std::vector<ProcessFact> RollingRun::facts() const { return rolling_facts(pass_,
 
 double RollingRun::expected_share() const {
   if (!pass_.ale) return std::min(1.0, travel_through(pass_) / pass_.travel);
-  // an ALE slab never runs out; steady, its force is flat, so the 2 % rule holds as soon as it can: two windows
-  const double steady = 2 * kSteadyWindow * rolling_theory(pass_).contact_length;
-  return pass_.stop_at_steady ? std::min(1.0, steady / pass_.travel) : 1.0;
+  // an ALE slab never runs out; steady, its force is flat, so the 2 % rule holds as soon as it can
+  return pass_.stop_at_steady ? std::min(1.0, earliest_steady_travel(pass_) / pass_.travel) : 1.0;
 }
 
 MeasureTable RollingRun::live_table() const {
@@ -48,7 +47,7 @@ ChartRequest RollingRun::live_chart() const { return history_chart(pass_, model_
 
 MeasureRow RollingRun::measure(const IncrementResults& increment) const {
   RollingIncrement r = roll_load(pass_, model_, increment);
-  if (shape_steady()) r.mean_spread = exit_shape(pass_, model_, increment).mean_spread;
+  if (shape_steady(pass_)) r.mean_spread = exit_shape(pass_, model_, increment).mean_spread;
   while (!live_.empty() && live_.back().travel >= r.travel) live_.pop_back();  // measured again: a repeated step
   live_.push_back(r);
   return {r.travel, r.roll_force, r.roll_torque};
@@ -56,16 +55,16 @@ MeasureRow RollingRun::measure(const IncrementResults& increment) const {
 
 std::string RollingRun::steady() const {
   const double window = kSteadyWindow * rolling_theory(pass_).contact_length;
-  const int from = steady_state_from(live_, window, shape_steady(), pass_.ale_entry + pass_.ale_exit);
+  const int from = steady_state_from(live_, window, shape_steady(pass_), pass_.ale_entry + pass_.ale_exit);
   if (from == 0) return {};
   char text[400];
   std::snprintf(text, sizeof text,
                 "the pass is steady at travel %.4g mm (process.stop_at_steady_state): the means of roll force and "
                 "torque%s over the last two windows of %.3g mm of travel agree within %g %%",
-                live_[static_cast<size_t>(from - 1)].travel, shape_steady() ? " and the mean spread" : "", window,
+                live_[static_cast<size_t>(from - 1)].travel, shape_steady(pass_) ? " and the mean spread" : "", window,
                 100 * kSteadyTolerance);
   std::string said = text;
-  if (shape_steady()) {
+  if (shape_steady(pass_)) {
     std::snprintf(text, sizeof text,
                   ", the spread within %g %% + %g mm at every increment of the last window, and the window's first "
                   "material has left it (%.4g mm of travel)",

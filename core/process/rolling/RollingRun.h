@@ -30,7 +30,6 @@ class RollingRun final : public ProcessRun {
   /// Why the pass is over as steady (stop_at_steady): the increments measured so far are steady.
   std::string steady() const;
   /// Whether the steady rule also waits for the free side (an ALE pass in 3D: steady_state_from's `shape`).
-  bool shape_steady() const { return pass_.ale && pass_.width_axis >= 0; }
   RollingPass pass_;
   const Model& model_;
   std::unique_ptr<MeshMotion> ale_;             // an ALE pass's window: RollingAle, or RollingAle3d in 3D

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "process/Process.h"
 #include "project/ModelBuilder.h"
 #include "project/Overrides.h"
 #include "project/Project.h"
@@ -49,6 +50,24 @@ TEST(RunForecast, APassLongerThanItsSlabIsForecastToEndWhenTheSlabIsThrough) {
   const int asked = static_cast<int>(std::ceil(500 / 1.0));
   EXPECT_LT(whole.increments, asked * 0.6);
   EXPECT_GT(whole.increments, asked * 0.5);
+}
+
+// A 3D ALE window steady at the earliest once its first material has left it (its length, not two windows of half a
+// contact length: 282 of its 400 mm); its steps start near their answers (the flow repeats: 3 Newton iterations an
+// increment, 2.1 measured on the sample); its fixed roll is factored once, where a turning one is refactored.
+TEST(RunForecast, AnAleWindowIsForecastToItsLengthInFewIterationsAndAFixedRollFactoredOnce) {
+  const RunForecast fixed = forecast_of("rolling-3d-ale");
+  EXPECT_EQ(fixed.increments, 282);
+  EXPECT_DOUBLE_EQ(fixed.iterations, 3.0 * fixed.increments);
+  bool said = false;
+  for (const ProcessFact& f : fixed.facts)
+    said = said || (f.name == "end of the pass" && f.value == "travel ≈ 282 mm" &&
+                    f.note.find("the window's first material has left it") != std::string::npos);
+  EXPECT_TRUE(said);
+  const RunForecast turning = forecast_of("rolling-3d-ale", {{"process.roll_mesh", "turning"}});
+  EXPECT_GT(turning.seconds_per_iteration, 1.5 * fixed.seconds_per_iteration);
+  const RunForecast plane = forecast_of("rolling-2d-ale");  // two windows of half a contact length: 63 mm
+  EXPECT_EQ(plane.increments, static_cast<int>(std::ceil(2 * 0.5 * std::sqrt(300 * 13.2) / 2.5 - 1e-9)));
 }
 
 TEST(RunForecast, APassThatCannotBiteForecastsNothingSolved) {
