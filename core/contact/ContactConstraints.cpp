@@ -57,6 +57,16 @@ void round_facet(const Mesh& master, const ContactPair& p, ContactPoint& c) {
   c.gap -= c.offset;
 }
 
+/// How far past a master surface a point may lie and still count as on it, neither penetrating nor put off: round-off
+/// (1e-9 of the search distance), or on a turning master's true surface 1e-4 of it (2.7 µm on the 3D sample). There an
+/// ALE window's placement (the circle of the radius interpolated from the deformed roll's nodes, straight above the
+/// node) and the contact (the deformed facet plus the undeformed facet's sagitta along its normal) agree to second
+/// order only, 3e-5 mm apart on a 28-column 3D window: held to round-off, the arc's last column went off the roll
+/// after every step and back on in its iterations, a column past the exit plane placed onto the roll entered where
+/// each step began and left at once (tensile), and one at the arc's end, stuck and tensile, left, penetrated by 1 µm
+/// and came back.
+double on_surface(const ContactPair& p) { return (p.master_turns ? 1e-4 : 1e-9) * p.search_distance; }
+
 /// X_s − Σ N_k X_k in the undeformed positions.
 Eigen::Vector3d reference_separation(const Mesh& slave, const Mesh& master, const ContactPoint& c) {
   Eigen::Vector3d s(slave.nodes[c.slave_node][0], slave.nodes[c.slave_node][1], slave.nodes[c.slave_node][2]);
@@ -156,7 +166,7 @@ void follow_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
         carry(pairs[i], j, std::move(kept), now);
         continue;
       }
-      const bool penetrates = c.gap < -touch;
+      const bool penetrates = c.gap < -on_surface(p);
       carry(pairs[i], j, std::move(c), now);
       now.active.back() = now.active.back() || penetrates;
     }
@@ -176,13 +186,9 @@ void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
     std::map<int, size_t> was;
     for (size_t j = 0; j < pairs[i].points.size(); ++j) was[pairs[i].points[j].slave_node] = j;
     PairState now;
-    // a turning master's true surface: the window's placement (the circle of the radius interpolated from the
-    // deformed roll's nodes, straight above the node) and the contact (the deformed facet plus the undeformed facet's
-    // sagitta along its normal) agree to second order only — 3e-5 mm on a 28-column 3D window, which put the arc's
-    // last column off the roll after every step and back on in its iterations (8 Newton iterations a step, not 3):
-    // a point that touched keeps touching within 1e-4 of the search distance (2.7 µm on the 3D sample)
+    // a point new to a turning master's true surface touches within a rounding (the window's placement and the
+    // contact interpolate its radius at points apart); one that touched stays within on_surface
     const double touch = (p.master_turns ? 1e-6 : 1e-9) * p.search_distance;
-    const double keep = p.master_turns ? 1e-4 * p.search_distance : touch;
     for (ContactPoint& c : find_contact_points(displaced(slave, u[p.slave_body]), slave.surfaces.at(p.slave_surface),
                                                master_now, master.surfaces.at(p.master_surface), p.search_distance,
                                                p.box_search ? FacetCandidates::Boxes : FacetCandidates::All)) {
@@ -190,7 +196,7 @@ void refind_contacts(const Model& model, const std::vector<Eigen::VectorXd>& u, 
       round_facet(master, p, c);
       if (const auto it = was.find(c.slave_node); it != was.end()) {
         carry(pairs[i], it->second, c, now);
-        if (c.gap > keep) now.active.back() = 0;  // put off the master: free until it touches
+        if (c.gap > on_surface(p)) now.active.back() = 0;  // put off the master: free until it touches
       } else
         add_point(now, c, c.gap <= touch);
       now.anchor.back() = relative_position(p, c, u, model.dim);
@@ -358,8 +364,7 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
         lambda[static_cast<Eigen::Index>(r)] > tensile && pairs[row.pair].contact_switches[row.point] < 2)
       next[row.pair][row.point] = 0;
   }
-  // entering: an inactive point whose gap after deformation is negative (beyond round-off, or a turning master's
-  // placement tolerance: refind_contacts); it sticks where it is
+  // entering: an inactive point whose gap after deformation is negative beyond on_surface; it sticks where it is
   for (size_t i = 0; i < pairs.size(); ++i) {
     const ContactPair& p = model.contacts[i];
     if (p.kind == ContactKind::Tied) continue;
@@ -367,7 +372,7 @@ int update_active_set(const Model& model, const std::vector<ConstraintRow>& rows
       if (pairs[i].active[j]) continue;
       const ContactPoint& c = pairs[i].points[j];
       const Eigen::Vector3d r = relative_position(p, c, u, model.dim);
-      if (c.normal.dot(r) - c.offset >= -(p.master_turns ? 1e-4 : 1e-9) * p.search_distance) continue;
+      if (c.normal.dot(r) - c.offset >= -on_surface(p)) continue;
       next[i][j] = 1;
       pairs[i].anchor[j] = r;
       pairs[i].slip[j] = 0;

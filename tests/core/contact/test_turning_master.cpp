@@ -172,10 +172,10 @@ TEST(TurningMaster, APointThatTouchedStaysOnTheCircleWithinThePlacementsRounding
       EXPECT_FALSE(fresh[0].active[j]);
 }
 
-// A free point enters a turning master once it penetrates by more than the same 1e-4 of the search distance: at the
-// end of a 3D window's arc a column, stuck and tensile, went off the roll, penetrated by 1 µm and came back at every
-// step (a 42-column window: 1501 Newton iterations to its steady state, 798 with the tolerance). A turning roll's
-// facets take a point at round-off.
+// A free point enters a turning master once it penetrates by more than the same 1e-4 of the search distance, in an
+// iteration or where a step begins: at the end of a 3D window's arc a column, stuck and tensile, went off the roll,
+// penetrated by 1 µm and came back at every step (a 42-column window: 1501 Newton iterations to its steady state, 798
+// with the tolerance). A turning roll's facets take a point at round-off.
 TEST(TurningMaster, AFreePointEntersTheCircleBeyondThePlacementsRounding) {
   for (const std::string roll : {"fixed", "turning"}) {
     const Model m = pass(roll);
@@ -196,9 +196,18 @@ TEST(TurningMaster, AFreePointEntersTheCircleBeyondThePlacementsRounding) {
     };
     press(touching[0], 0.5e-4 * p.search_distance);
     press(touching[1], 2e-4 * p.search_distance);
+    std::vector<PairState> followed = pairs;
     EXPECT_EQ(update_active_set(m, {}, Eigen::VectorXd(), u, pairs, 1e-10), roll == "fixed" ? 1 : 2) << roll;
     EXPECT_EQ(pairs[0].active[touching[0]], roll == "fixed" ? 0 : 1) << roll;
     EXPECT_EQ(pairs[0].active[touching[1]], 1) << roll;
+    // where a step begins (its points followed): the same (a column past the exit plane, placed onto the roll,
+    // entered and left at once, tensile, at every step)
+    follow_contacts(m, u, followed, p.sliding);
+    std::map<int, char> active;
+    for (size_t j = 0; j < followed[0].points.size(); ++j)
+      active[followed[0].points[j].slave_node] = followed[0].active[j];
+    EXPECT_EQ(active.at(pairs[0].points[touching[0]].slave_node), roll == "fixed" ? 0 : 1) << roll;
+    EXPECT_EQ(active.at(pairs[0].points[touching[1]].slave_node), 1) << roll;
   }
 }
 
