@@ -11,12 +11,13 @@ namespace rollsim {
 
 namespace {
 // Rates of one thread on the CI's kind of machine (2 cores, OpenBLAS), fitted on the samples' summary.json timings by
-// tests/bench/run_forecast.py (docs/BENCHMARKS.md, "The run forecast"):
+// tests/bench/run_forecast.py (docs/BENCHMARKS.md, "The run forecast"; refitted 2026-11-30 after the element kernels
+// got 2–3 times faster):
 // one element's tangent and internal force [s], per dimension (2, 3) and kinematics (small, finite)
-constexpr double kElementSeconds[2][2] = {{2e-6, 4.3e-6}, {3e-5, 3e-5}};
+constexpr double kElementSeconds[2][2] = {{0.8e-6, 1.5e-6}, {1.4e-5, 1.5e-5}};
 // a Cholesky factorization: the estimate's flops (an AMD ordering's, 2.6 × CHOLMOD's METIS-ordered count on the 16³
 // cube) at this rate, and a cost per entry of L that the small supernodes of 2D factors spend beside it
-constexpr double kFactorFlopRate = 2e10;      // [flop/s]
+constexpr double kFactorFlopRate = 5e10;      // [flop/s]
 constexpr double kFactorEntrySeconds = 2e-8;  // [s]
 // the LU of direct's bordered matrix (UMFPACK) against a Cholesky of the bodies (block-plastic-3d: 0.08 s a factor
 // since freed memory is kept for reuse, base/Memory.h; 0.31 s before)
@@ -34,8 +35,8 @@ constexpr double kActiveSetSolves = 3;
 constexpr double kElasticRefactorShare = 0.3;
 // what an increment costs beside its iterations (contact search, results, the files written), per dof [s], and the
 // process's start
-constexpr double kIncrementDofSeconds[2] = {1e-5, 2.5e-5};
-constexpr double kStartSeconds = 0.2;
+constexpr double kIncrementDofSeconds[2] = {3e-6, 5e-6};
+constexpr double kStartSeconds = 0.05;
 
 bool unilateral_contact(const Model& model) {
   return std::any_of(model.contacts.begin(), model.contacts.end(),

@@ -20,6 +20,8 @@ CASES = [
     ("rolling-2d-36x6", []),
     ("rolling-2d-48x8", ["--set", "process.travel=40"]),
     ("rolling-3d-16x8x4", ["--set", "process.travel=6"]),
+    ("rolling-2d-ale", []),
+    ("rolling-3d-ale", []),
     ("cylinder-plastic-2d", []),
     ("block-plastic-3d", []),
     ("cantilever-plastic-2d", []),
