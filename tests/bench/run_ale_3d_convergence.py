@@ -15,10 +15,10 @@ Builds nothing; it fails only if a run cannot start.
 import argparse
 import json
 import math
-import os
 import pathlib
-import subprocess
 import tempfile
+
+from rolling_runs import run_pass  # beside this script
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 MESHES = [  # slab columns, width, thickness elements; roll around, along the half barrel
@@ -45,19 +45,7 @@ def project(mesh):
 def run(rollsim, mesh, tmp):
     path = tmp / f"{mesh[0]}.json"
     path.write_text(json.dumps(project(mesh)))
-    out = tmp / f"out-{mesh[0]}"
-    child = subprocess.Popen([rollsim, "run", str(path), "--out", str(out), "--quiet"],
-                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    _, _, usage = os.wait4(child.pid, 0)  # this run's own CPU time and peak memory
-    s = json.loads((out / "summary.json").read_text())
-    r = s.get("results", {}).get("rolling", {})
-    inc = s["increments"]
-    steady = r.get("steady_state_increment") or 0
-    row = {k: r.get(k) for k, _, _ in MEASURES}
-    row.update(status=s["status"], steady_at=inc[steady - 1]["travel"] if steady else None,
-               newton=sum(i.get("newton_iterations", 0) for i in inc),
-               cpu=usage.ru_utime + usage.ru_stime, peak=usage.ru_maxrss / 1024.0, theory=r.get("theory", {}))
-    return row
+    return run_pass(rollsim, path, tmp / (path.stem + "-out"))
 
 
 def richardson(f1, f2, f3, ratio=1.5):
@@ -88,7 +76,7 @@ def main():
         rows.append(r)
         values = " | ".join(f"{r[k] * scale:.5g}" if r[k] is not None else "–" for k, _, scale in MEASURES)
         lines.append(f"| {mesh[0]} × {mesh[1]} × {mesh[2]} ({mesh[3]} × 3 × {mesh[4]}) | {r['status']} | "
-                     f"{r['steady_at'] if r['steady_at'] is not None else '–'} | {values} | {r['newton']} | "
+                     f"{'%.4g' % r['steady_at'] if r['steady_at'] is not None else '–'} | {values} | {r['newton']} | "
                      f"{r['cpu']:.1f} | {r['peak']:.0f} |")
         print(lines[-1], flush=True)
     extrapolated = ["| measure | meshes | Richardson (ratio 1.5) |", "|---|---|---|"]

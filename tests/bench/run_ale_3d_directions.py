@@ -12,10 +12,10 @@ Builds nothing; it fails only if a run cannot start.
 """
 import argparse
 import json
-import os
 import pathlib
-import subprocess
 import tempfile
+
+from rolling_runs import run_pass  # beside this script
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 ARC = (300 * 13.2) ** 0.5  # the nominal contact length √(R Δh) [mm]
@@ -39,18 +39,8 @@ def run(rollsim, name, fields, tmp):
     p["output"] = {"vtu": False}
     path = tmp / f"{len(list(tmp.iterdir()))}.json"
     path.write_text(json.dumps(p))
-    out = tmp / (path.stem + "-out")
-    child = subprocess.Popen([rollsim, "run", str(path), "--out", str(out), "--quiet"],
-                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    _, _, usage = os.wait4(child.pid, 0)  # this run's own CPU time and peak memory
-    s = json.loads((out / "summary.json").read_text())
-    r = s.get("results", {}).get("rolling", {})
-    inc = s["increments"]
-    steady = r.get("steady_state_increment") or 0
-    row = {k: r.get(k) for k, _, _ in MEASURES}
-    row.update(name=name, status=s["status"], steady_at=inc[steady - 1]["travel"] if steady else None,
-               newton=sum(i.get("newton_iterations", 0) for i in inc), cpu=usage.ru_utime + usage.ru_stime,
-               peak=usage.ru_maxrss / 1024.0, theory=r.get("theory", {}))
+    row = run_pass(rollsim, path, tmp / (path.stem + "-out"))
+    row.update(name=name)
     return row
 
 

@@ -16,11 +16,10 @@ Builds nothing; it fails only if a run cannot start.
 import argparse
 import json
 import pathlib
-import subprocess
 import sys
 import tempfile
 
-import paired_timing  # beside this script
+from rolling_runs import paired_projects, run_pass  # beside this script
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 MESHES = [  # Lagrangian slab, roll elements around, step [mm]; ALE window, roll, step (ALE's steps may be up to half its
@@ -47,27 +46,6 @@ def project(formulation, n, around, step):
     return p
 
 
-def run(rollsim, path, out):
-    subprocess.run([rollsim, "run", str(path), "--out", str(out), "--quiet"], check=False,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    s = json.loads((out / "summary.json").read_text())
-    r = s.get("results", {}).get("rolling", {})
-    inc = s["increments"]
-    steady = r.get("steady_state_increment") or 0
-    return {"status": s["status"], "steady_at": inc[steady - 1]["travel"] if steady else None,
-            "force": r.get("roll_force"), "torque": r.get("roll_torque"), "slip": r.get("forward_slip"),
-            "exit": r.get("exit_thickness"), "volume": r.get("volume_change"),
-            "newton": sum(i.get("newton_iterations", 0) for i in inc), "seconds": s["timing"]["total_s"]}
-
-
-def paired(rollsim, a, b, runs, tmp):
-    """The medians of projects a and b run whole in turn (paired_timing: CPU, wall, peak memory and their ratios)."""
-    def cmd(p):
-        out = tmp / f"pt-{p.stem}"
-        return ["sh", "-c", f"rm -rf {out}; exec {rollsim} run {p} --out {out} --quiet"]
-    return {name: round(value, 4) for name, value in paired_timing.medians(cmd(a), cmd(b), runs).items()}
-
-
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--rollsim", default=str(ROOT / "build/app/rollsim"))
@@ -91,23 +69,25 @@ def main():
             p = tmp / f"{formulation}-{n[0]}x{n[1]}-{around}-{step:g}.json"
             p.write_text(json.dumps(project(formulation, n, around, step)))
             paths[formulation] = p
-            rows[formulation] = run(a.rollsim, p, tmp / p.stem)
+            rows[formulation] = run_pass(a.rollsim, p, tmp / p.stem)
         mesh = (f"{lag_n[0]} × {lag_n[1]}, {lag_around}, {lag_step:g} mm / "
                 f"{ale_n[0]} × {ale_n[1]}, {ale_around}, {ale_step:g} mm")
         for formulation, r in rows.items():
             fmt = lambda v, f: f.format(v) if v is not None else "–"
             lines.append(f"| {mesh} | {formulation} | {r['status']} | {fmt(r['steady_at'], '{:.1f}')} | "
-                         f"{fmt(r['force'], '{:.1f}')} | {fmt(r['torque'] and r['torque'] / 1e3, '{:.1f}')} | "
-                         f"{fmt(r['slip'] and 100 * r['slip'], '{:.2f} %')} | {fmt(r['exit'], '{:.3f}')} | "
-                         f"{fmt(r['volume'], '{:.1e}')} | {r['newton']} | {r['seconds']:.2f} |")
+                         f"{fmt(r['roll_force'], '{:.1f}')} | "
+                         f"{fmt(r['roll_torque'] and r['roll_torque'] / 1e3, '{:.1f}')} | "
+                         f"{fmt(r['forward_slip'] and 100 * r['forward_slip'], '{:.2f} %')} | "
+                         f"{fmt(r['exit_thickness'], '{:.3f}')} | {fmt(r['volume_change'], '{:.1e}')} | "
+                         f"{r['newton']} | {r['seconds']:.2f} |")
         l, e = rows["lagrangian"], rows["ale"]
-        if l["force"] and e["force"]:
-            lines.append(f"| {mesh} | ALE / Lagrangian | | | {e['force'] / l['force']:.4f} | "
-                         f"{e['torque'] / l['torque']:.4f} | {e['slip'] / l['slip']:.3f} | "
-                         f"{e['exit'] / l['exit']:.4f} | | {e['newton'] / l['newton']:.3f} | "
+        if l["roll_force"] and e["roll_force"]:
+            lines.append(f"| {mesh} | ALE / Lagrangian | | | {e['roll_force'] / l['roll_force']:.4f} | "
+                         f"{e['roll_torque'] / l['roll_torque']:.4f} | {e['forward_slip'] / l['forward_slip']:.3f} | "
+                         f"{e['exit_thickness'] / l['exit_thickness']:.4f} | | {e['newton'] / l['newton']:.3f} | "
                          f"{e['seconds'] / l['seconds']:.3f} |")
         if not a.no_time:
-            t = paired(a.rollsim, paths["ale"], paths["lagrangian"], a.runs, tmp)
+            t = paired_projects(a.rollsim, paths["ale"], paths["lagrangian"], a.runs, tmp)
             timing.append(f"| {mesh} | {t['A cpu s']} | {t['B cpu s']} | {t['A/B cpu']} | {t['A/B wall']} | "
                           f"{t['A peak MiB']} / {t['B peak MiB']} |")
         print(lines[-1], file=sys.stderr)

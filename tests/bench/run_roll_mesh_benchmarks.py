@@ -14,11 +14,10 @@ Builds nothing; it fails only if a run cannot start.
 import argparse
 import json
 import pathlib
-import subprocess
 import sys
 import tempfile
 
-import paired_timing  # beside this script
+from rolling_runs import paired_projects, run_pass  # beside this script
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CASES = [  # name, sample, process fields over the sample's, timed in pairs
@@ -41,25 +40,6 @@ def project(sample, fields, roll_mesh):
     return p
 
 
-def run(rollsim, path, out):
-    subprocess.run([rollsim, "run", str(path), "--out", str(out), "--quiet"], check=False,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    s = json.loads((out / "summary.json").read_text())
-    r = s.get("results", {}).get("rolling", {})
-    return {"status": s["status"], "force": r.get("roll_force"), "torque": r.get("roll_torque"),
-            "slip": r.get("forward_slip"), "spread": r.get("mean_spread"),
-            "newton": sum(i.get("newton_iterations", 0) for i in s["increments"]),
-            "roll factors": s.get("solver", {}).get("factorizations", {}).get("roll"), "seconds": s["timing"]["total_s"]}
-
-
-def paired(rollsim, a, b, runs, tmp):
-    """The medians of projects a and b run whole in turn (paired_timing: CPU, wall, peak memory and their ratios)."""
-    def cmd(p):
-        out = tmp / f"pt-{p.stem}"
-        return ["sh", "-c", f"rm -rf {out}; exec {rollsim} run {p} --out {out} --quiet"]
-    return {name: round(value, 4) for name, value in paired_timing.medians(cmd(a), cmd(b), runs).items()}
-
-
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--rollsim", default=str(ROOT / "build/app/rollsim"))
@@ -79,19 +59,20 @@ def main():
             p = tmp / f"{len(lines)}-{mesh}.json"
             p.write_text(json.dumps(project(sample, fields, mesh)))
             paths[mesh] = p
-            rows[mesh] = run(a.rollsim, p, tmp / p.stem)
+            rows[mesh] = run_pass(a.rollsim, p, tmp / p.stem)
             r = rows[mesh]
-            lines.append(f"| {name} | {mesh} | {r['status']} | {fmt(r['force'], '{:.6g}')} | "
-                         f"{fmt(r['torque'], '{:.6g}')} | {fmt(r['slip'] and 100 * r['slip'], '{:.2f} %')} | "
-                         f"{fmt(r['spread'], '{:.3f}')} | {r['newton']} | {fmt(r['roll factors'], '{}')} | "
+            lines.append(f"| {name} | {mesh} | {r['status']} | {fmt(r['roll_force'], '{:.6g}')} | "
+                         f"{fmt(r['roll_torque'], '{:.6g}')} | "
+                         f"{fmt(r['forward_slip'] and 100 * r['forward_slip'], '{:.2f} %')} | "
+                         f"{fmt(r['mean_spread'], '{:.3f}')} | {r['newton']} | {fmt(r['roll_factors'], '{}')} | "
                          f"{r['seconds']:.2f} |")
         t, f = rows["turning"], rows["fixed"]
-        if t["force"] and f["force"]:
-            lines.append(f"| {name} | fixed / turning | | {f['force'] / t['force']:.4f} | "
-                         f"{f['torque'] / t['torque']:.4f} | {f['slip'] / t['slip']:.3f} | | "
+        if t["roll_force"] and f["roll_force"]:
+            lines.append(f"| {name} | fixed / turning | | {f['roll_force'] / t['roll_force']:.4f} | "
+                         f"{f['roll_torque'] / t['roll_torque']:.4f} | {f['forward_slip'] / t['forward_slip']:.3f} | | "
                          f"{f['newton'] / t['newton']:.3f} | | {f['seconds'] / t['seconds']:.3f} |")
         if timed and not a.no_time:
-            g = paired(a.rollsim, paths["fixed"], paths["turning"], a.runs, tmp)
+            g = paired_projects(a.rollsim, paths["fixed"], paths["turning"], a.runs, tmp)
             timing.append(f"| {name} | {g['A cpu s']} | {g['B cpu s']} | {g['A/B cpu']} | {g['A/B wall']} | "
                           f"{g['A peak MiB']} / {g['B peak MiB']} |")
         print(lines[-1], file=sys.stderr)
